@@ -1,0 +1,17 @@
+# Project-wide build settings, linked PRIVATE into every target we build (earcut's `common`,
+# fmt's PEDANTIC_COMPILE_FLAGS). Consumers of the installed library inherit none of them.
+
+add_library(tilesweep_warnings INTERFACE)
+target_compile_options(tilesweep_warnings INTERFACE
+    -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion
+    # Fused multiply-add changes the rounding of a*b+c; the oracles, the corpus replay and the
+    # bit-for-bit comparisons assume every product and sum is rounded on its own (box2d, earcut).
+    -ffp-contract=off
+    $<$<BOOL:${TILESWEEP_WERROR}>:-Werror>)
+
+if(TILESWEEP_SANITIZE)
+    # Sanitizers must cover everything, so they go on every target, including third-party code
+    # compiled here (box2d).
+    add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+    add_link_options(-fsanitize=address,undefined)
+endif()

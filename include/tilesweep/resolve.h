@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstdint>
+
+#include "tilesweep/math.h"
+#include "tilesweep/tile_map.h"
+
+// One frame of move-and-slide through a tile map, exactly as ../shared/CONTRACT.md defines it.
+//
+// The box moves by `displacement` over the frame; "time" is the fraction of the frame elapsed,
+// in [0, 1]. At most two steps: the first contact (every tile hit at that earliest time is taken
+// at once) zeroes the motion on its contact axes, and the rest of the motion slides on. Every
+// decision (hit or miss, which tiles, contact axis, normal) is exact; the final position is the
+// exact one rounded toward the start, per axis, so the box never moves past the exact motion and
+// never ends inside a tile it did not start inside.
+//
+// Usage, one frame per game tick:
+//
+//     tilesweep::TileMapView<float> map{{0, 0}, {16, 16}, columns, rows, cells};
+//     // once per map: validateTileMap(map) == MapError::None
+//     tilesweep::Contact<float> contacts[16];
+//     tilesweep::Cell overlaps[16];
+//     tilesweep::ResolveOutput<float> out{contacts, 16, overlaps, 16};
+//     auto result = tilesweep::resolveMove({map, player, velocity * dt}, out);
+//     if (result.status != tilesweep::Status::InvalidInput) player.pos = result.position;
+//     for (int k = 0; k < result.contactCount && k < 16; ++k)
+//         if (contacts[k].normal.y == -1) onGround = true;
+
+namespace tilesweep {
+
+/// Outcome of a resolve. `Blocked` means at least one contact was recorded.
+enum class Status : std::uint8_t { Moved, Blocked, InvalidInput };
+
+/// One tile hit during a frame.
+template <class T>
+struct Contact {
+    Cell tile;      ///< the cell that was hit
+    Normal normal;  ///< points out of the tile face that was hit, against the motion
+    T time;         ///< fraction of the whole frame elapsed at the hit, in [0, 1), rounded to nearest
+};
+
+/// What one frame moves: the box from its position by `displacement` through `map`.
+template <class T>
+struct SweepInput {
+    TileMapView<T> map;     ///< the grid; assumed to have passed validateTileMap
+    Box<T> box;             ///< the box at the start of the frame; size > 0, all finite
+    Vec2<T> displacement;   ///< the motion over the whole frame, finite; zero is valid
+};
+
+/// Caller-owned storage for the lists a resolve produces (the library never allocates).
+template <class T>
+struct ResolveOutput {
+    Contact<T>* contacts = nullptr;   ///< receives up to contactCapacity contacts
+    std::int32_t contactCapacity = 0;
+    Cell* startOverlaps = nullptr;    ///< receives up to startOverlapCapacity cells
+    std::int32_t startOverlapCapacity = 0;
+};
+
+/// The result of one frame.
+template <class T>
+struct SweepResult {
+    Status status = Status::InvalidInput;
+    Vec2<T> position{};               ///< final box position; the start position on InvalidInput
+    std::int32_t contactCount = 0;    ///< contacts in the frame; more than capacity means truncated
+    std::int32_t startOverlapCount = 0;  ///< solid cells the box overlapped at the start, likewise
+};
+
+/// True when the input can be resolved: finite values, box size > 0, map header sane
+/// (finite origin, tile sizes > 0, non-negative dimensions, cells present).
+template <class T>
+[[nodiscard]] bool isValid(const SweepInput<T>& input) noexcept;
+
+/// Resolves one frame. Contacts are listed step by step in the order they happen, and within
+/// a step by row, then column; start overlaps by row, then column. On invalid input returns
+/// Status::InvalidInput with the start position (zero motion) and no lists.
+template <class T>
+[[nodiscard]] SweepResult<T> resolveMove(const SweepInput<T>& input,
+                                         const ResolveOutput<T>& output) noexcept;
+
+extern template bool isValid<float>(const SweepInput<float>&) noexcept;
+extern template bool isValid<double>(const SweepInput<double>&) noexcept;
+extern template SweepResult<float> resolveMove<float>(const SweepInput<float>&,
+                                                      const ResolveOutput<float>&) noexcept;
+extern template SweepResult<double> resolveMove<double>(const SweepInput<double>&,
+                                                        const ResolveOutput<double>&) noexcept;
+
+}  // namespace tilesweep

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tilesweep/math.h"
+#include "tilesweep/resolve.h"
+#include "tilesweep/tile_map.h"
+
+// Scenes and their results as the command-line tool, the regression corpus and outside
+// harnesses exchange them: one JSON object per line (../shared/CONTRACT.md, "Scene files").
+// This layer owns its containers; it is part of the `tilesweep_scene` target, not of the
+// dependency-free core library.
+
+namespace tilesweep {
+
+/// An owning tile map; `view()` lends it to the resolver.
+template <class T>
+struct TileMap {
+    Vec2<T> origin{};
+    Vec2<T> tileSize{};
+    std::int32_t columns = 0;
+    std::int32_t rows = 0;
+    std::vector<std::uint8_t> solid;  ///< row-major from the top row; 1 is solid, 0 empty
+
+    /// A view of this map, valid while the map lives and is not resized.
+    [[nodiscard]] TileMapView<T> view() const noexcept {
+        return {origin, tileSize, columns, rows, solid.data()};
+    }
+};
+
+/// One scene: a map, a box and one or more frames of motion, with every number already
+/// rounded (once, to nearest) to T.
+template <class T>
+struct Scene {
+    std::string name;               ///< the scene's "name" field, or empty
+    TileMap<T> map;
+    Box<T> box{};
+    std::vector<Vec2<T>> moves;     ///< one displacement per frame, in order; never empty
+};
+
+/// What one frame of a scene produced.
+template <class T>
+struct FrameResult {
+    Vec2<T> position{};
+    std::vector<Contact<T>> contacts;   ///< step by step; within a step by row, then column
+    std::vector<Cell> startOverlaps;    ///< solid cells overlapped at the frame's start
+};
+
+/// A parsed scene line: either a scene, or an error naming the field that is wrong.
+template <class T>
+struct SceneParse {
+    std::optional<Scene<T>> scene;
+    std::string error;  ///< empty when `scene` is set
+};
+
+/// Parses one scene line (JSON object) into T. Never throws: malformed JSON, missing or
+/// ill-typed fields, non-finite numbers, non-positive sizes, ragged rows, unknown tile
+/// characters and maps whose edges are not representable in T all give an error.
+template <class T>
+[[nodiscard]] SceneParse<T> parseScene(std::string_view line);
+
+/// Writes a scene as one JSON line with every number as a C99 hexfloat string, so that
+/// parsing it back into T gives the same bits.
+template <class T>
+[[nodiscard]] std::string formatScene(const Scene<T>& scene);
+
+/// Runs every frame of a scene through the production resolver, each frame starting where
+/// the previous one ended.
+template <class T>
+[[nodiscard]] std::vector<FrameResult<T>> runScene(const Scene<T>& scene);
+
+/// Formats the output line of `tilesweep resolve` for one scene: {"frames": [...]}, numbers
+/// in the shortest form that reads back to the same T.
+template <class T>
+[[nodiscard]] std::string formatFrames(const std::vector<FrameResult<T>>& frames);
+
+/// Formats the error line of `tilesweep resolve`: {"error": "..."}.
+[[nodiscard]] std::string formatError(std::string_view message);
+
+}  // namespace tilesweep

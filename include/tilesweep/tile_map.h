@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstdint>
+
+#include "tilesweep/math.h"
+
+// The tile grid a box moves through.
+//
+// Tile (i, j) is the closed rectangle [origin.x + i*tileSize.x, origin.x + (i+1)*tileSize.x] x
+// [origin.y + j*tileSize.y, origin.y + (j+1)*tileSize.y], where i is the column and j the row
+// (row 0 is the top). Cells outside [0, columns) x [0, rows) are empty. A map is valid when
+// every tile edge it defines is exactly representable in T: the resolver is exact either way,
+// but a contact position must be able to land exactly on the edge it touches.
+
+namespace tilesweep {
+
+/// A non-owning view of a grid of solid and empty cells; it borrows `solid`.
+template <class T>
+struct TileMapView {
+    Vec2<T> origin;               ///< top-left corner of cell (0, 0), in length units
+    Vec2<T> tileSize;             ///< width and height of one cell, > 0
+    std::int32_t columns = 0;     ///< number of cells per row, >= 0
+    std::int32_t rows = 0;        ///< number of rows, >= 0
+    const std::uint8_t* solid = nullptr;  ///< columns*rows flags, row-major from the top row; nonzero is solid
+
+    /// True when cell (i, j) lies in the map and is solid; cells outside the map are empty.
+    [[nodiscard]] constexpr bool isSolid(std::int64_t i, std::int64_t j) const noexcept {
+        return i >= 0 && j >= 0 && i < columns && j < rows && solid[j * columns + i] != 0;
+    }
+};
+
+/// Why a map is not valid; `None` when it is.
+enum class MapError : std::uint8_t {
+    None,
+    NonFiniteOrigin,        ///< an origin component is NaN or infinite
+    NonPositiveTileSize,    ///< a tile size is not finite or not > 0
+    NegativeDimensions,     ///< columns or rows is negative, or the cells are missing
+    TooLarge,               ///< columns*rows exceeds kMaxCells
+    UnrepresentableEdgeX,   ///< some origin.x + i*tileSize.x, 0 <= i <= columns, is not a T
+    UnrepresentableEdgeY,   ///< some origin.y + j*tileSize.y, 0 <= j <= rows, is not a T
+};
+
+/// The largest number of cells a map may have (2^31 - 1: a cell index fits an int32).
+inline constexpr std::int64_t kMaxCells = 0x7fffffff;
+
+/// Checks a map: finite origin, tile sizes > 0, consistent dimensions and every tile edge
+/// exactly representable in T. Runs in O(columns + rows); call it once per map, not per frame.
+/// When the result is an Unrepresentable* error, `firstBadEdge` (if given) receives the
+/// index of the first edge that is not representable.
+template <class T>
+[[nodiscard]] MapError validateTileMap(const TileMapView<T>& map,
+                                       std::int64_t* firstBadEdge = nullptr) noexcept;
+
+/// A short English description of a map error, naming the field.
+[[nodiscard]] const char* describe(MapError error) noexcept;
+
+extern template MapError validateTileMap<float>(const TileMapView<float>&, std::int64_t*) noexcept;
+extern template MapError validateTileMap<double>(const TileMapView<double>&, std::int64_t*) noexcept;
+
+}  // namespace tilesweep
