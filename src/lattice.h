@@ -1,0 +1,193 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+// The integer lattice of a frame, and the way back from it to float or double.
+//
+// Every finite float or double is a dyadic rational m * 2^e. Take E, the lowest exponent of a
+// set bit among all the inputs of a frame (box, displacement, map origin and tile size): every
+// input, and every tile edge origin + i*tileSize, is then an integer multiple of 2^E. Scaled by
+// 2^-E they become integers, and the contract's arithmetic (sums, differences, products of
+// distances and displacements, comparisons of times as cross-multiplied fractions) becomes
+// integer arithmetic: exact, with no epsilon and no rounding. Times of impact are ratios of two
+// lattice integers, so the scale 2^E cancels from them.
+//
+// The integers need as many bits as the span of exponents (highest minus lowest) plus a few,
+// and products twice that; a frame picks the narrowest WideInt that holds them (resolve.cpp).
+// Typical game scenes (positions below 2^20, fractions down to 2^-30) take the 128-bit tier.
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "wide_int.h"
+
+namespace tilesweep::detail {
+
+/// Exponent of the lowest set bit of a nonzero finite value (v = odd * 2^result).
+template <class T>
+[[nodiscard]] inline int lowestBitExponent(T v) noexcept {
+    int e = 0;
+    const T f = std::frexp(v, &e);
+    constexpr int p = std::numeric_limits<T>::digits;
+    const auto m = static_cast<std::int64_t>(std::ldexp(f, p));  // exact: f has at most p bits
+    const std::uint64_t mag = m < 0 ? 0 - static_cast<std::uint64_t>(m) : static_cast<std::uint64_t>(m);
+    return e - p + __builtin_ctzll(mag);
+}
+
+/// The lattice integer v * 2^-latticeExponent (exact: v is a multiple of 2^latticeExponent).
+template <class Num, class T>
+[[nodiscard]] inline Num toLattice(T v, int latticeExponent) noexcept {
+    if (v == 0) return Num::fromInt(0);
+    int e = 0;
+    const T f = std::frexp(v, &e);
+    constexpr int p = std::numeric_limits<T>::digits;
+    const auto m = static_cast<std::int64_t>(std::ldexp(f, p));  // exact: f has at most p bits
+    // m has at most p bits, so dropping its trailing zeros keeps it exact; what remains is odd
+    // and its exponent is at least the lattice's.
+    const std::uint64_t mag = m < 0 ? 0 - static_cast<std::uint64_t>(m) : static_cast<std::uint64_t>(m);
+    const int zeros = __builtin_ctzll(mag);
+    return Num::fromShifted(m / (std::int64_t{1} << zeros), e - p + zeros - latticeExponent);
+}
+
+/// Which way to round a magnitude that is not representable.
+enum class MagnitudeRounding : std::uint8_t { TowardZero, AwayFromZero, NearestEven };
+
+/// Rounds (mantissa + f) * 2^exponent to T, where f in [0, 1) is nonzero exactly when `sticky`.
+/// When `sticky` is set the mantissa must carry at least digits(T) + 2 bits, so that the bits
+/// dropped decide the rounding alone. Subnormal results round at the subnormal spacing.
+/// Rounding toward zero never overflows (it clamps at the largest finite value); the other
+/// modes give infinity past it, as IEEE does.
+template <class T>
+[[nodiscard]] inline T roundMagnitude(std::uint64_t mantissa, int exponent, bool sticky,
+                                      MagnitudeRounding mode) noexcept {
+    constexpr int p = std::numeric_limits<T>::digits;
+    constexpr int lowestExponent = std::numeric_limits<T>::min_exponent - p;  // of the least subnormal
+    if (mantissa == 0) return mode == MagnitudeRounding::AwayFromZero && sticky
+                                  ? std::numeric_limits<T>::denorm_min()
+                                  : T(0);
+    const int top = 63 - __builtin_clzll(mantissa);
+    int keepFrom = top - (p - 1);  // bit index of the result's least significant bit
+    if (keepFrom + exponent < lowestExponent) keepFrom = lowestExponent - exponent;
+    std::uint64_t kept = 0;
+    bool up = false;
+    if (keepFrom <= 0) {
+        kept = mantissa << -keepFrom;  // fits: at most p bits
+        up = sticky && mode == MagnitudeRounding::AwayFromZero;
+        // (A sticky tail with no dropped mantissa bits only happens when the caller broke the
+        // precondition; rounding toward zero or to nearest then keeps the mantissa.)
+    } else {
+        const std::uint64_t dropped = keepFrom >= 64 ? mantissa : mantissa & ((std::uint64_t{1} << keepFrom) - 1);
+        kept = keepFrom >= 64 ? 0 : mantissa >> keepFrom;
+        const bool inexact = dropped != 0 || sticky;
+        switch (mode) {
+            case MagnitudeRounding::TowardZero: up = false; break;
+            case MagnitudeRounding::AwayFromZero: up = inexact; break;
+            case MagnitudeRounding::NearestEven: {
+                const std::uint64_t half = keepFrom > 64 ? 0 : std::uint64_t{1} << (keepFrom - 1);
+                if (keepFrom > 64) {
+                    up = false;  // below half the least subnormal
+                } else if (dropped > half || (dropped == half && sticky)) {
+                    up = true;
+                } else if (dropped == half) {
+                    up = (kept & 1) != 0;
+                }
+                break;
+            }
+        }
+    }
+    if (up) ++kept;
+    const T r = std::ldexp(static_cast<T>(kept), exponent + keepFrom);
+    if (mode == MagnitudeRounding::TowardZero && !std::isfinite(r)) return std::numeric_limits<T>::max();
+    return r;
+}
+
+/// Rounds the lattice integer v (value v * 2^latticeExponent) to T with `mode` on its magnitude.
+template <class T, class Num>
+[[nodiscard]] inline T roundLattice(const Num& v, int latticeExponent, MagnitudeRounding mode) noexcept {
+    const Num mag = v.magnitude();
+    const int top = mag.highestBit();
+    if (top < 0) return T(0);
+    const int from = top > 62 ? top - 62 : 0;
+    bool sticky = false;
+    const std::uint64_t bits = mag.bitsFrom(from, sticky);
+    const T r = roundMagnitude<T>(bits, latticeExponent + from, sticky, mode);
+    return v.isNegative() ? -r : r;
+}
+
+/// Rounds num / den to T, to nearest (ties to even), for 0 <= num and 0 < den.
+template <class T, class Num>
+[[nodiscard]] inline T roundRatioToNearest(const Num& num, const Num& den) noexcept {
+    constexpr int p = std::numeric_limits<T>::digits;
+    const int nTop = num.highestBit();
+    if (nTop < 0) return T(0);
+    const int dTop = den.highestBit();
+    // num/den lies in [2^(nTop-dTop-1), 2^(nTop-dTop+1)); scaling num by 2^shift puts the
+    // quotient in [2^(p+2), 2^(p+4)): p+2 bits or more, so the dropped bits and the remainder
+    // settle the rounding.
+    const int shift = p + 3 - (nTop - dTop);
+    Num remainder = shift >= 0 ? num.shiftedLeft(shift) : num;
+    const Num divisor = shift >= 0 ? den : den.shiftedLeft(-shift);
+    std::uint64_t quotient = 0;
+    // Restoring division: the quotient has at most p + 4 bits.
+    for (int b = p + 4; b >= 0; --b) {
+        const Num step = divisor.shiftedLeft(b);
+        if (compare(step, remainder) <= 0) {
+            remainder = remainder - step;
+            quotient |= std::uint64_t{1} << b;
+        }
+    }
+    return roundMagnitude<T>(quotient, -shift, !remainder.isZero(), MagnitudeRounding::NearestEven);
+}
+
+}  // namespace tilesweep::detail
+
+namespace tilesweep::detail {
+
+/// The lattice of a frame: its exponent and the bits its integers span.
+struct LatticeShape {
+    int exponent;  ///< every input is a multiple of 2^exponent
+    int spanBits;  ///< every lattice value of the frame has magnitude below 2^spanBits
+};
+
+/// The lattice for a set of finite values (zeros are skipped) whose derived coordinates
+/// (sums of a few of them, tile edges inside the map) are bounded by `magnitudeBound`.
+template <class T>
+[[nodiscard]] inline LatticeShape shapeLattice(const T* values, int count, long double magnitudeBound) noexcept {
+    int lowest = std::numeric_limits<int>::max();
+    for (int k = 0; k < count; ++k)
+        if (values[k] != 0) {
+            const int e = lowestBitExponent(values[k]);
+            if (e < lowest) lowest = e;
+        }
+    if (lowest == std::numeric_limits<int>::max()) lowest = 0;
+    // ilogb of the bound, plus 2 for the rounding of the bound itself (long double, relative
+    // error far below 1/2) and for the sign.
+    const int top = magnitudeBound > 0 ? std::ilogb(magnitudeBound) + 2 : 1;
+    return {lowest, top - lowest};
+}
+
+}  // namespace tilesweep::detail
+
+namespace tilesweep::detail {
+
+/// Bits the integers of a frame need: values below 2^span, products of two of them and sums
+/// of a few such products below 2^(2*span + 6), and the scaled numerator of a rounded time
+/// below 2^(span + 60).
+[[nodiscard]] inline int bitsNeeded(const LatticeShape& shape) noexcept {
+    const int products = 2 * shape.spanBits + 8;
+    const int rounding = shape.spanBits + 64;
+    return products > rounding ? products : rounding;
+}
+
+/// Calls f(WideInt<N>{}) with the narrowest of the widths this library instantiates that
+/// holds `bits` signed bits: 128 (typical float and integer scenes), 256 (typical double
+/// scenes), 640 (any float scene) or 4480 (any double scene, subnormals to the largest finite).
+template <class F>
+decltype(auto) withWidth(int bits, F&& f) {
+    if (bits < 128) return f(WideInt<2>::fromInt(0));
+    if (bits < 256) return f(WideInt<4>::fromInt(0));
+    if (bits < 640) return f(WideInt<10>::fromInt(0));
+    return f(WideInt<70>::fromInt(0));
+}
+
+}  // namespace tilesweep::detail

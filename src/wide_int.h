@@ -1,0 +1,195 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+// A fixed-width signed integer of N 64-bit limbs, two's complement, little-endian limbs.
+//
+// The resolver scales every input of a frame onto one integer lattice (see lattice.h) and
+// decides everything with these integers, so every sum, product and comparison is exact. The
+// width is chosen per frame from the span of the inputs' exponents, so that no operation can
+// overflow (the caller guarantees it; TILESWEEP_ASSERT-style checks would cost the hot path).
+// No allocation: the limbs live in the object.
+
+#include <cmath>
+#include <cstdint>
+
+namespace tilesweep::detail {
+
+__extension__ typedef unsigned __int128 Uint128;
+
+template <int N>
+struct WideInt {
+    static_assert(N >= 2, "WideInt needs at least two limbs");
+    std::uint64_t limb[N];
+
+    static WideInt fromInt(std::int64_t v) noexcept {
+        WideInt r;
+        r.limb[0] = static_cast<std::uint64_t>(v);
+        const std::uint64_t fill = v < 0 ? ~std::uint64_t{0} : 0;
+        for (int k = 1; k < N; ++k) r.limb[k] = fill;
+        return r;
+    }
+
+    /// The value m * 2^shift, for shift >= 0 (shift < 64*N - 64).
+    static WideInt fromShifted(std::int64_t m, int shift) noexcept {
+        const bool negative = m < 0;
+        const std::uint64_t mag = negative ? 0 - static_cast<std::uint64_t>(m) : static_cast<std::uint64_t>(m);
+        WideInt r = fromInt(0);
+        const int word = shift / 64;
+        const int bit = shift % 64;
+        r.limb[word] = mag << bit;
+        if (bit != 0 && word + 1 < N) r.limb[word + 1] = mag >> (64 - bit);
+        return negative ? -r : r;
+    }
+
+    [[nodiscard]] bool isNegative() const noexcept { return (limb[N - 1] >> 63) != 0; }
+
+    [[nodiscard]] bool isZero() const noexcept {
+        for (int k = 0; k < N; ++k)
+            if (limb[k] != 0) return false;
+        return true;
+    }
+
+    /// -1, 0 or 1.
+    [[nodiscard]] int sign() const noexcept { return isNegative() ? -1 : (isZero() ? 0 : 1); }
+
+    friend WideInt operator+(const WideInt& a, const WideInt& b) noexcept {
+        WideInt r;
+        std::uint64_t carry = 0;
+        for (int k = 0; k < N; ++k) {
+            const Uint128 s = static_cast<Uint128>(a.limb[k]) + b.limb[k] + carry;
+            r.limb[k] = static_cast<std::uint64_t>(s);
+            carry = static_cast<std::uint64_t>(s >> 64);
+        }
+        return r;
+    }
+
+    friend WideInt operator-(const WideInt& a) noexcept {
+        WideInt r;
+        std::uint64_t carry = 1;
+        for (int k = 0; k < N; ++k) {
+            const Uint128 s = static_cast<Uint128>(~a.limb[k]) + carry;
+            r.limb[k] = static_cast<std::uint64_t>(s);
+            carry = static_cast<std::uint64_t>(s >> 64);
+        }
+        return r;
+    }
+
+    friend WideInt operator-(const WideInt& a, const WideInt& b) noexcept {
+        WideInt r;
+        std::uint64_t borrow = 0;
+        for (int k = 0; k < N; ++k) {
+            const Uint128 d = static_cast<Uint128>(a.limb[k]) - b.limb[k] - borrow;
+            r.limb[k] = static_cast<std::uint64_t>(d);
+            borrow = static_cast<std::uint64_t>(d >> 64) != 0 ? 1 : 0;
+        }
+        return r;
+    }
+
+    /// The magnitude, as a non-negative WideInt (never called on the most negative value).
+    [[nodiscard]] WideInt magnitude() const noexcept { return isNegative() ? -*this : *this; }
+
+    friend WideInt operator*(const WideInt& a, const WideInt& b) noexcept {
+        const bool negative = a.isNegative() != b.isNegative();
+        const WideInt x = a.magnitude();
+        const WideInt y = b.magnitude();
+        const int xn = x.usedLimbs();
+        const int yn = y.usedLimbs();
+        WideInt r = fromInt(0);
+        for (int i = 0; i < xn; ++i) {
+            std::uint64_t carry = 0;
+            for (int j = 0; j < yn && i + j < N; ++j) {
+                const Uint128 t = static_cast<Uint128>(x.limb[i]) * y.limb[j] + r.limb[i + j] + carry;
+                r.limb[i + j] = static_cast<std::uint64_t>(t);
+                carry = static_cast<std::uint64_t>(t >> 64);
+            }
+            if (i + yn < N) r.limb[i + yn] = carry;
+        }
+        return negative ? -r : r;
+    }
+
+    friend WideInt operator*(const WideInt& a, std::int64_t b) noexcept { return a * fromInt(b); }
+
+    /// Three-way signed comparison: -1, 0 or 1.
+    friend int compare(const WideInt& a, const WideInt& b) noexcept {
+        const bool an = a.isNegative();
+        const bool bn = b.isNegative();
+        if (an != bn) return an ? -1 : 1;
+        for (int k = N - 1; k >= 0; --k)
+            if (a.limb[k] != b.limb[k]) return a.limb[k] < b.limb[k] ? -1 : 1;
+        return 0;
+    }
+
+    friend bool operator<(const WideInt& a, const WideInt& b) noexcept { return compare(a, b) < 0; }
+    friend bool operator>(const WideInt& a, const WideInt& b) noexcept { return compare(a, b) > 0; }
+    friend bool operator<=(const WideInt& a, const WideInt& b) noexcept { return compare(a, b) <= 0; }
+    friend bool operator>=(const WideInt& a, const WideInt& b) noexcept { return compare(a, b) >= 0; }
+    friend bool operator==(const WideInt& a, const WideInt& b) noexcept { return compare(a, b) == 0; }
+    friend bool operator!=(const WideInt& a, const WideInt& b) noexcept { return compare(a, b) != 0; }
+
+    /// Number of limbs up to the highest nonzero one (of a non-negative value).
+    [[nodiscard]] int usedLimbs() const noexcept {
+        int n = N;
+        while (n > 0 && limb[n - 1] == 0) --n;
+        return n;
+    }
+
+    /// Index of the highest set bit of a positive value; -1 for zero.
+    [[nodiscard]] int highestBit() const noexcept {
+        for (int k = N - 1; k >= 0; --k)
+            if (limb[k] != 0) return 64 * k + 63 - __builtin_clzll(limb[k]);
+        return -1;
+    }
+
+    /// Bit `index` of a non-negative value.
+    [[nodiscard]] bool bit(int index) const noexcept {
+        return ((limb[index / 64] >> (index % 64)) & 1) != 0;
+    }
+
+    /// This non-negative value shifted left by `bits` (the result must fit).
+    [[nodiscard]] WideInt shiftedLeft(int bits) const noexcept {
+        WideInt r = fromInt(0);
+        const int word = bits / 64;
+        const int bit = bits % 64;
+        for (int k = N - 1; k >= word; --k) {
+            std::uint64_t v = limb[k - word] << bit;
+            if (bit != 0 && k - word - 1 >= 0) v |= limb[k - word - 1] >> (64 - bit);
+            r.limb[k] = v;
+        }
+        return r;
+    }
+
+    /// The 64 bits of this non-negative value starting at bit `from` (from >= 0), and whether
+    /// any bit below `from` is set.
+    [[nodiscard]] std::uint64_t bitsFrom(int from, bool& lowerBitsSet) const noexcept {
+        const int word = from / 64;
+        const int bit = from % 64;
+        lowerBitsSet = false;
+        for (int k = 0; k < word && k < N; ++k)
+            if (limb[k] != 0) lowerBitsSet = true;
+        if (word >= N) return 0;
+        if (bit != 0 && (limb[word] << (64 - bit)) != 0) lowerBitsSet = true;
+        std::uint64_t v = limb[word] >> bit;
+        if (bit != 0 && word + 1 < N) v |= limb[word + 1] << (64 - bit);
+        return v;
+    }
+
+    /// An approximation m * 2^exponent of the value, with |m| in [0.5, 1) (m = 0 for zero).
+    /// Relative error below 2^-52: enough for estimates that are then checked exactly.
+    [[nodiscard]] double approximate(int& exponent) const noexcept {
+        const WideInt mag = magnitude();
+        const int top = mag.highestBit();
+        if (top < 0) {
+            exponent = 0;
+            return 0.0;
+        }
+        const int from = top >= 63 ? top - 63 : 0;
+        bool lower = false;
+        const std::uint64_t bits = mag.bitsFrom(from, lower);
+        int e = 0;
+        const double m = std::frexp(static_cast<double>(bits), &e);
+        exponent = e + from;
+        return isNegative() ? -m : m;
+    }
+};
+
+}  // namespace tilesweep::detail
