@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Builds tilesweep (installing what is missing) and runs every test through ctest.
+# TILESWEEP_SANITIZE=ON builds and runs them under AddressSanitizer + UBSan in build-asan/.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+if [ "${TILESWEEP_SANITIZE:-OFF}" = ON ]; then
+    export TILESWEEP_BUILD_DIR=${TILESWEEP_BUILD_DIR:-$root/build-asan}
+    bash "$root/scripts/build.sh" -DTILESWEEP_SANITIZE=ON -DTILESWEEP_BUILD_BENCH=OFF
+else
+    bash "$root/scripts/build.sh"
+fi
+cd "${TILESWEEP_BUILD_DIR:-$root/build}"
+ctest --output-on-failure --parallel "$(nproc)"
