@@ -1,13 +1,21 @@
 # Project-wide build settings, linked PRIVATE into every target we build (earcut's `common`,
 # fmt's PEDANTIC_COMPILE_FLAGS). Consumers of the installed library inherit none of them.
 
+# One deliberate fault (src/fault_injection.h), for scripts/fault-table.sh; empty in real builds.
+set(TILESWEEP_FAULT "" CACHE STRING "Build the library with one deliberate fault (see src/fault_injection.h)")
+if(TILESWEEP_FAULT)
+    message(WARNING "tilesweep is built with the deliberate fault ${TILESWEEP_FAULT}")
+    add_compile_definitions(TILESWEEP_FAULT_${TILESWEEP_FAULT})
+endif()
+
 add_library(tilesweep_warnings INTERFACE)
 target_compile_options(tilesweep_warnings INTERFACE
     -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion
     # Fused multiply-add changes the rounding of a*b+c; the oracles, the corpus replay and the
     # bit-for-bit comparisons assume every product and sum is rounded on its own (box2d, earcut).
-    -ffp-contract=off
+    $<IF:$<STREQUAL:${TILESWEEP_FAULT},FMA>,-ffp-contract=fast,-ffp-contract=off>
     $<$<BOOL:${TILESWEEP_WERROR}>:-Werror>)
+
 
 if(TILESWEEP_SANITIZE)
     # Sanitizers must cover everything, so they go on every target, including third-party code

@@ -14,8 +14,10 @@
 // integers, so exact. That settles corner misses (E >= X, including a path exactly through a
 // corner, E == X) and exact ties (equal entries) without any tolerance.
 
+#include <cmath>
 #include <cstdint>
 
+#include "fault_injection.h"
 #include "tilesweep/math.h"
 
 namespace tilesweep::detail {
@@ -50,7 +52,11 @@ struct AxisMotion {
     }
     /// Open overlap of the box's projection at t = 0 with [lo, hi].
     [[nodiscard]] bool overlapsAtStart(const Num& lo, const Num& hi) const noexcept {
+#if defined(TILESWEEP_FAULT_TOUCH_OVERLAPS)
+        return low <= hi && high >= lo;  // deliberate fault: touching counted as overlap
+#else
         return low < hi && high > lo;
+#endif
     }
 };
 
@@ -109,10 +115,20 @@ template <class Num>
         return miss;
     }
     if (ex >= mx.speed || ey >= my.speed) return miss;  // E >= 1
+#if !defined(TILESWEEP_FAULT_NO_CORNER_MISS)
     // E < X: each axis enters before the other exits (an axis's own entry precedes its exit).
     if (!(ex * my.speed < xy * mx.speed)) return miss;
     if (!(ey * mx.speed < xx * my.speed)) return miss;
+#endif
+#if defined(TILESWEEP_FAULT_DOUBLE_PREDICATE)
+    // Deliberate fault: the entry comparison in plain double arithmetic.
+    int ea = 0, eb = 0, ec = 0, ed = 0;
+    const double pa = std::ldexp(ex.approximate(ea), ea) * std::ldexp(my.speed.approximate(eb), eb);
+    const double pb = std::ldexp(ey.approximate(ec), ec) * std::ldexp(mx.speed.approximate(ed), ed);
+    const int order = pa > pb ? 1 : (pa < pb ? -1 : 0);
+#else
     const int order = compare(ex * my.speed, ey * mx.speed);
+#endif
     if (order > 0) return {TileVerdict::BlocksOnX, {ex, mx.speed}};
     if (order < 0) return {TileVerdict::BlocksOnY, {ey, my.speed}};
     return {TileVerdict::Tie, {ey, my.speed}};
@@ -121,7 +137,11 @@ template <class Num>
 /// The contact axis of an exact corner tie: the face that is exposed when exactly one is,
 /// otherwise y (CONTRACT.md; it decides whether a character snags on a corner).
 [[nodiscard]] inline Axis settleTie(bool xFaceExposed, bool yFaceExposed) noexcept {
+#if defined(TILESWEEP_FAULT_TIE_REVERSED)
+    return (yFaceExposed && !xFaceExposed) ? Axis::Y : Axis::X;  // deliberate fault
+#else
     return (xFaceExposed && !yFaceExposed) ? Axis::X : Axis::Y;
+#endif
 }
 
 }  // namespace tilesweep::detail

@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "axis_sweep.h"
+#include "fault_injection.h"
 #include "lattice.h"
 #include "wide_int.h"
 
@@ -180,8 +181,14 @@ private:
         if (side == 0) return start_[axis];
         const bool towardMinusInf = side > 0;
         const bool negative = exact.isNegative();
+#if defined(TILESWEEP_FAULT_ROUND_NEAREST)
+        const MagnitudeRounding mode = MagnitudeRounding::NearestEven;  // deliberate fault
+        (void)towardMinusInf;
+        (void)negative;
+#else
         const MagnitudeRounding mode = towardMinusInf != negative ? MagnitudeRounding::TowardZero
                                                                  : MagnitudeRounding::AwayFromZero;
+#endif
         return detail::roundLattice<T>(exact, exponent_, mode);
     }
 
@@ -257,6 +264,9 @@ private:
             std::int64_t j1 = gs.cellOf(highScaled + (forward ? atT1 : atT0), mp.speed);
             j0 = std::max<std::int64_t>(j0, 0);
             j1 = std::min<std::int64_t>(j1, gs.cells - 1);
+#if defined(TILESWEEP_FAULT_BROADPHASE_SHORT)
+            --j1;  // deliberate fault: the secondary range one cell short
+#endif
             for (std::int64_t j = j0; j <= j1; ++j) {
                 const std::int64_t ci = p == 0 ? k : j;
                 const std::int64_t cj = p == 0 ? j : k;

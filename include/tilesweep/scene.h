@@ -61,25 +61,35 @@ struct SceneParse {
 /// Parses one scene line (JSON object) into T. Never throws: malformed JSON, missing or
 /// ill-typed fields, non-finite numbers, non-positive sizes, ragged rows, unknown tile
 /// characters and maps whose edges are not representable in T all give an error.
+/// Every number (a JSON number, or a hexfloat string such as "0x1.8p+3") is rounded once,
+/// straight from its text to T, to nearest; one that rounds to an infinity is an error. A map
+/// with no rows, or with rows of length zero, is an empty map (0 x 0, every cell empty).
+/// Unknown fields are ignored; a known field given twice is an error. Error messages start
+/// with the path of the field ("box: ...", "moves[2][1]: ...", "map.rows[3]: ...").
 template <class T>
 [[nodiscard]] SceneParse<T> parseScene(std::string_view line);
 
 /// Writes a scene as one JSON line with every number as a C99 hexfloat string, so that
-/// parsing it back into T gives the same bits.
+/// parsing it back into T gives the same bits. Always writes "moves", and "name" when it is
+/// not empty. Throws std::invalid_argument for a non-finite number or a map whose `solid`
+/// does not hold columns*rows cells (neither comes out of parseScene).
 template <class T>
 [[nodiscard]] std::string formatScene(const Scene<T>& scene);
 
 /// Runs every frame of a scene through the production resolver, each frame starting where
-/// the previous one ended.
+/// the previous one ended; the box keeps its size. Throws std::invalid_argument if the
+/// resolver refuses a frame as invalid input (never for a scene from parseScene).
 template <class T>
 [[nodiscard]] std::vector<FrameResult<T>> runScene(const Scene<T>& scene);
 
 /// Formats the output line of `tilesweep resolve` for one scene: {"frames": [...]}, numbers
-/// in the shortest form that reads back to the same T.
+/// in the shortest form that reads back to the same T. Throws std::invalid_argument for a
+/// non-finite number, which JSON cannot carry.
 template <class T>
 [[nodiscard]] std::string formatFrames(const std::vector<FrameResult<T>>& frames);
 
-/// Formats the error line of `tilesweep resolve`: {"error": "..."}.
+/// Formats the error line of `tilesweep resolve`: {"error": "..."}, the message escaped as a
+/// JSON string (invalid UTF-8 replaced by U+FFFD).
 [[nodiscard]] std::string formatError(std::string_view message);
 
 }  // namespace tilesweep

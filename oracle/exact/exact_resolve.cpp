@@ -1,0 +1,186 @@
+// SPDX-License-Identifier: MIT
+#include "oracle/exact/exact_resolve.h"
+
+#include <cstdint>
+#include <vector>
+
+#include "oracle/exact/rational_convert.h"
+
+namespace tilesweep::oracle {
+namespace {
+
+constexpr int kMaxSteps = 2;  // CONTRACT.md: "repeat at most 2 times"
+
+// -1, 0 or +1.
+int signOf(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
+
+// Whether the face of tile (i, j) that the motion on `axis` approaches is exposed: the cell
+// across that face is empty. Motion +x approaches the left face, whose neighbour is (i-1, j);
+// -x the right face, (i+1, j); +y the top face, (i, j-1); -y the bottom face, (i, j+1).
+bool faceExposed(const ExactTileMap& map, std::int64_t i, std::int64_t j, Axis axis, int motionSign) {
+    if (axis == Axis::X) {
+        return !map.isSolid(i - motionSign, j);
+    }
+    return !map.isSolid(i, j - motionSign);
+}
+
+// A solid tile and its exact rectangle, computed once per scene rather than once per test.
+struct SolidTile {
+    Cell cell;
+    ExactRect rect;
+};
+
+// Every solid tile of the map, by row then column: the contract's order within a step.
+std::vector<SolidTile> solidTilesOf(const ExactTileMap& map) {
+    std::vector<SolidTile> tiles;
+    for (std::int32_t j = 0; j < map.rows; ++j) {
+        for (std::int32_t i = 0; i < map.columns; ++i) {
+            if (map.isSolid(i, j)) {
+                tiles.push_back({{i, j}, map.tileRect(i, j)});
+            }
+        }
+    }
+    return tiles;
+}
+
+struct Blocker {
+    Cell cell;
+    ExactSweepOutput sweep;
+};
+
+// Every solid tile that blocks the move of `box` by `motion`, in row-major order. No broadphase:
+// each solid tile of the map is tested.
+std::vector<Blocker> findBlockers(const ExactTileMap& map, const std::vector<SolidTile>& tiles, const ExactBox& box,
+                                  const ExactVec2& motion) {
+    std::vector<Blocker> blockers;
+    const int signX = signOf(motion.x);
+    const int signY = signOf(motion.y);
+    for (const SolidTile& tile : tiles) {
+        const std::int64_t i = tile.cell.i;
+        const std::int64_t j = tile.cell.j;
+        ExactSweepInput input{box, motion, tile.rect, faceExposed(map, i, j, Axis::X, signX),
+                              faceExposed(map, i, j, Axis::Y, signY)};
+        ExactSweepOutput sweep = sweepTileExact(input);
+        if (sweep.state == ExactSweepState::Blocks) {
+            blockers.push_back({tile.cell, std::move(sweep)});
+        }
+    }
+    return blockers;
+}
+
+// The frame loop of the contract, over the map's solid tiles.
+ExactFrame resolveFrame(const ExactTileMap& map, const std::vector<SolidTile>& tiles, const ExactBox& box,
+                        const ExactVec2& displacement) {
+    ExactFrame frame;
+    frame.start = box.pos;
+
+    const ExactRect startRect = rectOf(box);
+    for (const SolidTile& tile : tiles) {
+        if (overlaps(startRect, tile.rect)) {
+            frame.startOverlaps.push_back(tile.cell);
+        }
+    }
+
+    ExactVec2 p = box.pos;
+    ExactVec2 r = displacement;
+    Rational elapsed(0);    // fraction of the frame elapsed when this step starts
+    Rational remaining(1);  // fraction of the frame this step's time 1 stands for
+    for (int step = 1; step <= kMaxSteps; ++step) {
+        const std::vector<Blocker> blockers = findBlockers(map, tiles, {p, box.size}, r);
+        if (blockers.empty()) {
+            p = {p.x + r.x, p.y + r.y};
+            break;
+        }
+        Rational s = blockers.front().sweep.time;
+        for (const Blocker& b : blockers) {
+            if (b.sweep.time < s) {
+                s = b.sweep.time;
+            }
+        }
+        const Rational frameTime = elapsed + s * remaining;
+        bool zeroX = false;
+        bool zeroY = false;
+        for (const Blocker& b : blockers) {  // row-major already: H in the contract's order
+            if (b.sweep.time != s) {
+                continue;
+            }
+            Normal normal{0, 0};
+            if (b.sweep.axis == Axis::X) {
+                normal.x = static_cast<std::int8_t>(-signOf(r.x));
+                zeroX = true;
+            } else {
+                normal.y = static_cast<std::int8_t>(-signOf(r.y));
+                zeroY = true;
+            }
+            frame.contacts.push_back({b.cell, normal, frameTime, step, b.sweep.tie});
+        }
+        p = {p.x + s * r.x, p.y + s * r.y};
+        const Rational rest = 1 - s;
+        r = {zeroX ? Rational(0) : Rational(rest * r.x), zeroY ? Rational(0) : Rational(rest * r.y)};
+        elapsed = frameTime;
+        remaining *= rest;
+    }
+    frame.position = p;
+    return frame;
+}
+
+}  // namespace
+
+ExactFrame resolveFrameExact(const ExactTileMap& map, const ExactBox& box, const ExactVec2& displacement) {
+    return resolveFrame(map, solidTilesOf(map), box, displacement);
+}
+
+template <class T>
+std::vector<ExactFrame> resolveSceneExact(const Scene<T>& scene) {
+    const ExactTileMap map = toExact(scene.map);
+    const std::vector<SolidTile> tiles = solidTilesOf(map);
+    std::vector<ExactFrame> frames;
+    frames.reserve(scene.moves.size());
+    Vec2<T> start = scene.box.pos;
+    for (const Vec2<T>& move : scene.moves) {
+        const ExactBox box{toExact(start), toExact(scene.box.size)};
+        frames.push_back(resolveFrame(map, tiles, box, toExact(move)));
+        start = roundFrame<T>(frames.back()).position;
+    }
+    return frames;
+}
+
+template <class T>
+FrameResult<T> roundFrame(const ExactFrame& frame) {
+    FrameResult<T> result;
+    const T startX = fromRational<T>(frame.start.x, Rounding::NearestEven);  // exact: a T value
+    const T startY = fromRational<T>(frame.start.y, Rounding::NearestEven);
+    result.position = {roundToward<T>(frame.position.x, startX), roundToward<T>(frame.position.y, startY)};
+    result.contacts.reserve(frame.contacts.size());
+    for (const ExactContact& c : frame.contacts) {
+        result.contacts.push_back({c.tile, c.normal, fromRational<T>(c.time, Rounding::NearestEven)});
+    }
+    result.startOverlaps = frame.startOverlaps;
+    return result;
+}
+
+template <class T>
+std::vector<FrameResult<T>> toFrameResults(const std::vector<ExactFrame>& frames) {
+    std::vector<FrameResult<T>> results;
+    results.reserve(frames.size());
+    for (const ExactFrame& frame : frames) {
+        results.push_back(roundFrame<T>(frame));
+    }
+    return results;
+}
+
+template <class T>
+std::vector<FrameResult<T>> resolveSceneExactRounded(const Scene<T>& scene) {
+    return toFrameResults<T>(resolveSceneExact(scene));
+}
+
+template std::vector<ExactFrame> resolveSceneExact<float>(const Scene<float>&);
+template std::vector<ExactFrame> resolveSceneExact<double>(const Scene<double>&);
+template FrameResult<float> roundFrame<float>(const ExactFrame&);
+template FrameResult<double> roundFrame<double>(const ExactFrame&);
+template std::vector<FrameResult<float>> toFrameResults<float>(const std::vector<ExactFrame>&);
+template std::vector<FrameResult<double>> toFrameResults<double>(const std::vector<ExactFrame>&);
+template std::vector<FrameResult<float>> resolveSceneExactRounded<float>(const Scene<float>&);
+template std::vector<FrameResult<double>> resolveSceneExactRounded<double>(const Scene<double>&);
+
+}  // namespace tilesweep::oracle

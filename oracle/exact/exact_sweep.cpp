@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: MIT
+#include "oracle/exact/exact_sweep.h"
+
+#include <utility>
+
+namespace tilesweep::oracle {
+
+bool operator<(const ExtendedTime& a, const ExtendedTime& b) {
+    using Kind = ExtendedTime::Kind;
+    if (a.kind != b.kind) {
+        return static_cast<int>(a.kind) < static_cast<int>(b.kind);
+    }
+    return a.kind == Kind::Finite && a.value < b.value;
+}
+
+bool operator==(const ExtendedTime& a, const ExtendedTime& b) {
+    return a.kind == b.kind && (a.kind != ExtendedTime::Kind::Finite || a.value == b.value);
+}
+
+TimeInterval TimeInterval::open(ExtendedTime low, ExtendedTime high) {
+    if (!(low < high)) {
+        return none();
+    }
+    return {false, std::move(low), std::move(high)};
+}
+
+bool TimeInterval::contains(const Rational& t) const {
+    const ExtendedTime time = ExtendedTime::finite(t);
+    return !empty && low < time && time < high;
+}
+
+bool TimeInterval::meetsOpenUnitInterval() const {
+    // (low, high) and (0, 1) share a time exactly when max(low, 0) < min(high, 1).
+    if (empty) {
+        return false;
+    }
+    const ExtendedTime zero = ExtendedTime::finite(Rational(0));
+    const ExtendedTime one = ExtendedTime::finite(Rational(1));
+    const ExtendedTime& start = zero < low ? low : zero;
+    const ExtendedTime& end = high < one ? high : one;
+    return start < end;
+}
+
+TimeInterval intersect(const TimeInterval& a, const TimeInterval& b) {
+    if (a.empty || b.empty) {
+        return TimeInterval::none();
+    }
+    return TimeInterval::open(a.low < b.low ? b.low : a.low, a.high < b.high ? a.high : b.high);
+}
+
+TimeInterval axisOverlapTimes(const Rational& boxMin, const Rational& boxSize, const Rational& d,
+                              const Rational& tileMin, const Rational& tileMax) {
+    const Rational boxMax = boxMin + boxSize;
+    if (d == 0) {
+        // Not moving: overlapping at every time or at none.
+        const bool overlapping = boxMin < tileMax && boxMax > tileMin;
+        return overlapping ? TimeInterval::all() : TimeInterval::none();
+    }
+    // At time t the projection is [boxMin + t*d, boxMax + t*d]; it overlaps the tile when
+    // boxMin + t*d < tileMax and boxMax + t*d > tileMin. Dividing by d (reversing both
+    // inequalities when d < 0) gives the open interval between the two roots below.
+    const Rational leadingEdgeMeets = (tileMin - boxMax) / d;   // box's max edge reaches the tile's min edge
+    const Rational trailingEdgeMeets = (tileMax - boxMin) / d;  // box's min edge reaches the tile's max edge
+    if (d > 0) {
+        return TimeInterval::open(ExtendedTime::finite(leadingEdgeMeets), ExtendedTime::finite(trailingEdgeMeets));
+    }
+    return TimeInterval::open(ExtendedTime::finite(trailingEdgeMeets), ExtendedTime::finite(leadingEdgeMeets));
+}
+
+ExactSweepOutput sweepTileExact(const ExactSweepInput& input) {
+    ExactSweepOutput out;
+    out.xTimes = axisOverlapTimes(input.box.pos.x, input.box.size.x, input.displacement.x, input.tile.min.x,
+                                  input.tile.max.x);
+    out.yTimes = axisOverlapTimes(input.box.pos.y, input.box.size.y, input.displacement.y, input.tile.min.y,
+                                  input.tile.max.y);
+    out.overlap = intersect(out.xTimes, out.yTimes);
+
+    if (out.overlap.contains(Rational(0))) {
+        out.state = ExactSweepState::StartsOverlapping;
+        return out;
+    }
+    if (!out.overlap.meetsOpenUnitInterval()) {
+        out.state = ExactSweepState::Misses;
+        return out;
+    }
+    // I is an open interval that meets (0, 1) but does not contain 0, so inf I is finite and in
+    // [0, 1): at least one axis moves, and the later entry is that of a moving axis.
+    out.state = ExactSweepState::Blocks;
+    out.time = out.overlap.low.value;
+
+    const ExtendedTime& entryX = out.xTimes.low;
+    const ExtendedTime& entryY = out.yTimes.low;
+    if (entryY < entryX) {
+        out.axis = Axis::X;
+    } else if (entryX < entryY) {
+        out.axis = Axis::Y;
+    } else {
+        // Both axes enter at the same finite time: an exact corner hit.
+        out.tie = true;
+        out.axis = (input.xFaceExposed && !input.yFaceExposed) ? Axis::X : Axis::Y;
+    }
+    return out;
+}
+
+}  // namespace tilesweep::oracle

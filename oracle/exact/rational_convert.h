@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstdint>
+
+#include "oracle/exact/rational.h"
+
+// Exact conversions between IEEE binary floating point (float, double) and Rational.
+//
+// float/double -> Rational is exact: a finite binary float is m * 2^e with an integer m of at
+// most `digits` bits, found with frexp/ldexp (the dyadic split). Rational -> float/double rounds
+// once, in the direction asked for, with the full IEEE range: subnormals (fixed quantum
+// 2^(min_exponent - digits)), binade boundaries (rounding up may carry into the next binade), and
+// overflow. On overflow the result follows IEEE 754: rounding toward zero's side of a huge value
+// gives the largest finite value, rounding away from it (and round-to-nearest at or beyond
+// max + half an ulp) gives infinity. A negative value that rounds to zero gives -0.
+//
+// These are written here rather than taken from Boost's convert_to<>, whose rounding direction is
+// not specified and not promised for subnormals.
+
+namespace tilesweep::oracle {
+
+/// How a Rational is rounded to a binary float.
+enum class Rounding : std::uint8_t {
+    TowardNegative,  ///< the largest representable value <= q (IEEE roundTowardNegative)
+    TowardPositive,  ///< the smallest representable value >= q (IEEE roundTowardPositive)
+    NearestEven,     ///< the nearest representable value; ties to the even significand
+};
+
+/// The exact value of a finite float. Throws std::invalid_argument on NaN or infinity.
+[[nodiscard]] Rational toRational(float value);
+
+/// The exact value of a finite double. Throws std::invalid_argument on NaN or infinity.
+[[nodiscard]] Rational toRational(double value);
+
+/// q rounded to T (float or double) in the given direction; see the header note for overflow.
+template <class T>
+[[nodiscard]] T fromRational(const Rational& q, Rounding rounding);
+
+/// q rounded to the representable T nearest q that lies between `from` and q, inclusive: the
+/// contract's rounding of a final position toward the start coordinate `from` (a T value).
+/// Never overflows, since `from` itself is finite and lies on that side.
+template <class T>
+[[nodiscard]] T roundToward(const Rational& q, T from);
+
+extern template float fromRational<float>(const Rational&, Rounding);
+extern template double fromRational<double>(const Rational&, Rounding);
+extern template float roundToward<float>(const Rational&, float);
+extern template double roundToward<double>(const Rational&, double);
+
+}  // namespace tilesweep::oracle

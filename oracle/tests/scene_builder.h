@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "tilesweep/scene.h"
+
+// Builds scenes for hand-worked tests straight from the pieces a scene file holds, without the
+// JSON reader: rows of '#' and '.', top row first.
+
+namespace tilesweep::oracle::test {
+
+template <class T>
+TileMap<T> makeMap(const std::vector<std::string>& rows, Vec2<T> origin = {0, 0}, Vec2<T> tileSize = {16, 16}) {
+    TileMap<T> map;
+    map.origin = origin;
+    map.tileSize = tileSize;
+    map.rows = static_cast<std::int32_t>(rows.size());
+    map.columns = rows.empty() ? 0 : static_cast<std::int32_t>(rows.front().size());
+    for (const std::string& row : rows) {
+        if (static_cast<std::int32_t>(row.size()) != map.columns) {
+            throw std::invalid_argument("makeMap: ragged rows");
+        }
+        for (char c : row) {
+            map.solid.push_back(c == '#' ? 1 : 0);
+        }
+    }
+    return map;
+}
+
+template <class T>
+Scene<T> makeScene(TileMap<T> map, Box<T> box, std::vector<Vec2<T>> moves) {
+    Scene<T> scene;
+    scene.map = std::move(map);
+    scene.box = box;
+    scene.moves = std::move(moves);
+    return scene;
+}
+
+}  // namespace tilesweep::oracle::test

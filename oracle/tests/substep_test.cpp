@@ -1,0 +1,208 @@
+// SPDX-License-Identifier: MIT
+// The substep oracles: the exact one brackets the exact time of impact whenever the overlap
+// window is wider than one substep, and never reports a hit the contract does not have; the
+// game-style float one tunnels and misses corners, as a baseline should.
+
+#include "oracle/substep/substep_oracle.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "oracle/exact/exact_resolve.h"
+#include "oracle/exact/exact_sweep.h"
+#include "oracle/substep/substep_float.h"
+#include "scene_builder.h"
+
+namespace tilesweep::oracle {
+namespace {
+
+using test::makeMap;
+using test::makeScene;
+
+Rational ratio(std::int64_t a, std::int64_t b) { return Rational(a) / Rational(b); }
+
+// ---- hand-worked ----------------------------------------------------------------------------
+
+TEST(SubstepOracle, clippedCornerNeedsSubstepsFinerThanItsWindow) {
+    // Box [2, 10] x [40, 48] moving (60, -11) clips tile (2, 1)'s corner during I = (8/11, 23/30),
+    // a window of 13/330 < 1/10. N = 10 samples 0.7 and 0.8, both outside: nothing found.
+    // N = 100: 73/100 is the first sample inside, and the bracket [72/100, 73/100) holds 8/11.
+    const ExactTileMap map = toExact(makeMap<float>({"......", "..#...", "......", "......"}));
+    const ExactBox box{{Rational(2), Rational(40)}, {Rational(8), Rational(8)}};
+    const ExactVec2 d{Rational(60), Rational(-11)};
+    EXPECT_FALSE(findFirstOverlapExact(map, box, d, 10).found());
+    const SubstepOverlap fine = findFirstOverlapExact(map, box, d, 100);
+    ASSERT_TRUE(fine.found());
+    EXPECT_EQ(fine.firstOverlap, 73);
+    ASSERT_EQ(fine.tiles.size(), 1U);
+    EXPECT_EQ(fine.tiles[0], (Cell{2, 1}));
+    EXPECT_LE(fine.bracketLow(), ratio(8, 11));
+    EXPECT_LT(ratio(8, 11), fine.bracketHigh());
+}
+
+TEST(SubstepOracle, impactExactlyOnASubstepIsSeenAtTheNextOne) {
+    // Box [0, 16] x [2, 10] moving (144, 0) against tile (4, 0) = [64, 80]: I = (1/3, 5/9). With
+    // N = 6, k = 2 puts the box at [48, 64], touching (not an overlap); k = 3 at [72, 88],
+    // overlapping: bracket [1/3, 1/2). With N = 3, k = 1 touches and k = 2 is already past the
+    // tile ([96, 112]): the window 2/9 is narrower than 1/3 and the tile is missed.
+    const ExactTileMap map = toExact(makeMap<float>({"....#"}));
+    const ExactBox box{{Rational(0), Rational(2)}, {Rational(16), Rational(8)}};
+    const ExactVec2 d{Rational(144), Rational(0)};
+    const SubstepOverlap overlap = findFirstOverlapExact(map, box, d, 6);
+    EXPECT_EQ(overlap.firstOverlap, 3);
+    EXPECT_EQ(overlap.bracketLow(), ratio(1, 3));
+    EXPECT_FALSE(findFirstOverlapExact(map, box, d, 3).found());
+}
+
+TEST(SubstepOracle, tilesOverlappedAtTheStartAreNeverReported) {
+    // Box inside (1, 1), moving left out of it: nothing else is in the way.
+    const ExactTileMap map = toExact(makeMap<float>({"....", ".#..", "...."}));
+    const SubstepOverlap overlap = findFirstOverlapExact(
+        map, {{Rational(20), Rational(20)}, {Rational(8), Rational(8)}}, {Rational(-20), Rational(0)}, 50);
+    EXPECT_FALSE(overlap.found());
+    ASSERT_EQ(overlap.startOverlaps.size(), 1U);
+    EXPECT_EQ(overlap.startOverlaps[0], (Cell{1, 1}));
+}
+
+TEST(SubstepOracle, refusesZeroSubsteps) {
+    const ExactTileMap map = toExact(makeMap<float>({"#"}));
+    EXPECT_THROW((void)findFirstOverlapExact(map, {{Rational(0), Rational(0)}, {Rational(1), Rational(1)}},
+                                             {Rational(1), Rational(1)}, 0),
+                 std::invalid_argument);
+}
+
+TEST(SubstepResolver, stopsAtTheLastClearSubstepWithAGuessedNormal) {
+    // Box [4, 14] x [18, 28] moving (200, 0), N = 20: substep k puts it at 4 + 10k. At k = 7 it is
+    // [74, 84], overlapping tile (5, 1) = [80, 96]; at k = 6 it was [64, 74], separated on x only:
+    // normal (-1, 0), time 7/20, position of k = 6: (64, 18). (The exact time 33/100 lies in
+    // [6/20, 7/20).)
+    const auto scene = makeScene<float>(makeMap<float>({"..........", ".....#....", ".........."}),
+                                        {{4, 18}, {10, 10}}, {{200, 0}});
+    const std::vector<SubstepFrame<float>> frames = resolveSceneSubstep(scene, 20);
+    ASSERT_EQ(frames.size(), 1U);
+    EXPECT_EQ(frames[0].firstOverlap, 7);
+    EXPECT_EQ(frames[0].frame.position, (Vec2<float>{64, 18}));
+    ASSERT_EQ(frames[0].frame.contacts.size(), 1U);
+    EXPECT_EQ(frames[0].frame.contacts[0].tile, (Cell{5, 1}));
+    EXPECT_EQ(frames[0].frame.contacts[0].normal, (Normal{-1, 0}));
+    EXPECT_EQ(frames[0].frame.contacts[0].time, 7.0f / 20.0f);
+}
+
+TEST(SubstepResolver, freeMotionEndsAtStartPlusDisplacementRoundedTowardTheStart) {
+    // Nothing solid: all N substeps are clear; the end is start + d exactly, rounded toward the
+    // start: 65540 + 0.001f rounds back to 65540 in float.
+    const auto scene = makeScene<float>(makeMap<float>({"...."}, {65536, 0}, {32, 32}), {{65540, 10}, {8, 8}},
+                                        {{0.001f, 0}});
+    const std::vector<SubstepFrame<float>> frames = resolveSceneSubstep(scene, 7);
+    EXPECT_EQ(frames[0].firstOverlap, 0);
+    EXPECT_EQ(frames[0].frame.position, (Vec2<float>{65540, 10}));
+}
+
+TEST(SubstepFloat, coarseSubstepsTunnelThroughAThinWall) {
+    // Box [4, 14] moving 200 toward tile (5, 1) = [80, 96]. N = 4: steps of 50 put it at 54, 104,
+    // 154, 204: [54, 64] and [104, 114] both miss [80, 96]; it tunnels to 204. N = 20: steps of
+    // 10 (exact in float), [74, 84] overlaps at k = 7: it stops at 64.
+    const auto scene = makeScene<float>(makeMap<float>({"..........", ".....#....", ".........."}),
+                                        {{4, 18}, {10, 10}}, {{200, 0}});
+    const auto coarse = resolveSceneSubstepFloat(scene, 4);
+    EXPECT_EQ(coarse[0].firstOverlap, 0);
+    EXPECT_EQ(coarse[0].frame.position, (Vec2<float>{204, 18}));
+    const auto fine = resolveSceneSubstepFloat(scene, 20);
+    EXPECT_EQ(fine[0].firstOverlap, 7);
+    EXPECT_EQ(fine[0].frame.position, (Vec2<float>{64, 18}));
+}
+
+TEST(SubstepFloat, coarseSubstepsMissAClippedCorner) {
+    // The clipped corner of above (window 13/330) with N = 10: samples at 0.7 and 0.8 miss it,
+    // and the box ends at start + d although the contract hits the tile at 8/11.
+    const auto scene = makeScene<float>(makeMap<float>({"......", "..#...", "......", "......"}),
+                                        {{2, 40}, {8, 8}}, {{60, -11}});
+    const auto frames = resolveSceneSubstepFloat(scene, 10);
+    EXPECT_EQ(frames[0].firstOverlap, 0);
+    EXPECT_TRUE(frames[0].frame.contacts.empty());
+    EXPECT_EQ(resolveSceneExact(scene).at(0).contacts.size(), 1U);
+}
+
+// ---- the bracket, over generated scenes -----------------------------------------------------
+
+// A random dyadic coordinate: a multiple of 1/4 in [lo, hi].
+Rational quarter(std::mt19937_64& random, int lo, int hi) {
+    std::uniform_int_distribution<int> pick(4 * lo, 4 * hi);
+    return Rational(pick(random)) / Rational(4);
+}
+
+// The claims of substep_oracle.h, against the exact reference's first step on random maps:
+//   - a reported substep k means the earliest exact impact s satisfies s < k/N;
+//   - if the earliest-hit tiles include one whose window (s, min(exit, 1)) is longer than 1/N,
+//     the substep oracle reports some k, and (k-1)/N <= s < k/N.
+TEST(SubstepOracle, bracketHoldsTheExactTimeWheneverTheWindowIsWiderThanOneSubstep) {
+    std::mt19937_64 random(20240611);
+    std::bernoulli_distribution solid(0.25);
+    const std::int64_t substepCounts[] = {1, 2, 7, 16, 64};
+    int hits = 0;
+    int bracketed = 0;
+    int narrowWindows = 0;
+    for (int n = 0; n < 1500; ++n) {
+        std::vector<std::string> rows(6, std::string(6, '.'));
+        for (std::string& row : rows) {
+            for (char& c : row) {
+                c = solid(random) ? '#' : '.';
+            }
+        }
+        const ExactTileMap map = toExact(makeMap<float>(rows));
+        const ExactBox box{{quarter(random, 0, 90), quarter(random, 0, 90)},
+                           {quarter(random, 1, 20), quarter(random, 1, 20)}};
+        const ExactVec2 d{quarter(random, -60, 60), quarter(random, -60, 60)};
+        const ExactFrame frame = resolveFrameExact(map, box, d);
+        const std::int64_t substeps = substepCounts[n % 5];
+        const SubstepOverlap overlap = findFirstOverlapExact(map, box, d, substeps);
+
+        const bool blocks = !frame.contacts.empty();
+        const Rational s = blocks ? frame.contacts.front().time : Rational(0);
+        if (overlap.found()) {
+            ASSERT_TRUE(blocks) << "substep " << overlap.firstOverlap << " of " << substeps << " without a hit";
+            ASSERT_LT(s, overlap.bracketHigh());
+        }
+        if (!blocks) {
+            continue;
+        }
+        ++hits;
+        // The widest window among the tiles hit first (all hit at s; step 1 is the straight move).
+        Rational widest(0);
+        for (const ExactContact& c : frame.contacts) {
+            if (c.step != 1) {
+                continue;
+            }
+            const ExactRect rect = map.tileRect(c.tile.i, c.tile.j);
+            const ExactSweepOutput sweep = sweepTileExact({box, d, rect});
+            const Rational end = (sweep.overlap.high.isFinite() && sweep.overlap.high.value < 1)
+                                     ? sweep.overlap.high.value
+                                     : Rational(1);
+            if (end - s > widest) {
+                widest = end - s;
+            }
+        }
+        if (widest > Rational(1) / Rational(substeps)) {
+            ++bracketed;
+            ASSERT_TRUE(overlap.found()) << "window " << toString(widest) << " missed with N = " << substeps;
+            ASSERT_LE(overlap.bracketLow(), s);
+            ASSERT_LT(s, overlap.bracketHigh());
+        } else {
+            ++narrowWindows;
+        }
+    }
+    // Coverage, so that the run shows it exercised each case.
+    RecordProperty("hits", hits);
+    RecordProperty("bracketed", bracketed);
+    RecordProperty("narrowWindows", narrowWindows);
+    EXPECT_GT(hits, 300);
+    EXPECT_GT(bracketed, 200);
+    EXPECT_GT(narrowWindows, 10);
+}
+
+}  // namespace
+}  // namespace tilesweep::oracle

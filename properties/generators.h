@@ -1,0 +1,376 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+// Scene generators for the property suite.
+//
+// RapidCheck's own float generator never yields -0, subnormals or tile-edge values and shrinks
+// poorly, so every number here is an integer on a grid mapped to T (a multiple of tile/8, say),
+// which keeps shrinking on clean values; adversarial builders then place boxes exactly on
+// corners, seams and gaps, and perturb them by one ulp. Scenes are built valid directly (the
+// cells under the box's start are cleared when a start without overlap is wanted) rather than
+// filtered with RC_PRE. Every function is inline (RapidCheck's example Generators.h is an ODR
+// trap otherwise).
+
+#include <rapidcheck.h>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "tilesweep/scene.h"
+
+namespace tilesweep::properties {
+
+/// The families of scenes; each is reachable on its own, and `Mixed` draws from all.
+enum class Family : std::uint8_t {
+    Random,      ///< random density, any box and motion
+    Floor,       ///< flat floors and ceilings, walls one tile thick, corridors
+    Stairs,      ///< a staircase
+    SingleTile,  ///< one solid tile
+    CornerTie,   ///< the box's leading corner aimed exactly at a tile corner; random exposed faces
+    CornerPass,  ///< a path exactly through a corner point, or off it by one ulp either way
+    SeamLanding, ///< landing straddling the seam between two floor tiles
+    Gap,         ///< a box exactly as wide as a one-tile gap, or one ulp wider
+    Resting,     ///< resting on a floor under gravity for many frames, possibly sliding
+    Mixed,
+};
+
+[[nodiscard]] inline const char* familyName(Family f) {
+    switch (f) {
+        case Family::Random: return "random";
+        case Family::Floor: return "floor";
+        case Family::Stairs: return "stairs";
+        case Family::SingleTile: return "single-tile";
+        case Family::CornerTie: return "corner-tie";
+        case Family::CornerPass: return "corner-pass";
+        case Family::SeamLanding: return "seam-landing";
+        case Family::Gap: return "gap";
+        case Family::Resting: return "resting";
+        case Family::Mixed: return "mixed";
+    }
+    return "?";
+}
+
+/// A generated scene and the family that built it.
+template <class T>
+struct GeneratedScene {
+    Scene<T> scene;
+    Family family = Family::Random;
+    bool farOrigin = false;
+};
+
+namespace detail {
+
+template <class T>
+struct Grid {
+    int columns = 0;
+    int rows = 0;
+    std::vector<std::uint8_t> solid;
+    void set(int i, int j, bool v) {
+        if (i >= 0 && j >= 0 && i < columns && j < rows) solid[static_cast<std::size_t>(j * columns + i)] = v ? 1 : 0;
+    }
+    bool get(int i, int j) const {
+        return i >= 0 && j >= 0 && i < columns && j < rows && solid[static_cast<std::size_t>(j * columns + i)] != 0;
+    }
+};
+
+/// Tile sizes: powers of two and integers such as 12 or 24.
+inline rc::Gen<int> genTileSize() { return rc::gen::element(16, 8, 32, 12, 24, 16, 4); }
+
+/// A map origin: zero mostly, a few tiles off, or far away (up to 2^23 in float, 2^40 in
+/// double) where the ulp of a coordinate is large. Always a multiple of the tile size, so every
+/// edge is an integer and representable.
+template <class T>
+rc::Gen<double> genOrigin(int tile) {
+    const double far = std::is_same<T, float>::value ? 8388608.0 : 1099511627776.0;
+    return rc::gen::weightedOneOf<double>(
+        {{6, rc::gen::just(0.0)},
+         {2, rc::gen::map(rc::gen::inRange(-8, 9), [tile](int k) { return double(k * tile); })},
+         {2, rc::gen::map(rc::gen::inRange(-2, 3), [far, tile](int k) {
+              return k * far + (k < 0 ? -8.0 : 8.0) * tile;  // stays a multiple of tile
+          })}});
+}
+
+/// A length on the grid tile/8, from a fraction of a tile to `maxTiles` tiles; sometimes a
+/// non-dyadic decimal such as 12.3 (rounded once to T).
+template <class T>
+rc::Gen<T> genLength(int tile, int maxEighths) {
+    return rc::gen::weightedOneOf<T>(
+        {{8, rc::gen::map(rc::gen::inRange(1, maxEighths + 1), [tile](int n) { return static_cast<T>(n * tile / 8.0); })},
+         {2, rc::gen::map(rc::gen::inRange(1, maxEighths * tile / 8 * 10 + 1),
+                          [](int n) { return static_cast<T>(n / 10.0); })}});
+}
+
+/// A displacement component: zero, below one ulp of `at`, on the tile/8 grid up to 100 tiles,
+/// or a decimal; either sign.
+template <class T>
+rc::Gen<T> genDisplacement(int tile, T at) {
+    const T ulp = std::nextafter(std::fabs(at), std::numeric_limits<T>::infinity()) - std::fabs(at);
+    return rc::gen::weightedOneOf<T>(
+        {{2, rc::gen::just(T(0))},
+         {1, rc::gen::map(rc::gen::inRange(-3, 4), [ulp](int n) { return static_cast<T>(n) * ulp / 4; })},
+         {6, rc::gen::map(rc::gen::inRange(-64, 65), [tile](int n) { return static_cast<T>(n * tile / 8.0); })},
+         {2, rc::gen::map(rc::gen::inRange(-800, 801), [tile](int n) { return static_cast<T>(n * tile / 8.0); })},
+         {2, rc::gen::map(rc::gen::inRange(-3000, 3001), [](int n) { return static_cast<T>(n / 10.0); })}});
+}
+
+template <class T>
+Scene<T> makeScene(const Grid<T>& g, double ox, double oy, int tile, Box<T> box, std::vector<Vec2<T>> moves) {
+    Scene<T> s;
+    s.map.origin = {static_cast<T>(ox), static_cast<T>(oy)};
+    s.map.tileSize = {T(tile), T(tile)};
+    s.map.columns = g.columns;
+    s.map.rows = g.rows;
+    s.map.solid = g.solid;
+    s.box = box;
+    s.moves = std::move(moves);
+    return s;
+}
+
+/// Clears the cells the box overlaps (or touches) at its start, so it starts free.
+template <class T>
+void clearUnder(Grid<T>& g, double ox, double oy, int tile, Box<T> box) {
+    const double x0 = (static_cast<double>(box.pos.x) - ox) / tile;
+    const double y0 = (static_cast<double>(box.pos.y) - oy) / tile;
+    const double x1 = x0 + static_cast<double>(box.size.x) / tile;
+    const double y1 = y0 + static_cast<double>(box.size.y) / tile;
+    for (int j = static_cast<int>(std::floor(y0)) - 1; j <= static_cast<int>(std::floor(y1)); ++j)
+        for (int i = static_cast<int>(std::floor(x0)) - 1; i <= static_cast<int>(std::floor(x1)); ++i)
+            if (i + 1 > x0 && i < x1 && j + 1 > y0 && j < y1) g.set(i, j, false);
+}
+
+template <class T>
+T offGrid(T v, int direction) {
+    return std::nextafter(v, direction > 0 ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity());
+}
+
+/// Random maps: density, floors, walls, corridors, stairs, single tiles.
+template <class T>
+rc::Gen<GeneratedScene<T>> genLayoutScene(Family family) {
+    return rc::gen::exec([family] {
+        const int tile = *genTileSize();
+        const double ox = *genOrigin<T>(tile);
+        const double oy = *genOrigin<T>(tile);
+        Grid<T> g;
+        g.columns = *rc::gen::weightedOneOf<int>({{8, rc::gen::inRange(1, 17)}, {1, rc::gen::inRange(17, 65)}});
+        g.rows = *rc::gen::weightedOneOf<int>({{8, rc::gen::inRange(1, 17)}, {1, rc::gen::inRange(17, 65)}});
+        g.solid.assign(static_cast<std::size_t>(g.columns * g.rows), 0);
+        switch (family) {
+            case Family::Floor: {
+                const int floorRow = *rc::gen::inRange(0, g.rows);
+                for (int i = 0; i < g.columns; ++i) g.set(i, floorRow, true);
+                if (*rc::gen::arbitrary<bool>())  // a ceiling too: a corridor
+                    for (int i = 0; i < g.columns; ++i) g.set(i, *rc::gen::inRange(0, g.rows), true);
+                if (*rc::gen::arbitrary<bool>()) {  // a wall one tile thick
+                    const int col = *rc::gen::inRange(0, g.columns);
+                    for (int j = 0; j < g.rows; ++j) g.set(col, j, true);
+                    if (*rc::gen::arbitrary<bool>()) g.set(col, *rc::gen::inRange(0, g.rows), false);  // a gap
+                }
+                break;
+            }
+            case Family::Stairs: {
+                const int step = *rc::gen::inRange(1, 3);
+                for (int i = 0; i < g.columns; ++i)
+                    for (int j = std::max(0, g.rows - 1 - i / step); j < g.rows; ++j) g.set(i, j, true);
+                break;
+            }
+            case Family::SingleTile: g.set(*rc::gen::inRange(0, g.columns), *rc::gen::inRange(0, g.rows), true); break;
+            default: {
+                const int percent = *rc::gen::element(0, 10, 30, 50, 80);
+                for (auto& c : g.solid) c = *rc::gen::inRange(0, 100) < percent ? 1 : 0;
+                break;
+            }
+        }
+        Box<T> box;
+        box.size = {*genLength<T>(tile, 24), *genLength<T>(tile, 24)};
+        const int bi = *rc::gen::inRange(-2, g.columns + 2);
+        const int bj = *rc::gen::inRange(-2, g.rows + 2);
+        box.pos = {static_cast<T>(ox + bi * tile + *rc::gen::inRange(0, 8) * tile / 8.0),
+                   static_cast<T>(oy + bj * tile + *rc::gen::inRange(0, 8) * tile / 8.0)};
+        if (*rc::gen::inRange(0, 100) < 85) clearUnder(g, ox, oy, tile, box);
+        std::vector<Vec2<T>> moves;
+        const int frames = *rc::gen::weightedOneOf<int>({{6, rc::gen::just(1)}, {3, rc::gen::inRange(2, 5)}});
+        for (int f = 0; f < frames; ++f)
+            moves.push_back({*genDisplacement<T>(tile, box.pos.x), *genDisplacement<T>(tile, box.pos.y)});
+        return GeneratedScene<T>{makeScene(g, ox, oy, tile, box, moves), family, ox != 0 && std::fabs(ox) >= 1048576.0};
+    });
+}
+
+/// A corner scene: one target tile, a box coming at it diagonally so that at t = 1/2 either its
+/// leading corner meets the tile's near corner (an exact tie) or its corner passes exactly
+/// through one of the tile's corner points (touch, no hit); the pass may be nudged by one ulp in
+/// any input, which clips the corner or misses it.
+template <class T>
+rc::Gen<GeneratedScene<T>> genCornerScene(Family family) {
+    return rc::gen::exec([family] {
+        const int tile = *genTileSize();
+        const double ox = *genOrigin<T>(tile);
+        const double oy = *genOrigin<T>(tile);
+        Grid<T> g;
+        g.columns = 7;
+        g.rows = 7;
+        g.solid.assign(49, 0);
+        const int ci = 3;
+        const int cj = 3;
+        g.set(ci, cj, true);
+        const int sx = *rc::gen::element(-1, 1);
+        const int sy = *rc::gen::element(-1, 1);
+        // Neighbours across the faces the box approaches: every combination of exposed faces.
+        g.set(ci - sx, cj, *rc::gen::arbitrary<bool>());
+        g.set(ci, cj - sy, *rc::gen::arbitrary<bool>());
+        const T w = static_cast<T>(*rc::gen::inRange(1, 17) * tile / 8.0);
+        const T h = static_cast<T>(*rc::gen::inRange(1, 17) * tile / 8.0);
+        // Half the displacement, on the grid tile/8, at least one tile long per axis so the box
+        // starts clear of the tile.
+        const double hx = sx * (*rc::gen::inRange(8, 33)) * tile / 8.0;
+        const double hy = sy * (*rc::gen::inRange(8, 33)) * tile / 8.0;
+        const double x0 = ox + ci * tile;
+        const double y0 = oy + cj * tile;
+        const double nearX = sx > 0 ? x0 : x0 + tile;  // face the box reaches first
+        const double nearY = sy > 0 ? y0 : y0 + tile;
+        double leadX = 0;  // the box's x edge that meets the corner at t = 1/2
+        double leadY = 0;
+        if (family == Family::CornerTie) {
+            leadX = nearX;  // leading corner on the near corner: both axes enter at 1/2
+            leadY = nearY;
+        } else {
+            // The leading x edge reaches the near x face as the trailing y edge leaves the far
+            // y face: entry on x equals exit on y, the path passes through the corner point.
+            leadX = nearX;
+            leadY = sy > 0 ? y0 + tile : y0;
+        }
+        // Which edge meets the corner: on x always the leading one; on y the leading one for a
+        // tie, the trailing one for a pass.
+        const bool leadIsHighX = sx > 0;
+        const bool leadIsHighY = family == Family::CornerTie ? sy > 0 : sy < 0;
+        const double startLeadX = leadX - hx;
+        const double startLeadY = leadY - hy;
+        Box<T> box{{static_cast<T>(leadIsHighX ? startLeadX - static_cast<double>(w) : startLeadX),
+                    static_cast<T>(leadIsHighY ? startLeadY - static_cast<double>(h) : startLeadY)},
+                   {w, h}};
+        Vec2<T> d{static_cast<T>(2 * hx), static_cast<T>(2 * hy)};
+        if (family == Family::CornerPass) {
+            switch (*rc::gen::inRange(0, 5)) {  // 0: exact pass; else nudge one input by one ulp
+                case 1: d.x = offGrid(d.x, *rc::gen::element(-1, 1)); break;
+                case 2: d.y = offGrid(d.y, *rc::gen::element(-1, 1)); break;
+                case 3: box.pos.x = offGrid(box.pos.x, *rc::gen::element(-1, 1)); break;
+                case 4: box.pos.y = offGrid(box.pos.y, *rc::gen::element(-1, 1)); break;
+                default: break;
+            }
+        }
+        clearUnder(g, ox, oy, tile, box);
+        g.set(ci, cj, true);
+        return GeneratedScene<T>{makeScene(g, ox, oy, tile, box, {d}), family, std::fabs(ox) >= 1048576.0};
+    });
+}
+
+/// Floor scenes: a landing straddling a seam at t = 1/2, a box as wide as a one-tile gap (or one
+/// ulp wider), or resting on the floor under gravity for many frames, sliding or not.
+template <class T>
+rc::Gen<GeneratedScene<T>> genFloorScene(Family family) {
+    return rc::gen::exec([family] {
+        const int tile = *genTileSize();
+        const double ox = *genOrigin<T>(tile);
+        const double oy = *genOrigin<T>(tile);
+        Grid<T> g;
+        g.columns = *rc::gen::inRange(6, 33);
+        g.rows = 6;
+        g.solid.assign(static_cast<std::size_t>(g.columns * g.rows), 0);
+        const int floorRow = 4;
+        for (int i = 0; i < g.columns; ++i) g.set(i, floorRow, true);
+        const double floorY = oy + floorRow * tile;
+        Box<T> box;
+        std::vector<Vec2<T>> moves;
+        int gapColumn = -1;
+        if (family == Family::Gap) {
+            const int gap = *rc::gen::inRange(1, g.columns - 1);
+            gapColumn = gap;
+            T w = T(tile);
+            T x = static_cast<T>(ox + gap * tile);
+            switch (*rc::gen::inRange(0, 3)) {
+                case 1: w = offGrid(w, 1); break;                          // one ulp too wide
+                case 2: x = offGrid(x, *rc::gen::element(-1, 1)); break;   // one ulp off the gap
+                default: break;
+            }
+            box = {{x, static_cast<T>(floorY - 2.0 * tile)}, {w, T(tile)}};
+            moves.push_back({0, static_cast<T>(*rc::gen::inRange(1, 5) * tile)});
+        } else if (family == Family::SeamLanding) {
+            const int seam = *rc::gen::inRange(1, g.columns);
+            const double w = *rc::gen::inRange(2, 17) * tile / 8.0;
+            const double h = *rc::gen::inRange(2, 17) * tile / 8.0;
+            const double fall = *rc::gen::inRange(1, 33) * tile / 8.0;  // gap above the floor
+            const double hx = *rc::gen::inRange(-16, 17) * tile / 8.0;  // half the x motion
+            // At t = 1/2 the box's bottom meets the floor and its centre is over the seam.
+            box = {{static_cast<T>(ox + seam * tile - w / 2 - hx), static_cast<T>(floorY - h - fall)},
+                   {static_cast<T>(w), static_cast<T>(h)}};
+            moves.push_back({static_cast<T>(2 * hx), static_cast<T>(2 * fall)});
+            const int slides = *rc::gen::inRange(0, 6);
+            for (int k = 0; k < slides; ++k) moves.push_back({static_cast<T>(2 * hx), static_cast<T>(tile / 4.0)});
+        } else {  // Resting
+            // Bottom exactly on the floor: sizes on the tile/8 grid keep y = floorY - h exact.
+            const T h = static_cast<T>(*rc::gen::inRange(1, 25) * tile / 8.0);
+            const T w = *genLength<T>(tile, 24);
+            const T y = static_cast<T>(floorY - static_cast<double>(h));
+            box = {{static_cast<T>(ox + *rc::gen::inRange(0, g.columns * 8) * tile / 8.0), y}, {w, h}};
+            const T vx = *rc::gen::weightedOneOf<T>({{2, rc::gen::just(T(0))},
+                                                      {3, rc::gen::map(rc::gen::inRange(-32, 33), [tile](int n) {
+                                                           return static_cast<T>(n * tile / 16.0);
+                                                       })}});
+            const T gravity = static_cast<T>(*rc::gen::inRange(1, 33) * tile / 32.0);
+            const int frames = *rc::gen::inRange(2, 40);
+            for (int k = 0; k < frames; ++k) moves.push_back({vx, gravity});
+        }
+        clearUnder(g, ox, oy, tile, box);
+        // The floor stays solid (the box only touches it), but for the gap.
+        for (int i = 0; i < g.columns; ++i) g.set(i, floorRow, i != gapColumn);
+        return GeneratedScene<T>{makeScene(g, ox, oy, tile, box, moves), family, std::fabs(ox) >= 1048576.0};
+    });
+}
+
+}  // namespace detail
+
+/// Scenes of one family, or of all of them (`Mixed`).
+template <class T>
+rc::Gen<GeneratedScene<T>> genScene(Family family) {
+    using detail::genCornerScene;
+    using detail::genFloorScene;
+    using detail::genLayoutScene;
+    switch (family) {
+        case Family::Random:
+        case Family::Floor:
+        case Family::Stairs:
+        case Family::SingleTile: return genLayoutScene<T>(family);
+        case Family::CornerTie:
+        case Family::CornerPass: return genCornerScene<T>(family);
+        case Family::SeamLanding:
+        case Family::Gap:
+        case Family::Resting: return genFloorScene<T>(family);
+        case Family::Mixed: break;
+    }
+    return rc::gen::weightedOneOf<GeneratedScene<T>>({
+        {4, genLayoutScene<T>(Family::Random)},
+        {2, genLayoutScene<T>(Family::Floor)},
+        {1, genLayoutScene<T>(Family::Stairs)},
+        {1, genLayoutScene<T>(Family::SingleTile)},
+        {2, genCornerScene<T>(Family::CornerTie)},
+        {3, genCornerScene<T>(Family::CornerPass)},
+        {2, genFloorScene<T>(Family::SeamLanding)},
+        {1, genFloorScene<T>(Family::Gap)},
+        {2, genFloorScene<T>(Family::Resting)},
+    });
+}
+
+}  // namespace tilesweep::properties
+
+namespace tilesweep::properties {
+
+/// Prints a generated scene as the scene line it is (every number a hexfloat), so a
+/// counterexample reads back bit for bit.
+template <class T>
+void showValue(const GeneratedScene<T>& g, std::ostream& os) {
+    os << familyName(g.family) << ": " << formatScene(g.scene);
+}
+
+}  // namespace tilesweep::properties

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+// The claims the property suite makes about the production resolver, each a plain function of
+// one scene: it returns an empty string when the claim holds, otherwise what went wrong. The
+// RapidCheck properties, the regression corpus replay and `tilesweep check` all call these, so a
+// shrunk counterexample is replayed against every claim, for ever.
+
+#include <string>
+#include <vector>
+
+#include "tilesweep/scene.h"
+
+namespace tilesweep::properties {
+
+/// One claim, for scenes in T.
+template <class T>
+struct Claim {
+    const char* name;                         ///< the claim, camelCase (the property's name)
+    std::string (*check)(const Scene<T>&);    ///< empty when it holds
+};
+
+/// Every claim, in the order `tilesweep check` lists them.
+template <class T>
+[[nodiscard]] const std::vector<Claim<T>>& allClaims();
+
+/// The first claim of that name, or nullptr.
+template <class T>
+[[nodiscard]] const Claim<T>* findClaim(const std::string& name);
+
+/// Coverage tags of a scene, from its exact resolution: "hit", "miss", "tie", "touch-at-0",
+/// "two-step", "seam" (several tiles hit at once on one face), "start-overlap", "far-origin".
+template <class T>
+[[nodiscard]] std::vector<std::string> classifyScene(const Scene<T>& scene);
+
+extern template const std::vector<Claim<float>>& allClaims<float>();
+extern template const std::vector<Claim<double>>& allClaims<double>();
+extern template const Claim<float>* findClaim<float>(const std::string&);
+extern template const Claim<double>* findClaim<double>(const std::string&);
+extern template std::vector<std::string> classifyScene<float>(const Scene<float>&);
+extern template std::vector<std::string> classifyScene<double>(const Scene<double>&);
+
+}  // namespace tilesweep::properties

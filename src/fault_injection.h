@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+// Deliberate faults, for proving that the property suite has teeth (scripts/fault-table.sh).
+// A build with -DTILESWEEP_FAULT=<NAME> defines TILESWEEP_FAULT_<NAME>, which switches on one
+// of these at its place in the code; an ordinary build defines none and compiles none of them.
+//
+//   TOUCH_OVERLAPS     touching counted as overlapping            (axis_sweep.h)
+//   NO_CORNER_MISS     the corner-miss test (E < X) dropped        (axis_sweep.h)
+//   TIE_REVERSED       the exposed-face tie rule reversed          (axis_sweep.h)
+//   DOUBLE_PREDICATE   entry times compared in plain double        (axis_sweep.h)
+//   ROUND_NEAREST      positions rounded to nearest, not toward the start (resolve.cpp)
+//   BROADPHASE_SHORT   the broadphase's secondary range one cell short   (resolve.cpp)
+//   FMA                -ffp-contract=fast instead of off           (cmake/warnings.cmake)
+
+#if defined(TILESWEEP_FAULT_TOUCH_OVERLAPS) || defined(TILESWEEP_FAULT_NO_CORNER_MISS) ||   \
+    defined(TILESWEEP_FAULT_TIE_REVERSED) || defined(TILESWEEP_FAULT_DOUBLE_PREDICATE) || \
+    defined(TILESWEEP_FAULT_ROUND_NEAREST) || defined(TILESWEEP_FAULT_BROADPHASE_SHORT) || defined(TILESWEEP_FAULT_FMA)
+#define TILESWEEP_FAULT_INJECTED 1
+#endif

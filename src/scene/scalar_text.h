@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <string>
+#include <string_view>
+
+// Numbers as scene files write them, internal to tilesweep_scene.
+//
+// Reading: a JSON number lexeme, or a C99 hexadecimal float as printf("%a") writes it, is
+// rounded once, straight to T, to nearest (ties to even). Going through double first would
+// round twice, and the float nearest a double is not always the float nearest the decimal.
+// Writing: a hexfloat that reads back to the same bits, or the shortest decimal that does.
+// Both directions use <charconv>, so neither depends on the C locale's decimal point.
+
+namespace tilesweep::detail {
+
+/// How reading a scalar ended.
+enum class ScalarTextStatus {
+    Ok,
+    Malformed,  ///< not a JSON number lexeme / not a hexfloat of the form [-]0x<hex>[.<hex>]p<exp>
+    NonFinite,  ///< spells a NaN or an infinity ("nan", "-inf", "Infinity", ...)
+    Overflow,   ///< finite, but rounds to an infinity in T
+};
+
+/// A scalar read from text: `value` is meaningful only when `status` is Ok.
+template <class T>
+struct ScalarText {
+    T value = 0;
+    ScalarTextStatus status = ScalarTextStatus::Malformed;
+};
+
+/// Rounds a JSON number lexeme (as the JSON grammar allows: -?int(.frac)?(e[+-]?exp)?) to T.
+/// Values too small for T round to a signed zero or a subnormal, as to nearest demands.
+template <class T>
+[[nodiscard]] ScalarText<T> readDecimalScalar(std::string_view lexeme);
+
+/// Rounds a hexfloat string ("0x1.8p+3", "-0x1p-3", "0x0.0000000000001p-1022"; the 'x' and
+/// 'p' may be upper case) to T. Anything else, including "nan" and "inf", is refused.
+template <class T>
+[[nodiscard]] ScalarText<T> readHexfloatScalar(std::string_view text);
+
+/// Appends `value` as printf("%a") writes it in the C locale ("0x1.8p+3", "-0x0p+0"); exact,
+/// because a float promotes to double without rounding.
+void appendHexfloat(std::string& out, double value);
+
+/// Appends the shortest decimal that reads back to the same T (std::to_chars without a
+/// format). A finite value always gives valid JSON ("-0", "1e+21", "0.1").
+template <class T>
+void appendShortest(std::string& out, T value);
+
+/// The name of T in messages: "float" or "double".
+template <class T>
+[[nodiscard]] const char* scalarName() noexcept;
+
+}  // namespace tilesweep::detail
