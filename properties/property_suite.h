@@ -18,7 +18,7 @@ namespace tilesweep::properties {
 /// How to run a property.
 struct RunOptions {
     std::uint64_t seed = 20261122;  ///< RapidCheck seed; the same seed gives the same cases
-    int cases = 100;                ///< successful cases before the property passes
+    int cases = 1000;               ///< successful cases before the property passes
     std::string corpusDir;          ///< where a shrunk counterexample is written; empty: nowhere
 };
 
