@@ -18,6 +18,9 @@
 #include <vector>
 
 #include "tilesweep/render.h"
+#if TILESWEEP_HAVE_CHECK
+#include "check_command.h"
+#endif
 #include "tilesweep/scene.h"
 
 #ifndef TILESWEEP_VERSION
@@ -295,6 +298,10 @@ int main(int argc, char** argv) {
     CLI::App* resolveCommand = addResolveCommand(app, resolveOptions);
     RenderOptions renderOptions;
     CLI::App* renderCommand = addRenderCommand(app, renderOptions);
+#if TILESWEEP_HAVE_CHECK
+    tilesweep::cli::CheckOptions checkOptions;
+    CLI::App* checkCommand = tilesweep::cli::addCheckCommand(app, checkOptions);
+#endif
 
     try {
         app.parse(argc, argv);
@@ -306,6 +313,9 @@ int main(int argc, char** argv) {
     try {
         if (resolveCommand->parsed()) return runResolveCommand(resolveOptions);
         if (renderCommand->parsed()) return runRenderCommand(renderOptions);
+#if TILESWEEP_HAVE_CHECK
+        if (checkCommand->parsed()) return tilesweep::cli::runCheckCommand(checkOptions);
+#endif
     } catch (const std::exception& error) {
         std::cerr << "tilesweep: " << error.what() << '\n';
         return kExitUsage;

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# The main job: builds tilesweep (installing what is missing) and resolves the example scenes
-# shipped in examples/, one JSON line of frames per scene, in float.
+# The main job: builds tilesweep (installing what is missing) and runs the property suite,
+# `tilesweep check`, for its default budget of about a minute on all cores. Arguments go to
+# `tilesweep check` (for example --seconds 600, --property matchesExact, --seed 7).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$root/scripts/build.sh"
-"${TILESWEEP_BUILD_DIR:-$root/build}/cli/tilesweep" resolve "${@:---scalar=float}" "$root/examples/platformer.jsonl"
+cd "$root"
+"${TILESWEEP_BUILD_DIR:-$root/build}/cli/tilesweep" check "$@"
