@@ -17,12 +17,11 @@ template <class T>
 bool isFinite(Vec2<T> v) noexcept { return std::isfinite(v.x) && std::isfinite(v.y); }
 
 template <class T, class Num>
-BoxSweepOutput<T> sweepOnLattice(const BoxSweepInput<T>& in, int exponent) noexcept {
-    const auto lat = [exponent](T v) { return detail::toLattice<Num>(v, exponent); };
-    const auto mx = detail::makeAxisMotion(lat(in.box.pos.x), lat(in.box.size.x), lat(in.displacement.x));
-    const auto my = detail::makeAxisMotion(lat(in.box.pos.y), lat(in.box.size.y), lat(in.displacement.y));
-    const auto test = detail::testTile(mx, my, lat(in.tileMin.x), lat(in.tileMax.x), lat(in.tileMin.y),
-                                       lat(in.tileMax.y));
+BoxSweepOutput<T> sweepOnLattice(const BoxSweepInput<T>& in, const detail::Dyadic* d, int exponent) noexcept {
+    const auto lat = [exponent](detail::Dyadic v) { return detail::toLattice<Num>(v, exponent); };
+    const auto mx = detail::makeAxisMotion(lat(d[0]), lat(d[2]), lat(d[4]));
+    const auto my = detail::makeAxisMotion(lat(d[1]), lat(d[3]), lat(d[5]));
+    const auto test = detail::testTile(mx, my, lat(d[6]), lat(d[8]), lat(d[7]), lat(d[9]));
     BoxSweepOutput<T> out;
     switch (test.verdict) {
         case detail::TileVerdict::Misses: out.state = BoxSweepState::Misses; return out;
@@ -44,16 +43,18 @@ BoxSweepOutput<T> sweepBox(const BoxSweepInput<T>& in) noexcept {
         !isFinite(in.displacement) || !isFinite(in.tileMin) || !isFinite(in.tileMax) ||
         !(in.tileMin.x < in.tileMax.x && in.tileMin.y < in.tileMax.y))
         return {};
-    const T values[] = {in.box.pos.x, in.box.pos.y, in.box.size.x, in.box.size.y, in.displacement.x,
-                        in.displacement.y, in.tileMin.x, in.tileMin.y, in.tileMax.x, in.tileMax.y};
-    using Wide = long double;
-    const auto mag = [](T v) { return static_cast<Wide>(std::fabs(v)); };
-    const Wide bound = std::max({mag(in.box.pos.x) + mag(in.box.size.x) + mag(in.displacement.x),
-                                 mag(in.box.pos.y) + mag(in.box.size.y) + mag(in.displacement.y),
-                                 mag(in.tileMin.x), mag(in.tileMax.x), mag(in.tileMin.y), mag(in.tileMax.y)});
-    const detail::LatticeShape shape = detail::shapeLattice(values, 10, bound);
+    using detail::decompose;
+    const detail::Dyadic d[10] = {decompose(in.box.pos.x),      decompose(in.box.pos.y),
+                                  decompose(in.box.size.x),     decompose(in.box.size.y),
+                                  decompose(in.displacement.x), decompose(in.displacement.y),
+                                  decompose(in.tileMin.x),      decompose(in.tileMin.y),
+                                  decompose(in.tileMax.x),      decompose(in.tileMax.y)};
+    // Box edges are sums of three inputs (2 bits above the largest); tile edges are inputs.
+    int top = 0;
+    for (int k = 0; k < 10; ++k) top = std::max(top, detail::exponentAbove(d[k]) + 2);
+    const detail::LatticeShape shape = detail::shapeLattice(d, 10, top);
     return detail::withWidth(detail::bitsNeeded(shape), [&](auto tag) {
-        return sweepOnLattice<T, decltype(tag)>(in, shape.exponent);
+        return sweepOnLattice<T, decltype(tag)>(in, d, shape.exponent);
     });
 }
 

@@ -17,36 +17,57 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <type_traits>
 
 #include "wide_int.h"
 
 namespace tilesweep::detail {
 
-/// Exponent of the lowest set bit of a nonzero finite value (v = odd * 2^result).
+/// A finite float or double as odd * 2^exponent (mantissa 0 for zero): its exact value.
+struct Dyadic {
+    std::int64_t mantissa;
+    int exponent;
+};
+
+/// The exact dyadic form of a finite value, read from its bits (no libm call: this runs for
+/// every input of every frame).
 template <class T>
-[[nodiscard]] inline int lowestBitExponent(T v) noexcept {
-    int e = 0;
-    const T f = std::frexp(v, &e);
-    constexpr int p = std::numeric_limits<T>::digits;
-    const auto m = static_cast<std::int64_t>(std::ldexp(f, p));  // exact: f has at most p bits
-    const std::uint64_t mag = m < 0 ? 0 - static_cast<std::uint64_t>(m) : static_cast<std::uint64_t>(m);
-    return e - p + __builtin_ctzll(mag);
+[[nodiscard]] inline Dyadic decompose(T v) noexcept {
+    static_assert(std::numeric_limits<T>::is_iec559, "IEEE 754 binary formats only");
+    constexpr int p = std::numeric_limits<T>::digits;                 // 24 or 53
+    constexpr int bias = std::numeric_limits<T>::max_exponent - 1;   // 127 or 1023
+    using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
+    Bits bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    const bool negative = (bits >> (8 * sizeof(T) - 1)) != 0;
+    const auto biased = static_cast<int>((bits >> (p - 1)) & ((Bits{1} << (8 * sizeof(T) - p)) - 1));
+    auto fraction = static_cast<std::uint64_t>(bits & ((Bits{1} << (p - 1)) - 1));
+    int exponent = 1 - bias - (p - 1);  // of a subnormal's last bit
+    if (biased != 0) {
+        fraction |= std::uint64_t{1} << (p - 1);
+        exponent = biased - bias - (p - 1);
+    }
+    if (fraction == 0) return {0, 0};
+    const int zeros = __builtin_ctzll(fraction);
+    const auto m = static_cast<std::int64_t>(fraction >> zeros);
+    return {negative ? -m : m, exponent + zeros};
 }
 
-/// The lattice integer v * 2^-latticeExponent (exact: v is a multiple of 2^latticeExponent).
-template <class Num, class T>
-[[nodiscard]] inline Num toLattice(T v, int latticeExponent) noexcept {
-    if (v == 0) return Num::fromInt(0);
-    int e = 0;
-    const T f = std::frexp(v, &e);
-    constexpr int p = std::numeric_limits<T>::digits;
-    const auto m = static_cast<std::int64_t>(std::ldexp(f, p));  // exact: f has at most p bits
-    // m has at most p bits, so dropping its trailing zeros keeps it exact; what remains is odd
-    // and its exponent is at least the lattice's.
-    const std::uint64_t mag = m < 0 ? 0 - static_cast<std::uint64_t>(m) : static_cast<std::uint64_t>(m);
-    const int zeros = __builtin_ctzll(mag);
-    return Num::fromShifted(m / (std::int64_t{1} << zeros), e - p + zeros - latticeExponent);
+/// The exponent just above a dyadic's magnitude: |value| < 2^result.
+[[nodiscard]] inline int exponentAbove(Dyadic d) noexcept {
+    const std::uint64_t mag = d.mantissa < 0 ? 0 - static_cast<std::uint64_t>(d.mantissa)
+                                             : static_cast<std::uint64_t>(d.mantissa);
+    return d.exponent + 64 - __builtin_clzll(mag);
+}
+
+/// The lattice integer of a dyadic, d * 2^-latticeExponent (exact: latticeExponent is at most
+/// d.exponent).
+template <class Num>
+[[nodiscard]] inline Num toLattice(Dyadic d, int latticeExponent) noexcept {
+    if (d.mantissa == 0) return Num::fromInt(0);
+    return Num::fromShifted(d.mantissa, d.exponent - latticeExponent);
 }
 
 /// Which way to round a magnitude that is not representable.
@@ -128,6 +149,12 @@ template <class T, class Num>
     Num remainder = shift >= 0 ? num.shiftedLeft(shift) : num;
     const Num divisor = shift >= 0 ? den : den.shiftedLeft(-shift);
     std::uint64_t quotient = 0;
+    if constexpr (std::is_same<Num, Int128>::value) {
+        // The scaled numerator is below 2^(span + 60) < 2^127: one native division.
+        quotient = static_cast<std::uint64_t>(remainder.v / divisor.v);
+        remainder = {remainder.v % divisor.v};
+        return roundMagnitude<T>(quotient, -shift, !remainder.isZero(), MagnitudeRounding::NearestEven);
+    }
     // Restoring division: the quotient has at most p + 4 bits.
     for (int b = p + 4; b >= 0; --b) {
         const Num step = divisor.shiftedLeft(b);
@@ -149,22 +176,18 @@ struct LatticeShape {
     int spanBits;  ///< every lattice value of the frame has magnitude below 2^spanBits
 };
 
-/// The lattice for a set of finite values (zeros are skipped) whose derived coordinates
-/// (sums of a few of them, tile edges inside the map) are bounded by `magnitudeBound`.
-template <class T>
-[[nodiscard]] inline LatticeShape shapeLattice(const T* values, int count, long double magnitudeBound) noexcept {
+/// The lattice of a set of dyadics: the lowest exponent among the nonzero ones, and a span that
+/// holds every coordinate formed from them, given that none exceeds 2^topExponent.
+[[nodiscard]] inline LatticeShape shapeLattice(const Dyadic* values, int count, int topExponent) noexcept {
     int lowest = std::numeric_limits<int>::max();
     for (int k = 0; k < count; ++k)
-        if (values[k] != 0) {
-            const int e = lowestBitExponent(values[k]);
-            if (e < lowest) lowest = e;
-        }
+        if (values[k].mantissa != 0 && values[k].exponent < lowest) lowest = values[k].exponent;
     if (lowest == std::numeric_limits<int>::max()) lowest = 0;
-    // ilogb of the bound, plus 2 for the rounding of the bound itself (long double, relative
-    // error far below 1/2) and for the sign.
-    const int top = magnitudeBound > 0 ? std::ilogb(magnitudeBound) + 2 : 1;
-    return {lowest, top - lowest};
+    return {lowest, topExponent - lowest + 1};  // + 1 for the sign
 }
+
+/// Bit length of a non-negative count (0 for 0).
+[[nodiscard]] inline int bitLength(std::uint64_t n) noexcept { return n == 0 ? 0 : 64 - __builtin_clzll(n); }
 
 }  // namespace tilesweep::detail
 
@@ -179,12 +202,12 @@ namespace tilesweep::detail {
     return products > rounding ? products : rounding;
 }
 
-/// Calls f(WideInt<N>{}) with the narrowest of the widths this library instantiates that
-/// holds `bits` signed bits: 128 (typical float and integer scenes), 256 (typical double
+/// Calls f(Num{}) with the narrowest of the integer types this library instantiates that holds
+/// `bits` signed bits: native __int128 (typical float and integer scenes), 256 (typical double
 /// scenes), 640 (any float scene) or 4480 (any double scene, subnormals to the largest finite).
 template <class F>
 decltype(auto) withWidth(int bits, F&& f) {
-    if (bits < 128) return f(WideInt<2>::fromInt(0));
+    if (bits < 127) return f(Int128::fromInt(0));
     if (bits < 256) return f(WideInt<4>::fromInt(0));
     if (bits < 640) return f(WideInt<10>::fromInt(0));
     return f(WideInt<70>::fromInt(0));

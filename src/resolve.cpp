@@ -54,13 +54,7 @@ struct GridAxis {
     [[nodiscard]] std::int64_t cellOf(const Num& coordNum, const Num& coordDen) const noexcept {
         const Num a = coordNum - origin * coordDen;
         const Num b = tile * coordDen;
-        int ea = 0;
-        int eb = 0;
-        const double ma = a.approximate(ea);
-        const double mb = b.approximate(eb);
-        const int shift = ea - eb;
-        double estimate = 0;
-        if (ma != 0) estimate = shift > 70 ? (ma > 0 ? 1e30 : -1e30) : std::ldexp(ma / mb, shift);
+        const double estimate = detail::estimateQuotient(a, b);
         std::int64_t q = -1;
         if (estimate >= static_cast<double>(cells)) {
             q = cells;
@@ -114,15 +108,13 @@ struct StepHits {
 template <class T, class Num>
 class FrameSolver {
 public:
-    FrameSolver(const SweepInput<T>& input, int latticeExponent) noexcept
+    /// `d` holds the inputs' dyadic forms in the order of kInputs (solveOnLattice).
+    FrameSolver(const SweepInput<T>& input, const detail::Dyadic* d, int latticeExponent) noexcept
         : map_(input.map), exponent_(latticeExponent) {
-        const TileMapView<T>& m = input.map;
-        grid_[0] = {lattice(m.origin.x), lattice(m.tileSize.x), m.columns};
-        grid_[1] = {lattice(m.origin.y), lattice(m.tileSize.y), m.rows};
-        motion_[0] = detail::makeAxisMotion(lattice(input.box.pos.x), lattice(input.box.size.x),
-                                            lattice(input.displacement.x));
-        motion_[1] = detail::makeAxisMotion(lattice(input.box.pos.y), lattice(input.box.size.y),
-                                            lattice(input.displacement.y));
+        grid_[0] = {lattice(d[6]), lattice(d[8]), input.map.columns};
+        grid_[1] = {lattice(d[7]), lattice(d[9]), input.map.rows};
+        motion_[0] = detail::makeAxisMotion(lattice(d[0]), lattice(d[2]), lattice(d[4]));
+        motion_[1] = detail::makeAxisMotion(lattice(d[1]), lattice(d[3]), lattice(d[5]));
         start_[0] = input.box.pos.x;
         start_[1] = input.box.pos.y;
     }
@@ -171,7 +163,7 @@ public:
     }
 
 private:
-    Num lattice(T v) const noexcept { return detail::toLattice<Num>(v, exponent_); }
+    Num lattice(detail::Dyadic v) const noexcept { return detail::toLattice<Num>(v, exponent_); }
     static Fraction<Num> zeroTime() noexcept { return {Num::fromInt(0), Num::fromInt(1)}; }
 
     /// The exact final coordinate, rounded to the T between the start and it that is nearest
@@ -357,21 +349,25 @@ private:
 /// Scales the frame onto its lattice and solves it with integers wide enough for it.
 template <class T>
 SweepResult<T> solveOnLattice(const SweepInput<T>& in, const ResolveOutput<T>& out) noexcept {
-    const T values[] = {in.box.pos.x, in.box.pos.y, in.box.size.x, in.box.size.y,
-                        in.displacement.x, in.displacement.y, in.map.origin.x, in.map.origin.y,
-                        in.map.tileSize.x, in.map.tileSize.y};
-    using Wide = long double;
-    const auto mag = [](T v) { return static_cast<Wide>(std::fabs(v)); };
-    // Every coordinate the frame forms (box edges at start and end, tile edges of the map and
-    // one cell past it) is below this bound.
-    const Wide bound = std::max(
-        {mag(in.box.pos.x) + mag(in.box.size.x) + mag(in.displacement.x),
-         mag(in.box.pos.y) + mag(in.box.size.y) + mag(in.displacement.y),
-         mag(in.map.origin.x) + (static_cast<Wide>(in.map.columns) + 2) * mag(in.map.tileSize.x),
-         mag(in.map.origin.y) + (static_cast<Wide>(in.map.rows) + 2) * mag(in.map.tileSize.y)});
-    const detail::LatticeShape shape = detail::shapeLattice(values, 10, bound);
+    using detail::decompose;
+    using detail::exponentAbove;
+    const detail::Dyadic d[10] = {decompose(in.box.pos.x),       decompose(in.box.pos.y),
+                                  decompose(in.box.size.x),      decompose(in.box.size.y),
+                                  decompose(in.displacement.x),  decompose(in.displacement.y),
+                                  decompose(in.map.origin.x),    decompose(in.map.origin.y),
+                                  decompose(in.map.tileSize.x),  decompose(in.map.tileSize.y)};
+    // Every coordinate the frame forms is below 2^top: box edges at the start and the end (a sum
+    // of three inputs, so 2 bits above the largest) and tile edges from one cell before the map
+    // to one past it (origin + k*tile with |k| <= cells + 2).
+    int top = 0;
+    for (int k = 0; k < 6; ++k) top = std::max(top, exponentAbove(d[k]) + 2);
+    const int cellBits[2] = {detail::bitLength(static_cast<std::uint64_t>(in.map.columns) + 2),
+                             detail::bitLength(static_cast<std::uint64_t>(in.map.rows) + 2)};
+    for (int a = 0; a < 2; ++a)
+        top = std::max(top, std::max(exponentAbove(d[6 + a]), exponentAbove(d[8 + a]) + cellBits[a]) + 1);
+    const detail::LatticeShape shape = detail::shapeLattice(d, 10, top);
     return detail::withWidth(detail::bitsNeeded(shape), [&](auto tag) {
-        return FrameSolver<T, decltype(tag)>(in, shape.exponent).run(out);
+        return FrameSolver<T, decltype(tag)>(in, d, shape.exponent).run(out);
     });
 }
 

@@ -193,3 +193,70 @@ struct WideInt {
 };
 
 }  // namespace tilesweep::detail
+
+namespace tilesweep::detail {
+
+__extension__ typedef __int128 Int128Native;
+
+/// The narrowest tier as one native 128-bit integer: the same interface as WideInt, with the
+/// arithmetic done by the compiler's __int128 (a few instructions instead of limb loops).
+struct Int128 {
+    Int128Native v;
+
+    static Int128 fromInt(std::int64_t x) noexcept { return {x}; }
+    static Int128 fromShifted(std::int64_t m, int shift) noexcept {
+        return {static_cast<Int128Native>(m) * (static_cast<Int128Native>(1) << shift)};
+    }
+    [[nodiscard]] bool isNegative() const noexcept { return v < 0; }
+    [[nodiscard]] bool isZero() const noexcept { return v == 0; }
+    [[nodiscard]] int sign() const noexcept { return v < 0 ? -1 : (v > 0 ? 1 : 0); }
+    friend Int128 operator+(Int128 a, Int128 b) noexcept { return {a.v + b.v}; }
+    friend Int128 operator-(Int128 a, Int128 b) noexcept { return {a.v - b.v}; }
+    friend Int128 operator-(Int128 a) noexcept { return {-a.v}; }
+    friend Int128 operator*(Int128 a, Int128 b) noexcept { return {a.v * b.v}; }
+    friend Int128 operator*(Int128 a, std::int64_t b) noexcept { return {a.v * b}; }
+    friend int compare(Int128 a, Int128 b) noexcept { return a.v < b.v ? -1 : (a.v > b.v ? 1 : 0); }
+    friend bool operator<(Int128 a, Int128 b) noexcept { return a.v < b.v; }
+    friend bool operator>(Int128 a, Int128 b) noexcept { return a.v > b.v; }
+    friend bool operator<=(Int128 a, Int128 b) noexcept { return a.v <= b.v; }
+    friend bool operator>=(Int128 a, Int128 b) noexcept { return a.v >= b.v; }
+    friend bool operator==(Int128 a, Int128 b) noexcept { return a.v == b.v; }
+    friend bool operator!=(Int128 a, Int128 b) noexcept { return a.v != b.v; }
+    [[nodiscard]] Int128 magnitude() const noexcept { return {v < 0 ? -v : v}; }
+    [[nodiscard]] int highestBit() const noexcept {
+        const auto u = static_cast<Uint128>(v);
+        const auto hi = static_cast<std::uint64_t>(u >> 64);
+        const auto lo = static_cast<std::uint64_t>(u);
+        if (hi != 0) return 127 - __builtin_clzll(hi);
+        return lo != 0 ? 63 - __builtin_clzll(lo) : -1;
+    }
+    [[nodiscard]] Int128 shiftedLeft(int bits) const noexcept { return {static_cast<Int128Native>(static_cast<Uint128>(v) << bits)}; }
+    [[nodiscard]] std::uint64_t bitsFrom(int from, bool& lowerBitsSet) const noexcept {
+        const auto u = static_cast<Uint128>(v);
+        lowerBitsSet = from > 0 && (u & ((static_cast<Uint128>(1) << from) - 1)) != 0;
+        return static_cast<std::uint64_t>(u >> from);
+    }
+    [[nodiscard]] double approximate(int& exponent) const noexcept {
+        return std::frexp(static_cast<double>(v), &exponent);
+    }
+};
+
+/// a / b for b > 0, approximately (relative error a few ulps of double; saturating at +-1e30).
+/// Only ever used as a first guess that exact comparisons then settle.
+template <int N>
+[[nodiscard]] inline double estimateQuotient(const WideInt<N>& a, const WideInt<N>& b) noexcept {
+    int ea = 0;
+    int eb = 0;
+    const double ma = a.approximate(ea);
+    const double mb = b.approximate(eb);
+    if (ma == 0) return 0;
+    const int shift = ea - eb;
+    if (shift > 70) return ma > 0 ? 1e30 : -1e30;
+    return std::ldexp(ma / mb, shift);
+}
+
+[[nodiscard]] inline double estimateQuotient(Int128 a, Int128 b) noexcept {
+    return static_cast<double>(a.v) / static_cast<double>(b.v);
+}
+
+}  // namespace tilesweep::detail
