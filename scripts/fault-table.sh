@@ -26,7 +26,14 @@ for fault in "${faults[@]}"; do
     size="-"
     first=$(ls "$corpus"/*.jsonl 2>/dev/null | head -n 1 || true)
     if [ -n "$first" ]; then
-        size=$(python3 -c 'import json,sys; s=json.loads(open(sys.argv[1]).readline()); r=s["map"]["rows"]; print(f"{len(r[0]) if r else 0}x{len(r)}, {sum(x.count(\"#\") for x in r)}, {len(s[\"moves\"])} ({s[\"property\"]})")' "$first")
+        size=$(python3 - "$first" <<'PY'
+import json, sys
+scene = json.loads(open(sys.argv[1]).readline())
+rows = scene["map"]["rows"]
+cells = f"{len(rows[0]) if rows else 0}x{len(rows)}"
+print(f"{cells}, {sum(r.count('#') for r in rows)} solid, {len(scene['moves'])} frame(s), from {scene['property']}")
+PY
+)
     fi
     echo "| $fault | ${caught:-not caught} | $size | $((SECONDS - start)) |"
 done
