@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
-// First timings of the resolver: one frame of a 12x12 box through a 256x256 map with 30% solid
-// cells, at several speeds, in float and double; and a single box-against-tile sweep.
+// Benchmarks of the resolver and its peers, fixed seeds, items/s. Ratios are read side by side
+// from one run (scripts/bench.sh computes them from the medians of repeated runs).
+//
+// Speeds are in tiles per frame, the benchmark argument divided by 2: 1 -> 0.5, 4 -> 2,
+// 16 -> 8, 64 -> 32.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -8,6 +11,18 @@
 #include <random>
 #include <vector>
 
+#if TILESWEEP_BENCH_HAVE_BOX2D
+#include <box2d/b2_collision.h>
+#include <box2d/b2_distance.h>
+#include <box2d/b2_polygon_shape.h>
+#include <box2d/b2_time_of_impact.h>
+#endif
+
+#include "oracle/exact/exact_geometry.h"
+#include "oracle/exact/exact_resolve.h"
+#include "oracle/seed/seed_resolve.h"
+#include "oracle/substep/substep_float.h"
+#include "tilesweep/scene.h"
 #include "tilesweep/sweep.h"
 
 namespace {
@@ -15,33 +30,46 @@ namespace {
 using tilesweep::Box;
 using tilesweep::Vec2;
 
-constexpr int kMapSize = 256;
 constexpr int kTile = 16;
-constexpr int kScenes = 1024;
+constexpr int kSamples = 512;
 
+enum class Level { Random30, FloorAndWalls };
+
+/// A map, and kSamples boxes that start in empty cells near its middle, each with a move of
+/// the given speed in a random direction. The same seed gives the same scenes every run.
 template <class T>
 struct Scenario {
-    std::vector<std::uint8_t> cells;
-    tilesweep::TileMapView<T> map;
+    tilesweep::TileMap<T> map;
     std::vector<Box<T>> boxes;
     std::vector<Vec2<T>> moves;
 };
 
-/// A random 30% map and kScenes boxes, each starting in an empty cell, moving `tilesPerFrame`
-/// tiles in a random direction. Fixed seed: the same scenes every run.
 template <class T>
-Scenario<T> makeScenario(double tilesPerFrame) {
+Scenario<T> makeScenario(int size, Level level, double tilesPerFrame, std::uint32_t seed = 12345) {
     Scenario<T> s;
-    std::mt19937 rng(12345);
+    std::mt19937 rng(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    s.cells.resize(kMapSize * kMapSize);
-    for (auto& c : s.cells) c = unit(rng) < 0.3 ? 1 : 0;
-    s.map = {{0, 0}, {T(kTile), T(kTile)}, kMapSize, kMapSize, s.cells.data()};
-    std::uniform_int_distribution<int> cell(8, kMapSize - 8);
-    while (static_cast<int>(s.boxes.size()) < kScenes) {
+    s.map.origin = {0, 0};
+    s.map.tileSize = {T(kTile), T(kTile)};
+    s.map.columns = size;
+    s.map.rows = size;
+    s.map.solid.assign(static_cast<std::size_t>(size) * static_cast<std::size_t>(size), 0);
+    for (int j = 0; j < size; ++j)
+        for (int i = 0; i < size; ++i) {
+            bool solid = false;
+            if (level == Level::Random30) solid = unit(rng) < 0.3;
+            // Floors every 12 rows with gaps, walls every 20 columns with doors.
+            if (level == Level::FloorAndWalls) solid = (j % 12 == 11 && i % 9 != 4) || (i % 20 == 19 && j % 12 < 8);
+            s.map.solid[static_cast<std::size_t>(j) * static_cast<std::size_t>(size) + static_cast<std::size_t>(i)] = solid ? 1 : 0;
+        }
+    // Boxes near the middle (a 64x64-cell window), so the motion is the same on every map size.
+    const int lo = size / 2 - std::min(size / 2, 32) + 2;
+    const int hi = size / 2 + std::min(size / 2, 32) - 2;
+    std::uniform_int_distribution<int> cell(lo, hi - 1);
+    while (static_cast<int>(s.boxes.size()) < kSamples) {
         const int i = cell(rng);
         const int j = cell(rng);
-        if (s.cells[static_cast<std::size_t>(j * kMapSize + i)] != 0) continue;
+        if (s.map.solid[static_cast<std::size_t>(j) * static_cast<std::size_t>(size) + static_cast<std::size_t>(i)] != 0) continue;
         const double angle = unit(rng) * 6.283185307179586;
         const double speed = tilesPerFrame * kTile;
         s.boxes.push_back({{static_cast<T>(i * kTile + 2 + unit(rng)), static_cast<T>(j * kTile + 2 + unit(rng))},
@@ -51,38 +79,178 @@ Scenario<T> makeScenario(double tilesPerFrame) {
     return s;
 }
 
-// The common game case: one frame of motion at a given speed, tiles per frame as the argument
-// divided by 2 (1 -> 0.5, 4 -> 2, 16 -> 8, 64 -> 32).
 template <class T>
-void BM_ResolveMove_RandomMap(benchmark::State& state) {
-    const Scenario<T> s = makeScenario<T>(static_cast<double>(state.range(0)) / 2.0);
+const Scenario<T>& scenario(int size, Level level, int speedArg) {
+    // One scenario per parameter set, built once (not timed).
+    static std::vector<std::pair<std::tuple<int, int, int>, Scenario<T>>> cache;
+    const auto key = std::make_tuple(size, static_cast<int>(level), speedArg);
+    for (const auto& entry : cache)
+        if (entry.first == key) return entry.second;
+    cache.emplace_back(key, makeScenario<T>(size, level, speedArg / 2.0));
+    return cache.back().second;
+}
+
+template <class T>
+void resolveLoop(benchmark::State& state, const Scenario<T>& s) {
+    const tilesweep::TileMapView<T> view = s.map.view();
     tilesweep::Contact<T> contacts[64];
     tilesweep::Cell overlaps[64];
     std::size_t k = 0;
     for (auto _ : state) {
-        const auto r = tilesweep::resolveMove<T>({s.map, s.boxes[k], s.moves[k]}, {contacts, 64, overlaps, 64});
-        benchmark::DoNotOptimize(r);
+        benchmark::DoNotOptimize(tilesweep::resolveMove<T>({view, s.boxes[k], s.moves[k]}, {contacts, 64, overlaps, 64}));
         k = (k + 1) % s.boxes.size();
     }
     state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK_TEMPLATE(BM_ResolveMove_RandomMap, float)->Arg(1)->Arg(4)->Arg(16)->Arg(64);
-BENCHMARK_TEMPLATE(BM_ResolveMove_RandomMap, double)->Arg(1)->Arg(4)->Arg(16)->Arg(64);
 
-// One box against one tile: the narrow phase on its own.
+// The production resolver, the common game case: one frame on a 256x256 map, 30% solid.
 template <class T>
-void BM_SweepBox_SingleTile(benchmark::State& state) {
-    const Scenario<T> s = makeScenario<T>(2.0);
+void BM_ResolveMove_Random30(benchmark::State& state) {
+    resolveLoop<T>(state, scenario<T>(256, Level::Random30, static_cast<int>(state.range(0))));
+}
+BENCHMARK_TEMPLATE(BM_ResolveMove_Random30, float)->Arg(1)->Arg(4)->Arg(16)->Arg(64);
+BENCHMARK_TEMPLATE(BM_ResolveMove_Random30, double)->Arg(1)->Arg(4)->Arg(16)->Arg(64);
+
+// A platformer-like level: long floors and walls, long free flights.
+template <class T>
+void BM_ResolveMove_FloorAndWalls(benchmark::State& state) {
+    resolveLoop<T>(state, scenario<T>(256, Level::FloorAndWalls, static_cast<int>(state.range(0))));
+}
+BENCHMARK_TEMPLATE(BM_ResolveMove_FloorAndWalls, float)->Arg(1)->Arg(4)->Arg(16)->Arg(64);
+BENCHMARK_TEMPLATE(BM_ResolveMove_FloorAndWalls, double)->Arg(1)->Arg(4)->Arg(16)->Arg(64);
+
+// The map's size must cost nothing: the same motion (8 tiles/frame) on 64^2, 1024^2, 4096^2.
+void BM_ResolveMove_MapSize(benchmark::State& state) {
+    resolveLoop<float>(state, scenario<float>(static_cast<int>(state.range(0)), Level::Random30, 16));
+}
+BENCHMARK(BM_ResolveMove_MapSize)->Arg(64)->Arg(1024)->Arg(4096);
+
+// What the broadphase buys: every solid tile of the map swept one by one (the narrow phase only,
+// no frame loop), against the resolver's full frame above. 256^2 map, 8 tiles/frame.
+void BM_BruteForce_EveryTile(benchmark::State& state) {
+    const Scenario<float>& s = scenario<float>(static_cast<int>(state.range(0)), Level::Random30, 16);
+    std::vector<std::pair<Vec2<float>, Vec2<float>>> tiles;
+    for (int j = 0; j < s.map.rows; ++j)
+        for (int i = 0; i < s.map.columns; ++i)
+            if (s.map.solid[static_cast<std::size_t>(j * s.map.columns + i)] != 0)
+                tiles.push_back({{float(i * kTile), float(j * kTile)}, {float((i + 1) * kTile), float((j + 1) * kTile)}});
     std::size_t k = 0;
     for (auto _ : state) {
-        const Box<T>& b = s.boxes[k];
-        const tilesweep::BoxSweepInput<T> in{b, s.moves[k], {b.pos.x + 20, b.pos.y - 4}, {b.pos.x + 36, b.pos.y + 12}};
-        benchmark::DoNotOptimize(tilesweep::sweepBox<T>(in));
+        int hits = 0;
+        for (const auto& [lo, hi] : tiles)
+            hits += tilesweep::sweepBox<float>({s.boxes[k], s.moves[k], lo, hi}).state == tilesweep::BoxSweepState::Blocks;
+        benchmark::DoNotOptimize(hits);
         k = (k + 1) % s.boxes.size();
     }
     state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK_TEMPLATE(BM_SweepBox_SingleTile, float);
-BENCHMARK_TEMPLATE(BM_SweepBox_SingleTile, double);
+BENCHMARK(BM_BruteForce_EveryTile)->Arg(64)->Arg(256);
+
+// The naive baselines the audit measures: the seed article's algorithm as written.
+template <class T>
+void BM_SeedResolve_Random30(benchmark::State& state) {
+    const Scenario<T>& s = scenario<T>(256, Level::Random30, static_cast<int>(state.range(0)));
+    std::size_t k = 0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(tilesweep::oracle::resolveFrameSeed<T>(s.map, s.boxes[k], s.moves[k]));
+        k = (k + 1) % s.boxes.size();
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK_TEMPLATE(BM_SeedResolve_Random30, float)->Arg(1)->Arg(4)->Arg(16)->Arg(64);
+BENCHMARK_TEMPLATE(BM_SeedResolve_Random30, double)->Arg(1)->Arg(4)->Arg(16)->Arg(64);
+
+// The game-style float substep loop at N substeps (second argument), on a small map window so
+// the copy of the scene it takes stays out of the measurement's way: 64^2 map.
+void BM_SubstepFloat_Random30(benchmark::State& state) {
+    const Scenario<float>& s = scenario<float>(64, Level::Random30, static_cast<int>(state.range(0)));
+    std::vector<tilesweep::Scene<float>> scenes;
+    for (std::size_t k = 0; k < 64; ++k) scenes.push_back({"", s.map, s.boxes[k], {s.moves[k]}});
+    std::size_t k = 0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(tilesweep::oracle::resolveSceneSubstepFloat<float>(scenes[k], state.range(1)));
+        k = (k + 1) % scenes.size();
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_SubstepFloat_Random30)->ArgsProduct({{1, 4, 16, 64}, {4, 16, 256}});
+
+// The exact rational reference (GMP), every solid tile of a 64x64 map: what the property
+// suite pays per frame it checks.
+void BM_ExactReference_Random30(benchmark::State& state) {
+    const Scenario<float>& s = scenario<float>(64, Level::Random30, static_cast<int>(state.range(0)));
+    const tilesweep::oracle::ExactTileMap map = tilesweep::oracle::toExact(s.map);
+    std::size_t k = 0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(tilesweep::oracle::resolveFrameExact(map, tilesweep::oracle::toExact(s.boxes[k]),
+                                                                      tilesweep::oracle::toExact(s.moves[k])));
+        k = (k + 1) % 64;
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ExactReference_Random30)->Arg(1)->Arg(16);
+
+// One box against one tile, the narrow phase alone, on pairs that hit about half the time.
+template <class T>
+std::vector<tilesweep::BoxSweepInput<T>> makePairs() {
+    std::mt19937 rng(777);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::vector<tilesweep::BoxSweepInput<T>> pairs;
+    for (int k = 0; k < kSamples; ++k)
+        pairs.push_back({{{static_cast<T>(unit(rng) * 40), static_cast<T>(unit(rng) * 40)}, {T(12), T(12)}},
+                         {static_cast<T>(unit(rng) * 80), static_cast<T>(unit(rng) * 80)},
+                         {T(0), T(0)},
+                         {T(16), T(16)}});
+    return pairs;
+}
+
+template <class T>
+void BM_SweepBox_Pairs(benchmark::State& state) {
+    const auto pairs = makePairs<T>();
+    std::size_t k = 0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(tilesweep::sweepBox<T>(pairs[k]));
+        k = (k + 1) % pairs.size();
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK_TEMPLATE(BM_SweepBox_Pairs, float);
+BENCHMARK_TEMPLATE(BM_SweepBox_Pairs, double);
+
+#if TILESWEEP_BENCH_HAVE_BOX2D
+// Box2D's general time of impact (conservative advancement) on the same pairs: the peer a user
+// might pick instead. It stops short of contact by design (its target separation).
+void BM_Box2D_TimeOfImpact_Pairs(benchmark::State& state) {
+    const auto pairs = makePairs<float>();
+    b2PolygonShape moving;
+    moving.SetAsBox(6.0f, 6.0f);
+    b2PolygonShape tile;
+    tile.SetAsBox(8.0f, 8.0f);
+    std::size_t k = 0;
+    for (auto _ : state) {
+        const auto& p = pairs[k];
+        b2TOIInput input;
+        input.proxyA.Set(&moving, 0);
+        input.proxyB.Set(&tile, 0);
+        const b2Vec2 c0(p.box.pos.x + 6.0f, p.box.pos.y + 6.0f);
+        input.sweepA.localCenter.SetZero();
+        input.sweepA.c0 = c0;
+        input.sweepA.c = c0 + b2Vec2(p.displacement.x, p.displacement.y);
+        input.sweepA.a0 = input.sweepA.a = 0.0f;
+        input.sweepA.alpha0 = 0.0f;
+        input.sweepB.localCenter.SetZero();
+        input.sweepB.c0 = input.sweepB.c = b2Vec2(8.0f, 8.0f);
+        input.sweepB.a0 = input.sweepB.a = 0.0f;
+        input.sweepB.alpha0 = 0.0f;
+        input.tMax = 1.0f;
+        b2TOIOutput output;
+        b2TimeOfImpact(&output, &input);
+        benchmark::DoNotOptimize(output);
+        k = (k + 1) % pairs.size();
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_Box2D_TimeOfImpact_Pairs);
+#endif
 
 }  // namespace
