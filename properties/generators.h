@@ -179,7 +179,9 @@ rc::Gen<GeneratedScene<T>> genLayoutScene(Family family) {
             case Family::SingleTile: g.set(*rc::gen::inRange(0, g.columns), *rc::gen::inRange(0, g.rows), true); break;
             default: {
                 const int percent = *rc::gen::element(0, 10, 30, 50, 80);
-                for (auto& c : g.solid) c = *rc::gen::inRange(0, 100) < percent ? 1 : 0;
+                // A roll shrinks toward 0, which here means empty: a shrunk counterexample keeps
+                // only the solid cells it needs.
+                for (auto& c : g.solid) c = *rc::gen::inRange(0, 100) >= 100 - percent ? 1 : 0;
                 break;
             }
         }
