@@ -21,6 +21,10 @@
 #if TILESWEEP_HAVE_CHECK
 #include "check_command.h"
 #endif
+#if TILESWEEP_HAVE_AUDIT
+#include "audit_command.h"
+#endif
+#include "resolvers.h"
 #include "tilesweep/scene.h"
 
 #ifndef TILESWEEP_VERSION
@@ -33,32 +37,8 @@ constexpr int kExitOk = 0;
 constexpr int kExitSceneError = 1;  // at least one line was answered with {"error": ...}
 constexpr int kExitUsage = 2;       // bad arguments, or FILE could not be read, or stdout failed
 
-/// Runs every frame of one scene; each implementation (the core resolver, later the exact and
-/// substep oracles) is one of these.
-template <class T>
-using Resolver = std::function<std::vector<tilesweep::FrameResult<T>>(const tilesweep::Scene<T>&)>;
-
-/// The resolvers `--resolver` chooses among, by name; the first is the default. Adding an
-/// implementation is one line here.
-template <class T>
-std::vector<std::pair<std::string, Resolver<T>>> resolverTable() {
-    return {
-        {"core", &tilesweep::runScene<T>},  // the production resolver, tilesweep::resolveMove
-    };
-}
-
-template <class T>
-Resolver<T> findResolver(const std::string& name) {
-    for (auto& [entryName, resolver] : resolverTable<T>())
-        if (entryName == name) return resolver;
-    return {};  // unreachable after CLI11 has checked the name against resolverNames()
-}
-
-std::vector<std::string> resolverNames() {
-    std::vector<std::string> names;
-    for (const auto& entry : resolverTable<float>()) names.push_back(entry.first);
-    return names;
-}
+using tilesweep::cli::findResolver;
+using tilesweep::cli::Resolver;
 
 bool isBlank(std::string_view line) {
     return line.find_first_not_of(" \t\r\n\f\v") == std::string_view::npos;
@@ -68,7 +48,7 @@ bool isBlank(std::string_view line) {
 
 struct ResolveOptions {
     std::string scalar = "float";
-    std::string resolver = resolverNames().front();
+    std::string resolver = "core";
     std::string file = "-";
 };
 
@@ -110,8 +90,10 @@ CLI::App* addResolveCommand(CLI::App& app, ResolveOptions& options) {
     command->add_option("--scalar", options.scalar, "The scalar type every number is rounded to")
         ->check(CLI::IsMember(std::vector<std::string>{"float", "double"}))
         ->capture_default_str();
-    command->add_option("--resolver", options.resolver, "The implementation that resolves the frames")
-        ->check(CLI::IsMember(resolverNames()))
+    command->add_option("--resolver", options.resolver,
+                        "The implementation: core (production, in --scalar), float, double (production in that\n"
+                        "type), exact (rational reference), substep:N, substep-float:N, seed (the article's)")
+        ->check(CLI::Validator(tilesweep::cli::checkResolverName, "NAME", "resolver"))
         ->capture_default_str();
     command->add_option("FILE", options.file, "The scene file; '-' or none reads standard input")
         ->type_name("PATH")
@@ -150,7 +132,10 @@ int runResolveCommand(const ResolveOptions& options) {
     }
     std::istream& in = options.file == "-" ? std::cin : file;
 
-    const int status = options.scalar == "double"
+    // --resolver float / double name the production resolver in that scalar, whatever --scalar says.
+    const std::string forced = tilesweep::cli::scalarForcedBy(options.resolver);
+    const std::string scalar = forced.empty() ? options.scalar : forced;
+    const int status = scalar == "double"
                            ? resolveLines<double>(in, std::cout, findResolver<double>(options.resolver))
                            : resolveLines<float>(in, std::cout, findResolver<float>(options.resolver));
     if (in.bad()) {
@@ -302,6 +287,11 @@ int main(int argc, char** argv) {
     tilesweep::cli::CheckOptions checkOptions;
     CLI::App* checkCommand = tilesweep::cli::addCheckCommand(app, checkOptions);
 #endif
+#if TILESWEEP_HAVE_AUDIT
+    tilesweep::cli::AuditOptions auditOptions;
+    CLI::App* auditCommand = tilesweep::cli::addAuditCommand(app, auditOptions);
+    for (int k = 0; k < argc; ++k) auditOptions.commandLine += (k == 0 ? "tilesweep" : std::string(" ") + argv[k]);
+#endif
 
     try {
         app.parse(argc, argv);
@@ -315,6 +305,9 @@ int main(int argc, char** argv) {
         if (renderCommand->parsed()) return runRenderCommand(renderOptions);
 #if TILESWEEP_HAVE_CHECK
         if (checkCommand->parsed()) return tilesweep::cli::runCheckCommand(checkOptions);
+#endif
+#if TILESWEEP_HAVE_AUDIT
+        if (auditCommand->parsed()) return tilesweep::cli::runAuditCommand(auditOptions);
 #endif
     } catch (const std::exception& error) {
         std::cerr << "tilesweep: " << error.what() << '\n';
