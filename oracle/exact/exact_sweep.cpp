@@ -17,6 +17,30 @@ bool operator==(const ExtendedTime& a, const ExtendedTime& b) {
     return a.kind == b.kind && (a.kind != ExtendedTime::Kind::Finite || a.value == b.value);
 }
 
+bool operator<(const ExtendedTime& a, const Rational& t) {
+    return a.kind == ExtendedTime::Kind::NegativeInfinity || (a.kind == ExtendedTime::Kind::Finite && a.value < t);
+}
+
+bool operator<(const Rational& t, const ExtendedTime& a) {
+    return a.kind == ExtendedTime::Kind::PositiveInfinity || (a.kind == ExtendedTime::Kind::Finite && t < a.value);
+}
+
+namespace {
+
+// Shared constants: a Rational costs an allocation to make, and these are compared with often.
+// Read-only after their (thread-safe) initialisation.
+const Rational& zero() {
+    static const Rational value(0);
+    return value;
+}
+
+const Rational& one() {
+    static const Rational value(1);
+    return value;
+}
+
+}  // namespace
+
 TimeInterval TimeInterval::open(ExtendedTime low, ExtendedTime high) {
     if (!(low < high)) {
         return none();
@@ -24,21 +48,12 @@ TimeInterval TimeInterval::open(ExtendedTime low, ExtendedTime high) {
     return {false, std::move(low), std::move(high)};
 }
 
-bool TimeInterval::contains(const Rational& t) const {
-    const ExtendedTime time = ExtendedTime::finite(t);
-    return !empty && low < time && time < high;
-}
+bool TimeInterval::contains(const Rational& t) const { return !empty && low < t && t < high; }
 
 bool TimeInterval::meetsOpenUnitInterval() const {
-    // (low, high) and (0, 1) share a time exactly when max(low, 0) < min(high, 1).
-    if (empty) {
-        return false;
-    }
-    const ExtendedTime zero = ExtendedTime::finite(Rational(0));
-    const ExtendedTime one = ExtendedTime::finite(Rational(1));
-    const ExtendedTime& start = zero < low ? low : zero;
-    const ExtendedTime& end = high < one ? high : one;
-    return start < end;
+    // (low, high) and (0, 1) share a time exactly when max(low, 0) < min(high, 1); as
+    // low < high already, that is low < 1 and 0 < high.
+    return !empty && low < one() && zero() < high;
 }
 
 TimeInterval intersect(const TimeInterval& a, const TimeInterval& b) {
@@ -75,7 +90,7 @@ ExactSweepOutput sweepTileExact(const ExactSweepInput& input) {
                                   input.tile.max.y);
     out.overlap = intersect(out.xTimes, out.yTimes);
 
-    if (out.overlap.contains(Rational(0))) {
+    if (out.overlap.contains(zero())) {
         out.state = ExactSweepState::StartsOverlapping;
         return out;
     }

@@ -38,6 +38,10 @@ struct ExtendedTime {
 [[nodiscard]] bool operator<(const ExtendedTime& a, const ExtendedTime& b);
 /// a == b on the extended line (two infinities of the same sign are equal).
 [[nodiscard]] bool operator==(const ExtendedTime& a, const ExtendedTime& b);
+/// a < t for a finite time t.
+[[nodiscard]] bool operator<(const ExtendedTime& a, const Rational& t);
+/// t < a for a finite time t.
+[[nodiscard]] bool operator<(const Rational& t, const ExtendedTime& a);
 
 /// A set of times: empty, or the open interval (low, high) with low < high.
 struct TimeInterval {
