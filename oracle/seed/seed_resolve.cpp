@@ -39,7 +39,7 @@ std::int8_t againstSign(T v) {
 }  // namespace
 
 template <class T>
-FrameResult<T> resolveFrameSeed(const TileMap<T>& map, const Box<T>& box, Vec2<T> displacement) {
+FrameResult<T> resolveFrameSeed(const TileMap<T>& map, const Box<T>& box, Vec2<T> displacement, T epsilon) {
     FrameResult<T> result;
     const Vec2<T> size = box.size;
     const Rect<T> previous = rectOf(box.pos, size);
@@ -70,8 +70,8 @@ FrameResult<T> resolveFrameSeed(const TileMap<T>& map, const Box<T>& box, Vec2<T
             const T timeY = distanceY / velocity.y;
             const T time = std::max(timeX, timeY);
             const T disjoint = std::min(disjointX, disjointY);
-            bool collided = !(time > disjoint);
-            if ((timeX < T(0) && timeY < T(0)) || timeX > T(1) || timeY > T(1)) {
+            bool collided = !(time > disjoint + epsilon);
+            if ((timeX < -epsilon && timeY < -epsilon) || timeX > T(1) + epsilon || timeY > T(1) + epsilon) {
                 collided = false;
             }
             if (!collided) {
@@ -88,19 +88,20 @@ FrameResult<T> resolveFrameSeed(const TileMap<T>& map, const Box<T>& box, Vec2<T
 }
 
 template <class T>
-std::vector<FrameResult<T>> resolveSceneSeed(const Scene<T>& scene) {
+std::vector<FrameResult<T>> resolveSceneSeed(const Scene<T>& scene, T epsilon) {
     std::vector<FrameResult<T>> frames;
     Box<T> box = scene.box;
     for (const Vec2<T>& move : scene.moves) {
-        frames.push_back(resolveFrameSeed(scene.map, box, move));
+        frames.push_back(resolveFrameSeed(scene.map, box, move, epsilon));
         box.pos = frames.back().position;
     }
     return frames;
 }
 
-template FrameResult<float> resolveFrameSeed<float>(const TileMap<float>&, const Box<float>&, Vec2<float>);
-template FrameResult<double> resolveFrameSeed<double>(const TileMap<double>&, const Box<double>&, Vec2<double>);
-template std::vector<FrameResult<float>> resolveSceneSeed<float>(const Scene<float>&);
-template std::vector<FrameResult<double>> resolveSceneSeed<double>(const Scene<double>&);
+template FrameResult<float> resolveFrameSeed<float>(const TileMap<float>&, const Box<float>&, Vec2<float>, float);
+template FrameResult<double> resolveFrameSeed<double>(const TileMap<double>&, const Box<double>&, Vec2<double>,
+                                                      double);
+template std::vector<FrameResult<float>> resolveSceneSeed<float>(const Scene<float>&, float);
+template std::vector<FrameResult<double>> resolveSceneSeed<double>(const Scene<double>&, double);
 
 }  // namespace tilesweep::oracle

@@ -43,21 +43,30 @@
 // is shorter than the frame's displacement) and a normal against the velocity on the axis that
 // max() picked (timeX unless timeX < timeY), which is (0, 0) when that velocity component is 0;
 // no start overlaps (the article has no such notion, so the list is always empty).
+//
+// `epsilon` (default 0: the article exactly) is a tolerance, in fractions of the move, added to
+// the time comparisons the way a game would patch them: collided = !(time > disjoint + epsilon),
+// and a tile is rejected when (timeX < -epsilon && timeY < -epsilon) || timeX > 1 + epsilon ||
+// timeY > 1 + epsilon. A positive epsilon accepts near misses, a negative one rejects near hits.
+// The audit (audit/) searches it to show which of the flaws a tolerance can and cannot fix. With
+// epsilon = 0 every comparison gives what the article's does (x + 0 compares like x).
 
 namespace tilesweep::oracle {
 
 /// One frame of the seed algorithm: `box` moving by `displacement` through `map`, in T.
 template <class T>
-[[nodiscard]] FrameResult<T> resolveFrameSeed(const TileMap<T>& map, const Box<T>& box, Vec2<T> displacement);
+[[nodiscard]] FrameResult<T> resolveFrameSeed(const TileMap<T>& map, const Box<T>& box, Vec2<T> displacement,
+                                              T epsilon = T(0));
 
 /// Every frame of a scene through the seed algorithm, each frame starting where the last ended.
 template <class T>
-[[nodiscard]] std::vector<FrameResult<T>> resolveSceneSeed(const Scene<T>& scene);
+[[nodiscard]] std::vector<FrameResult<T>> resolveSceneSeed(const Scene<T>& scene, T epsilon = T(0));
 
-extern template FrameResult<float> resolveFrameSeed<float>(const TileMap<float>&, const Box<float>&, Vec2<float>);
+extern template FrameResult<float> resolveFrameSeed<float>(const TileMap<float>&, const Box<float>&, Vec2<float>,
+                                                           float);
 extern template FrameResult<double> resolveFrameSeed<double>(const TileMap<double>&, const Box<double>&,
-                                                             Vec2<double>);
-extern template std::vector<FrameResult<float>> resolveSceneSeed<float>(const Scene<float>&);
-extern template std::vector<FrameResult<double>> resolveSceneSeed<double>(const Scene<double>&);
+                                                             Vec2<double>, double);
+extern template std::vector<FrameResult<float>> resolveSceneSeed<float>(const Scene<float>&, float);
+extern template std::vector<FrameResult<double>> resolveSceneSeed<double>(const Scene<double>&, double);
 
 }  // namespace tilesweep::oracle

@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: MIT
+// The audit on a tiny budget: the production rows read zero, the naive rows show their known
+// flaws, and every generated scene is replayable (it survives formatScene/parseScene bit for bit).
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+
+#include "audit/audit.h"
+
+namespace tilesweep::audit {
+namespace {
+
+constexpr std::uint64_t kTinyCases = 24;
+constexpr std::uint64_t kSeed = 7;
+
+const AuditResult& tinyAudit() {
+    static const AuditResult result = [] {
+        AuditConfig config;
+        config.cases = kTinyCases;
+        config.seed = kSeed;
+        config.jobs = 2;
+        return runAudit(config);
+    }();
+    return result;
+}
+
+std::uint64_t failures(const CellStats& c, Metric m) { return c.failures[static_cast<std::size_t>(m)]; }
+
+TEST(Audit, productionRowsReadZeroOnEveryFamily) {
+    const AuditResult& r = tinyAudit();
+    for (const std::string impl : {"core-float", "core-double"}) {
+        for (const Family& f : r.families) {
+            if (impl == "core-float" && !f.floatToo) continue;
+            const CellStats& c = r.cell(impl, f.name);
+            EXPECT_EQ(c.scenes, kTinyCases) << impl << " " << f.name;
+            for (std::size_t m = 0; m < kMetricCount; ++m)
+                EXPECT_EQ(c.failures[m], 0u) << impl << " " << f.name << " " << metricName(static_cast<Metric>(m));
+            ASSERT_FALSE(c.positionUlps.empty());
+            EXPECT_EQ(c.positionUlps.back(), 0u) << impl << " " << f.name;
+        }
+    }
+}
+
+TEST(Audit, seedVariantShowsItsKnownFlaws) {
+    const AuditResult& r = tinyAudit();
+    for (const std::string impl : {"seed-float", "seed-double"}) {
+        // Moving left or up it never hits anything; without a slide it never matches a two-step frame.
+        EXPECT_GT(failures(r.cell(impl, "uniform"), Metric::Decision), 0u) << impl;
+        EXPECT_GT(failures(r.cell(impl, "uniform"), Metric::Tunnel) + failures(r.cell(impl, "uniform"), Metric::Inside),
+                  0u)
+            << impl;
+        // A box falling straight onto a floor divides by zero and falls through.
+        EXPECT_GT(failures(r.cell(impl, "seam"), Metric::Decision), 0u) << impl;
+        EXPECT_EQ(smallestFixingEpsilon(r.cell(impl, "uniform")), "none") << impl;
+    }
+}
+
+TEST(Audit, coarseSubstepsTunnelAtHighSpeed) {
+    const AuditResult& r = tinyAudit();
+    const CellStats& c = r.cell("substep4-float", "high-speed");
+    EXPECT_GT(failures(c, Metric::Tunnel), 0u);
+    EXPECT_GT(failures(r.cell("substep4-float", "near-corner"), Metric::Decision), 0u);
+}
+
+TEST(Audit, familiesCoverTheirRules) {
+    const AuditResult& r = tinyAudit();
+    for (std::size_t c = 0; c < r.families.size(); ++c) {
+        const Family& f = r.families[c];
+        const Coverage& cv = r.coverage[c][1];
+        EXPECT_EQ(cv.scenes, kTinyCases) << f.name;
+        if (f.name == "tie") {
+            EXPECT_GT(cv.tie, 0u);
+        }
+        if (f.name == "near-corner") {
+            EXPECT_GT(cv.cornerMiss, 0u);
+            EXPECT_GT(cv.cornerPass, 0u);
+            EXPECT_GT(cv.cornerClip, 0u);
+        }
+        if (f.name == "seam") {
+            EXPECT_GT(cv.resting, 0u);
+        }
+    }
+}
+
+template <class T>
+void expectReplayable(const Family& f) {
+    for (std::uint64_t k = 0; k < 40; ++k) {
+        const Scene<T> s = generateScene<T>(f, kSeed, k);
+        const SceneParse<T> back = parseScene<T>(formatScene(s));
+        ASSERT_TRUE(back.scene.has_value()) << f.name << " case " << k << ": " << back.error;
+        EXPECT_EQ(formatScene(*back.scene), formatScene(s)) << f.name << " case " << k;
+    }
+}
+
+TEST(Audit, everyGeneratedSceneIsAValidReplayableSceneLine) {
+    for (const Family& f : auditFamilies()) {
+        if (f.floatToo) expectReplayable<float>(f);
+        expectReplayable<double>(f);
+    }
+}
+
+TEST(Audit, figuresDoNotDependOnTheNumberOfJobs) {
+    AuditConfig config;
+    config.cases = 6;
+    config.seed = kSeed;
+    config.jobs = 1;
+    const AuditResult one = runAudit(config);
+    config.jobs = 3;
+    const AuditResult three = runAudit(config);
+    for (std::size_t i = 0; i < one.implementations.size(); ++i)
+        for (std::size_t c = 0; c < one.families.size(); ++c) {
+            EXPECT_EQ(one.cells[i][c].failures, three.cells[i][c].failures);
+            EXPECT_EQ(one.cells[i][c].positionUlps, three.cells[i][c].positionUlps);
+        }
+}
+
+}  // namespace
+}  // namespace tilesweep::audit

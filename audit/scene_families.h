@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "tilesweep/scene.h"
+
+// The scenario families of the audit: plain std::mt19937_64 generators, one scene per
+// (seed, family, case index, scalar), so that any case is regenerated from those four numbers
+// (the worst scenes are written that way, after the run). Every scene has integer tile sizes
+// and an origin that is a whole number of tiles, so that its map is representable in the scalar
+// type at every magnitude the family uses.
+
+namespace tilesweep::audit {
+
+/// What a family builds; the "far" families are a mix of the first four, translated.
+enum class FamilyKind : std::uint8_t {
+    Uniform,     ///< random maps, boxes and moves, 1 to 3 frames
+    NearCorner,  ///< a corner grazed exactly, or clipped or missed by 1 to 4 ulps
+    Tie,         ///< both axes enter at the same time (an exact corner hit), sometimes 1 ulp off
+    Seam,        ///< landings across floor seams and long slides resting on a floor
+    Tiny,        ///< displacements below one ulp of the position, free or against a face
+    HighSpeed,   ///< 1 to 100 tiles per frame through thin walls
+    Far,         ///< uniform, near-corner, tie and seam scenes translated by `magnitude`
+};
+
+/// One column of the report.
+struct Family {
+    std::string name;       ///< "uniform", "near-corner", ..., "far-1e6"
+    FamilyKind kind = FamilyKind::Uniform;
+    double magnitude = 0;   ///< the translation of the scene (rounded down to whole tiles)
+    bool floatToo = true;   ///< false: only the double implementations run it (beyond 2^23)
+};
+
+/// Every family of the audit, in report order.
+[[nodiscard]] std::vector<Family> auditFamilies();
+
+/// The scene of one case, regenerated identically from the same four values.
+template <class T>
+[[nodiscard]] Scene<T> generateScene(const Family& family, std::uint64_t seed, std::uint64_t caseIndex);
+
+extern template Scene<float> generateScene<float>(const Family&, std::uint64_t, std::uint64_t);
+extern template Scene<double> generateScene<double>(const Family&, std::uint64_t, std::uint64_t);
+
+}  // namespace tilesweep::audit
