@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "oracle/exact/exact_resolve.h"
 
+#include <cmath>
+
 #include <cstdint>
 #include <vector>
 
@@ -140,6 +142,8 @@ std::vector<ExactFrame> resolveSceneExact(const Scene<T>& scene) {
     for (const Vec2<T>& move : scene.moves) {
         const ExactBox box{toExact(start), toExact(scene.box.size)};
         frames.push_back(resolveFrame(map, tiles, box, toExact(move)));
+        frames.back().startXIsNegativeZero = start.x == 0 && std::signbit(start.x);
+        frames.back().startYIsNegativeZero = start.y == 0 && std::signbit(start.y);
         start = roundFrame<T>(frames.back()).position;
     }
     return frames;
@@ -148,8 +152,10 @@ std::vector<ExactFrame> resolveSceneExact(const Scene<T>& scene) {
 template <class T>
 FrameResult<T> roundFrame(const ExactFrame& frame) {
     FrameResult<T> result;
-    const T startX = fromRational<T>(frame.start.x, Rounding::NearestEven);  // exact: a T value
-    const T startY = fromRational<T>(frame.start.y, Rounding::NearestEven);
+    // Exact: the start is a T value. A final coordinate equal to the start is the start itself,
+    // bits and all, so a -0 start stays -0.
+    const T startX = frame.startXIsNegativeZero ? -T(0) : fromRational<T>(frame.start.x, Rounding::NearestEven);
+    const T startY = frame.startYIsNegativeZero ? -T(0) : fromRational<T>(frame.start.y, Rounding::NearestEven);
     result.position = {roundToward<T>(frame.position.x, startX), roundToward<T>(frame.position.y, startY)};
     result.contacts.reserve(frame.contacts.size());
     for (const ExactContact& c : frame.contacts) {

@@ -41,6 +41,8 @@ struct ExactContact {
 /// One frame, exactly.
 struct ExactFrame {
     ExactVec2 start;                    ///< the position the frame started from (a T value, exactly)
+    bool startXIsNegativeZero = false;  ///< the start's x was -0 (a rational has no sign of zero)
+    bool startYIsNegativeZero = false;  ///< likewise y; a position equal to the start keeps its bits
     ExactVec2 position;                 ///< the exact final position
     std::vector<ExactContact> contacts; ///< step by step; within a step by row, then column
     std::vector<Cell> startOverlaps;    ///< solid cells overlapped at the start, by row then column
