@@ -10,30 +10,35 @@ cases=${1:-300}
 faults=(TOUCH_OVERLAPS NO_CORNER_MISS TIE_REVERSED DOUBLE_PREDICATE ROUND_NEAREST BROADPHASE_SHORT FMA)
 out=${TILESWEEP_FAULT_DIR:-$root/build-faults}
 mkdir -p "$out"
-echo "| fault | caught by | first counterexample (map cells, solid, frames) | seconds |"
-echo "|---|---|---|---|"
+echo "| fault | caught by (a shrunk counterexample) | smallest counterexample | other failures | seconds |"
+echo "|---|---|---|---|---|"
 for fault in "${faults[@]}"; do
     build="$out/$fault"
     cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DTILESWEEP_FAULT="$fault" \
-        -DTILESWEEP_BUILD_BENCH=OFF -DTILESWEEP_BUILD_CLI=OFF -DTILESWEEP_BUILD_TESTS=OFF >/dev/null 2>&1
+        -DTILESWEEP_BUILD_BENCH=OFF -DTILESWEEP_BUILD_CLI=OFF -DTILESWEEP_BUILD_TESTS=OFF \
+        -DTILESWEEP_BUILD_AUDIT=OFF >/dev/null 2>&1
     cmake --build "$build" --target tilesweep_properties >/dev/null
     corpus="$build/corpus"
     rm -rf "$corpus"
     start=$SECONDS
     TILESWEEP_PROPERTY_CASES=$cases TILESWEEP_CORPUS_DIR="$corpus" \
         "$build/properties/tilesweep_properties" --gtest_filter='Suite/*' >"$build/run.log" 2>&1 || true
-    caught=$(grep -o 'FAILED  \] Suite/Property.holds/[A-Za-z_]*' "$build/run.log" | sed 's/.*holds\///' | sort -u | tr '\n' ' ')
-    size="-"
-    first=$(ls "$corpus"/*.jsonl 2>/dev/null | head -n 1 || true)
-    if [ -n "$first" ]; then
-        size=$(python3 - "$first" <<'PY'
-import json, sys
-scene = json.loads(open(sys.argv[1]).readline())
-rows = scene["map"]["rows"]
-cells = f"{len(rows[0]) if rows else 0}x{len(rows)}"
-print(f"{cells}, {sum(r.count('#') for r in rows)} solid, {len(scene['moves'])} frame(s), from {scene['property']}")
+    failed=$(grep -o 'FAILED  \] Suite/Property.holds/[A-Za-z_]*' "$build/run.log" | sed 's/.*holds\///' | sort -u)
+    row=$(python3 - "$corpus" $failed <<'PY'
+import glob, json, os, sys
+corpus, failed = sys.argv[1], sys.argv[2:]
+found = {}
+for path in glob.glob(os.path.join(corpus, "*.jsonl")):
+    scene = json.loads(open(path).readline())
+    rows = scene["map"]["rows"]
+    cells = (len(rows[0]) if rows else 0) * len(rows)
+    solid = sum(r.count("#") for r in rows)
+    found[scene["property"]] = (solid, cells, len(scene["moves"]), f"{len(rows[0]) if rows else 0}x{len(rows)} map, {solid} solid, {len(scene['moves'])} frame(s)")
+caught = sorted(found)
+smallest = min(found.values())[3] if found else "-"
+other = sorted(set(failed) - set(found))
+print(f"{' '.join(caught) or 'not caught'} | {smallest} | {' '.join(other) or '-'}")
 PY
 )
-    fi
-    echo "| $fault | ${caught:-not caught} | $size | $((SECONDS - start)) |"
+    echo "| $fault | $row | $((SECONDS - start)) |"
 done
