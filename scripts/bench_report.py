@@ -1,0 +1,706 @@
+#!/usr/bin/env python3
+"""Turns one run of the benchmark suite into docs/bench/bench.md and docs/bench/pareto.svg.
+
+Reads the Google Benchmark JSON written by scripts/bench.sh (the median aggregates of repeated
+runs, CPU time in ns per item) and the audit's docs/audit/report.json (every implementation's
+error figures against the exact reference). Writes:
+
+  bench.md    the medians of every benchmark, the issue's target ratios computed from the same
+              run (met or missed, and by how much), the machine and the load it ran under;
+  pareto.svg  run time per frame (log scale) against the share of audit scenes whose decisions
+              differ from the exact reference, one labelled point per implementation.
+
+Standard library only.
+
+    python3 scripts/bench_report.py --results docs/bench/results-HOST.json \\
+        [--machine docs/bench/machine-HOST.json] [--audit docs/audit/report.json] \\
+        [--out-dir docs/bench]
+"""
+
+import argparse
+import html
+import json
+import math
+import os
+import statistics
+import sys
+
+# --------------------------------------------------------------------------------------------
+# Reading the benchmark results
+
+UNIT_TO_NS = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}
+
+
+class Results:
+    """Median CPU (and real) time per item, in ns, and the CPU-time spread, per benchmark."""
+
+    def __init__(self, path):
+        with open(path, encoding="utf-8") as f:
+            data = json.load(f)
+        self.context = data.get("context", {})
+        self.order = []          # run names, in the order the suite ran them
+        self.cpu = {}            # run name -> median cpu ns per item
+        self.real = {}           # run name -> median real ns per item
+        self.cv = {}             # run name -> coefficient of variation of cpu time (fraction)
+        self.repetitions = {}    # run name -> repetitions
+        iterations = {}          # run name -> [(cpu ns, real ns)] when no aggregates are there
+        for b in data.get("benchmarks", []):
+            name = b.get("run_name", b["name"])
+            if b.get("error_occurred"):
+                continue
+            if name not in self.order:
+                self.order.append(name)
+            scale = UNIT_TO_NS.get(b.get("time_unit", "ns"), 1.0)
+            if b.get("run_type") == "aggregate":
+                kind = b.get("aggregate_name")
+                if kind == "median":
+                    self.cpu[name] = b["cpu_time"] * scale
+                    self.real[name] = b["real_time"] * scale
+                    self.repetitions[name] = b.get("repetitions", 0)
+                elif kind == "cv":
+                    self.cv[name] = b["cpu_time"]
+            else:
+                iterations.setdefault(name, []).append((b["cpu_time"] * scale, b["real_time"] * scale))
+        # A run without --benchmark_repetitions has no aggregates: take the median of the runs.
+        for name, runs in iterations.items():
+            if name not in self.cpu:
+                self.cpu[name] = statistics.median(r[0] for r in runs)
+                self.real[name] = statistics.median(r[1] for r in runs)
+                self.repetitions[name] = len(runs)
+
+    def get(self, name):
+        return self.cpu.get(name)
+
+
+# --------------------------------------------------------------------------------------------
+# What each benchmark measures, and how its names map to the audit's implementations
+
+def speed_of(arg):
+    """Benchmark argument -> tiles per frame (the argument divided by 2)."""
+    v = int(arg) / 2
+    return f"{v:g}"
+
+
+def describe(name):
+    """A short description of one benchmark run name."""
+    base, _, args = name.partition("/")
+    args = args.split("/") if args else []
+    scalar = "double" if "<double>" in base else "float"
+    if base.startswith("BM_ResolveMove_Random30"):
+        return f"production resolve, {scalar}, 256² map 30% solid, {speed_of(args[0])} tiles/frame"
+    if base.startswith("BM_ResolveMove_FloorAndWalls"):
+        return f"production resolve, {scalar}, 256² floors and walls, {speed_of(args[0])} tiles/frame"
+    if base.startswith("BM_ResolveMove_MapSize"):
+        return f"production resolve, float, {args[0]}² map 30% solid, 8 tiles/frame"
+    if base.startswith("BM_BruteForce_EveryTile"):
+        return f"every solid tile of a {args[0]}² map swept (float), 8 tiles/frame"
+    if base.startswith("BM_SeedResolve_Random30"):
+        return f"seed algorithm, {scalar}, 256² map 30% solid, {speed_of(args[0])} tiles/frame"
+    if base.startswith("BM_SubstepFloat_Random30"):
+        return f"float substeps N={args[1]}, 64² map 30% solid, {speed_of(args[0])} tiles/frame"
+    if base.startswith("BM_ExactReference_Random30"):
+        return f"exact reference (GMP), 64² map 30% solid, {speed_of(args[0])} tiles/frame"
+    if base.startswith("BM_SweepBox_Pairs"):
+        return f"one box against one tile (sweepBox), {scalar}, per pair"
+    if base.startswith("BM_Box2D_TimeOfImpact_Pairs"):
+        return "Box2D b2TimeOfImpact, float, the same pairs, per pair"
+    return ""
+
+
+# Pareto points: audit implementation name -> (benchmark at 8 tiles/frame, benchmarks at every
+# speed for the range bar, label, style group). The exact reference is not an audit row: it is
+# what the audit measures against, so its error is 0 by definition.
+SPEED_ARGS = ("1", "4", "16", "64")
+IMPLEMENTATIONS = [
+    ("core-float", "BM_ResolveMove_Random30<float>/16",
+     [f"BM_ResolveMove_Random30<float>/{a}" for a in SPEED_ARGS], "production float", "production"),
+    ("core-double", "BM_ResolveMove_Random30<double>/16",
+     [f"BM_ResolveMove_Random30<double>/{a}" for a in SPEED_ARGS], "production double", "production"),
+    ("seed-float", "BM_SeedResolve_Random30<float>/16",
+     [f"BM_SeedResolve_Random30<float>/{a}" for a in SPEED_ARGS], "seed float", "seed"),
+    ("seed-double", "BM_SeedResolve_Random30<double>/16",
+     [f"BM_SeedResolve_Random30<double>/{a}" for a in SPEED_ARGS], "seed double", "seed"),
+    ("substep4-float", "BM_SubstepFloat_Random30/16/4",
+     [f"BM_SubstepFloat_Random30/{a}/4" for a in SPEED_ARGS], "substep float N=4", "substep"),
+    ("substep16-float", "BM_SubstepFloat_Random30/16/16",
+     [f"BM_SubstepFloat_Random30/{a}/16" for a in SPEED_ARGS], "substep float N=16", "substep"),
+    ("substep256-float", "BM_SubstepFloat_Random30/16/256",
+     [f"BM_SubstepFloat_Random30/{a}/256" for a in SPEED_ARGS], "substep float N=256", "substep"),
+    ("exact-reference", "BM_ExactReference_Random30/16",
+     ["BM_ExactReference_Random30/1", "BM_ExactReference_Random30/16"], "exact reference (GMP)", "exact"),
+]
+
+
+# --------------------------------------------------------------------------------------------
+# Reading the audit
+
+class Audit:
+    """Per implementation, failures summed over every family the audit ran for its scalar."""
+
+    def __init__(self, path):
+        with open(path, encoding="utf-8") as f:
+            data = json.load(f)
+        self.seed = data.get("seed")
+        self.cases = data.get("cases_per_family")
+        self.command = data.get("command", "")
+        self.production_clean = data.get("production_clean")
+        self.rows = {}
+        for impl in data.get("implementations", []):
+            fams = impl.get("families", {})
+            scenes = sum(f.get("scenes", 0) for f in fams.values())
+
+            def share(figure):
+                fails = sum(f.get("failures", {}).get(figure, 0) for f in fams.values())
+                return 100.0 * fails / scenes if scenes else float("nan")
+
+            self.rows[impl["name"]] = {
+                "scenes": scenes,
+                "families": len(fams),
+                "decision": share("decision"),
+                "tunnel": share("tunnel"),
+                "inside": share("inside"),
+                "inexact": share("inexact"),
+            }
+
+    def row(self, name):
+        if name == "exact-reference":
+            return {"scenes": 0, "families": 0, "decision": 0.0, "tunnel": 0.0, "inside": 0.0,
+                    "inexact": 0.0, "reference": True}
+        return self.rows.get(name)
+
+
+# --------------------------------------------------------------------------------------------
+# Formatting
+
+def fmt_ns(ns):
+    if ns is None:
+        return "not run"
+    if ns >= 1e6:
+        return f"{ns / 1e6:.3g} ms"
+    if ns >= 1e3:
+        return f"{ns / 1e3:.3g} µs"
+    return f"{ns:.3g} ns"
+
+
+def fmt_num(ns):
+    """ns with thousands separators, for the table (three significant digits at most)."""
+    if ns is None:
+        return "not run"
+    if ns >= 100:
+        return f"{round(ns):,}"
+    return f"{ns:.3g}"
+
+
+def pct(v):
+    """A share in percent; exactly 0 is written 0."""
+    return "0" if v == 0 else f"{v:.1f}%"
+
+
+def fmt_ratio(r):
+    if r is None:
+        return "—"
+    return f"{r:,.0f}x" if r >= 100 else f"{r:.2f}x"
+
+
+def ratio(results, num, den):
+    a, b = results.get(num), results.get(den)
+    if a is None or b is None or b == 0:
+        return None
+    return a / b
+
+
+def verdict_at_most(r, bound):
+    """Status text for a target 'ratio <= bound'."""
+    if r is None:
+        return "not run", "not measured: a benchmark it needs did not run"
+    if r <= bound:
+        return "met", f"met, {100 * (1 - r / bound):.0f}% under the {bound:g}x bound"
+    return "missed", f"**missed** by {100 * (r / bound - 1):.0f}% ({r:.2f}x against ≤ {bound:g}x)"
+
+
+def verdict_at_least(r, bound):
+    """Status text for a target 'ratio >= bound'."""
+    if r is None:
+        return "not run", "not measured: a benchmark it needs did not run"
+    if r >= bound:
+        return "met", f"met, {100 * (r / bound - 1):.0f}% above the {bound:g}x floor"
+    return "missed", (f"**missed**: {r:.2f}x is {100 * (1 - r / bound):.0f}% short of ≥ {bound:g}x "
+                      f"(the ratio would have to grow {bound / r:.1f}x)")
+
+
+# --------------------------------------------------------------------------------------------
+# bench.md
+
+def write_markdown(path, results, audit, machine, results_path, audit_path, out_dir):
+    ctx = results.context
+    lines = []
+    add = lines.append
+    reps = sorted(set(results.repetitions.values()))
+    add("# tilesweep benchmarks")
+    add("")
+    add("Medians of repeated runs of `bench/resolve_bench.cpp` (Google Benchmark), **CPU time per "
+        "item** (one frame, one pair), and the targets of issue 5 computed as ratios from this one "
+        "run. Written by `scripts/bench_report.py` from "
+        f"`{os.path.relpath(results_path, os.path.dirname(path))}` and the audit's "
+        f"`{os.path.relpath(audit_path, os.path.dirname(path))}`; regenerate both with "
+        "`bash scripts/bench.sh`.")
+    add("")
+    add("## Machine and run")
+    add("")
+    cpu = machine.get("cpu_model") or "unknown"
+    nproc = machine.get("nproc") or str(ctx.get("num_cpus", "?"))
+    add(f"- host `{machine.get('host') or ctx.get('host_name', '?')}`: {cpu}, {nproc} logical CPUs "
+        f"(`nproc`), {ctx.get('mhz_per_cpu', '?')} MHz as Google Benchmark reads it, CPU scaling "
+        f"{'on' if ctx.get('cpu_scaling_enabled') else 'off'}")
+    if machine.get("compiler"):
+        flags = machine.get("cxx_flags_release", "")
+        add(f"- compiler: {machine['compiler']}; build type {machine.get('build_type') or 'Release'}"
+            + (f" (`{flags}`)" if flags else ""))
+    add(f"- run started {machine.get('started_utc') or ctx.get('date', '?')}, "
+        f"{', '.join(str(r) for r in reps) or '?'} repetitions per benchmark"
+        + (f": `{machine['command']}`" if machine.get("command") else "")
+        + (f", source at commit {machine['commit']}" if machine.get("commit") else ""))
+    lb = machine.get("loadavg_before")
+    la = machine.get("loadavg_after")
+    if lb or la:
+        add(f"- load average (`/proc/loadavg`): before `{lb or '?'}`, after `{la or '?'}`")
+    elif ctx.get("load_avg"):
+        add(f"- load average at the start (Google Benchmark): {', '.join(f'{x:.2f}' for x in ctx['load_avg'])}")
+    try:
+        load1 = float((lb or "").split()[0])
+        cores = int(nproc)
+        if load1 > 0.5 * cores:
+            add(f"- **the machine was busy** (load {load1:.1f} on {cores} CPUs): other jobs shared "
+                "the cores, so wall-clock times are inflated (the table gives CPU time, which "
+                "excludes time spent descheduled, but caches and the memory bus were shared). "
+                "Read the ratios, which compare runs under the same conditions, rather than the "
+                "absolute figures; rerun on an idle machine for absolute numbers.")
+    except (ValueError, IndexError):
+        pass
+    if ctx.get("library_build_type") == "debug":
+        add("- Google Benchmark prints *Library was built as DEBUG*: that is the distribution's "
+            "`libbenchmark` itself (how it was compiled), not tilesweep, which is built in Release; "
+            "it affects only the measuring loop's own overhead, equally for every benchmark.")
+    add("")
+
+    # --- medians
+    add("## Medians")
+    add("")
+    add("Speeds are in tiles per frame (the benchmark argument divided by 2); boxes are 12x12 "
+        "on 16x16 tiles, 512 fixed-seed scenes per benchmark, cycled. `cv` is the coefficient of "
+        "variation of the CPU time across the repetitions.")
+    add("")
+    add("| benchmark | what | CPU ns/item (median) | real ns/item (median) | cv |")
+    add("|---|---|---:|---:|---:|")
+    for name in results.order:
+        if name not in results.cpu:
+            continue
+        cv = results.cv.get(name)
+        add(f"| `{name}` | {describe(name)} | {fmt_num(results.cpu[name])} | "
+            f"{fmt_num(results.real.get(name))} | {'' if cv is None else f'{100 * cv:.1f}%'} |")
+    add("")
+
+    # --- targets
+    add("## Targets (issue 5), as ratios from this run")
+    add("")
+    add("| target | ratio | figures (median CPU time) | verdict |")
+    add("|---|---:|---|---|")
+    summary = []
+
+    # (a) speed does not blow up
+    for level in ("Random30", "FloorAndWalls"):
+        for scalar in ("float", "double"):
+            fast = f"BM_ResolveMove_{level}<{scalar}>/64"
+            slow = f"BM_ResolveMove_{level}<{scalar}>/1"
+            r = ratio(results, fast, slow)
+            status, text = verdict_at_most(r, 2.0)
+            level_text = "256² 30% random" if level == "Random30" else "256² floors and walls"
+            add(f"| (a) speed does not blow up: 32 over 0.5 tiles/frame, {level_text}, {scalar} "
+                f"| {fmt_ratio(r)} | {fmt_ns(results.get(fast))} / {fmt_ns(results.get(slow))} "
+                f"| ≤ 2x: {text} |")
+            summary.append((f"(a) 32 over 0.5 tiles/frame, {level_text}, {scalar}, ≤ 2x", status, fmt_ratio(r) if r else None))
+
+    # (b) map size costs nothing
+    r = ratio(results, "BM_ResolveMove_MapSize/4096", "BM_ResolveMove_MapSize/64")
+    status, text = verdict_at_most(r, 1.1)
+    r1024 = ratio(results, "BM_ResolveMove_MapSize/1024", "BM_ResolveMove_MapSize/64")
+    add(f"| (b) map size costs nothing: 4096² over 64², 8 tiles/frame, float | {fmt_ratio(r)} | "
+        f"{fmt_ns(results.get('BM_ResolveMove_MapSize/4096'))} / "
+        f"{fmt_ns(results.get('BM_ResolveMove_MapSize/64'))} (1024²: {fmt_ratio(r1024)}) | ≤ 1.1x: {text} |")
+    summary.append(("(b) 4096² over 64², ≤ 1.1x", status, fmt_ratio(r) if r else None))
+
+    # (c) broadphase vs brute force
+    r = ratio(results, "BM_BruteForce_EveryTile/256", "BM_ResolveMove_Random30<float>/16")
+    r64 = ratio(results, "BM_BruteForce_EveryTile/64", "BM_ResolveMove_MapSize/64")
+    add(f"| (c) what the broadphase buys: every solid tile of 256² swept, over the resolver's whole "
+        f"frame, 8 tiles/frame, float | {fmt_ratio(r)} | "
+        f"{fmt_ns(results.get('BM_BruteForce_EveryTile/256'))} / "
+        f"{fmt_ns(results.get('BM_ResolveMove_Random30<float>/16'))} (on 64²: {fmt_ratio(r64)}) | "
+        f"no numeric target; the brute force is the narrow phase alone, without the frame's slide "
+        f"or rounding, so this understates the gain |")
+    summary.append(("(c) brute force over the resolver, 256²", "no target", f"the broadphase buys {fmt_ratio(r)}" if r else None))
+
+    # (d) single sweep vs Box2D
+    r = ratio(results, "BM_Box2D_TimeOfImpact_Pairs", "BM_SweepBox_Pairs<float>")
+    rd = ratio(results, "BM_Box2D_TimeOfImpact_Pairs", "BM_SweepBox_Pairs<double>")
+    status, text = verdict_at_least(r, 10.0)
+    if results.get("BM_Box2D_TimeOfImpact_Pairs") is None:
+        text = ("not measured: `BM_Box2D_TimeOfImpact_Pairs` did not run (filtered out, or Box2D, "
+                "Debian's `libbox2d-dev`, was not found at build time and it was not built)")
+    add(f"| (d) one box-against-tile sweep vs Box2D: `b2TimeOfImpact` over `sweepBox<float>`, same "
+        f"pairs | {fmt_ratio(r)} | {fmt_ns(results.get('BM_Box2D_TimeOfImpact_Pairs'))} / "
+        f"{fmt_ns(results.get('BM_SweepBox_Pairs<float>'))} (over `sweepBox<double>`: {fmt_ratio(rd)}) "
+        f"| ≥ 10x: {text}. The issue names `b2ShapeCast`; the suite measures Box2D's "
+        f"`b2TimeOfImpact` (its swept-shape time of impact), which stops short of contact by its "
+        f"target separation |")
+    summary.append(("(d) Box2D over sweepBox<float>, ≥ 10x", status, fmt_ratio(r) if r else None))
+
+    # (e) exact reference cost
+    e1 = results.get("BM_ExactReference_Random30/1")
+    e16 = results.get("BM_ExactReference_Random30/16")
+    solid_estimate = round(0.3 * 64 * 64)
+    if e1 is not None or e16 is not None:
+        per_frame = " and ".join(
+            f"{fmt_ns(v)} per frame ({1e9 / v:,.0f} frames/s per core) at {s} tiles/frame"
+            for v, s in ((e1, "0.5"), (e16, "8")) if v is not None)
+        worst = max(v for v in (e1, e16) if v is not None)
+        per_tile = worst / solid_estimate
+        add(f"| (e) exact reference cost: one frame on a 64² map, 30% solid (every solid tile "
+            f"tested, about {solid_estimate:,}) | — | {per_frame} | target ≥ 100k single-tile "
+            f"scenes/s per core: **not measured as stated** (this benchmark's frames test about "
+            f"{solid_estimate:,} tiles each, not one). Spread over its tiles, the 8 tiles/frame "
+            f"case costs {fmt_ns(per_tile)} per solid tile, {1e9 / per_tile:,.0f} tiles/s; a "
+            f"single-tile scene also pays the frame's fixed costs, so it runs slower than that "
+            f"share. A guide, not a measurement: `oracle/README.md` gives about 8 µs per one-frame "
+            f"single-tile scene (~130k/s) from a separate timing loop, not from this run |")
+        summary.append(("(e) exact reference, ≥ 100k single-tile scenes/s", "not measured as stated", f"{1e9 / worst:,.0f} frames/s on a 64² map, {1e9 / per_tile:,.0f} tile tests/s"))
+    else:
+        add("| (e) exact reference cost | — | not run | not measured |")
+        summary.append(("(e) exact reference", "not run", None))
+
+    # (f) exactness nearly free
+    add("| (f) exactness nearly free: production float within 1.3x of a plain inexact float "
+        "resolve using the same traversal, at every speed | — | — | **not measured**: the project "
+        "has no inexact variant with the production traversal, so there is no benchmark for it. "
+        "The seed and substep baselines below are not it: they scan the whole map |")
+    summary.append(("(f) exact within 1.3x of an inexact float resolve, same traversal", "not measured", "no such variant in the project"))
+    add("")
+
+    # --- Pareto
+    add("## Run time against error")
+    add("")
+    add("![run time against error](pareto.svg)")
+    add("")
+    add("Run time: median CPU time per frame at 8 tiles/frame from this run. Error: share of the "
+        "audit's scenes whose decisions (the tiles hit and their normals, on some frame) differ "
+        "from the exact reference, summed over every family the audit ran for that scalar "
+        f"(`{audit.command}`, seed {audit.seed}, {audit.cases} scenes per family). Tunnelling "
+        "and ending inside a tile are given beside it. The exact reference is what the audit "
+        "measures against: 0 by definition.")
+    add("")
+    add("| implementation (audit) | benchmark (8 tiles/frame) | ns/frame | 0.5 → 32 tiles/frame | "
+        "decisions differ | tunnels | ends inside | audit scenes |")
+    add("|---|---|---:|---|---:|---:|---:|---:|")
+    for impl, bench, speeds, _label, _group in IMPLEMENTATIONS:
+        row = audit.row(impl)
+        times = [results.get(b) for b in speeds]
+        span = " → ".join(fmt_num(t) for t in times)
+        if row is None:
+            figures = "— | — | — | not in the audit"
+        elif row.get("reference"):
+            figures = "0 (the reference) | 0 | 0 | —"
+        else:
+            figures = (f"{pct(row['decision'])} | {pct(row['tunnel'])} | {pct(row['inside'])} | "
+                       f"{row['scenes']:,} ({row['families']} families)")
+        add(f"| {impl} | `{bench}` | {fmt_num(results.get(bench))} | {span} | {figures} |")
+    add("")
+    add("Read the time axis with care: the production resolver and the seed algorithm run on a "
+        "256² map, the substep loops and the exact reference on a 64² map (as the suite defines "
+        "them). The seed algorithm and the substep loops look for candidate tiles by scanning "
+        "every cell of the map, the exact reference tests every solid tile; the production "
+        "resolver walks only the cells the move reaches (see (b): the map's size does not "
+        "change its cost). The error axis comes from the audit's scenario families, not from the "
+        "benchmark's scenes.")
+    add("")
+    add("## Summary")
+    add("")
+    for label, status, value in summary:
+        add(f"- {label}: {status}" + (f" ({value})" if value else ""))
+    add("")
+    with open(path, "w", encoding="utf-8") as f:
+        f.write("\n".join(lines))
+    return summary
+
+
+# --------------------------------------------------------------------------------------------
+# pareto.svg
+
+GROUP_STYLE = {
+    "production": ("#1a9850", "circle"),
+    "seed": ("#d73027", "square"),
+    "substep": ("#f08c00", "triangle"),
+    "exact": ("#2c5aa0", "diamond"),
+}
+
+
+def text_width(s, size, bold=False):
+    """A rough width in px of a text in DejaVu Sans (for placing labels only; a little wide)."""
+    width = 0.0
+    for c in s:
+        if c in " ":
+            width += 0.33
+        elif c in ".,:;'|!()[]":
+            width += 0.36
+        elif c in "ijlft":
+            width += 0.34
+        elif c in "mwMW%":
+            width += 0.92
+        elif c.isupper() or c.isdigit() or c in "²µ→≤≥":
+            width += 0.68
+        else:
+            width += 0.6
+    return width * size * (1.08 if bold else 1.0)
+
+
+def marker(shape, x, y, color, r=7, hollow=False):
+    """A marker; hollow (white inside, a thick coloured edge) for the double variants."""
+    fill, stroke, sw = ("white", color, 2.6) if hollow else (color, "#222", 1)
+    if shape == "circle":
+        return f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{r}" fill="{fill}" stroke="{stroke}" stroke-width="{sw}"/>'
+    if shape == "square":
+        return (f'<rect x="{x - r + 0.5:.1f}" y="{y - r + 0.5:.1f}" width="{2 * r - 1}" height="{2 * r - 1}" '
+                f'fill="{fill}" stroke="{stroke}" stroke-width="{sw}"/>')
+    if shape == "triangle":
+        pts = f"{x:.1f},{y - r - 1:.1f} {x + r:.1f},{y + r - 1:.1f} {x - r:.1f},{y + r - 1:.1f}"
+        return f'<polygon points="{pts}" fill="{fill}" stroke="{stroke}" stroke-width="{sw}"/>'
+    pts = f"{x:.1f},{y - r - 1:.1f} {x + r + 1:.1f},{y:.1f} {x:.1f},{y + r + 1:.1f} {x - r - 1:.1f},{y:.1f}"
+    return f'<polygon points="{pts}" fill="{fill}" stroke="{stroke}" stroke-width="{sw}"/>'
+
+
+def boxes_overlap(a, b, pad=3):
+    return not (a[2] + pad <= b[0] or b[2] + pad <= a[0] or a[3] + pad <= b[1] or b[3] + pad <= a[1])
+
+
+def write_svg(path, results, audit, machine):
+    points = []
+    for impl, bench, speeds, label, group in IMPLEMENTATIONS:
+        t = results.get(bench)
+        row = audit.row(impl)
+        if t is None or row is None:
+            continue
+        span = [v for v in (results.get(b) for b in speeds) if v is not None]
+        points.append({"impl": impl, "label": label, "group": group, "t": t, "err": row["decision"],
+                       "tunnel": row["tunnel"], "lo": min(span), "hi": max(span)})
+    W, H = 1000, 640
+    left, right, top, bottom = 96, 36, 78, 150
+    pw, ph = W - left - right, H - top - bottom
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" viewBox="0 0 {W} {H}" '
+           'font-family="DejaVu Sans, Verdana, Arial, sans-serif">',
+           f'<rect width="{W}" height="{H}" fill="white"/>']
+    title = "tilesweep: run time against error, one point per implementation"
+    out.append(f'<text x="{W / 2}" y="30" font-size="19" font-weight="bold" text-anchor="middle">{html.escape(title)}</text>')
+    sub = ("time: median CPU per frame at 8 tiles/frame (this run); error: audit scenes whose "
+           "decisions differ from the exact reference")
+    out.append(f'<text x="{W / 2}" y="52" font-size="12.5" fill="#444" text-anchor="middle">{html.escape(sub)}</text>')
+    if not points:
+        out.append(f'<text x="{W / 2}" y="{H / 2}" font-size="16" text-anchor="middle">no data</text></svg>')
+        with open(path, "w", encoding="utf-8") as f:
+            f.write("\n".join(out) + "\n")
+        return
+
+    # x: log10 of ns, whole decades around the data (the speed range bars included).
+    xmin = math.floor(math.log10(min(p["lo"] for p in points)))
+    xmax = math.ceil(math.log10(max(p["hi"] for p in points)))
+    if xmax - xmin < 2:
+        xmax = xmin + 2
+
+    def X(ns):
+        return left + (math.log10(ns) - xmin) / (xmax - xmin) * pw
+
+    # y: linear percent. The 0 line is lifted off the bottom of the frame into a band of its
+    # own, so that points at exactly 0 read as a value and not as the floor of the plot.
+    ymax = max(10.0, math.ceil(max(p["err"] for p in points) / 10.0) * 10.0)
+    zero_band = 44                       # px of the band around the 0 line at the bottom
+    y0_px = top + ph - zero_band / 2     # where 0 is drawn
+
+    def Y(err):
+        return y0_px - err / ymax * (y0_px - top - 12)
+
+    # Plot frame and grid.
+    out.append(f'<rect x="{left}" y="{top}" width="{pw}" height="{ph}" fill="#fcfcfc" stroke="#999"/>')
+    out.append(f'<rect x="{left + 1}" y="{top + ph - zero_band}" width="{pw - 2}" height="{zero_band - 1}" fill="#e6f4e9"/>')
+    step = 10 if ymax <= 100 else 20
+    v = step
+    while v <= ymax + 1e-9:
+        y = Y(v)
+        out.append(f'<line x1="{left}" y1="{y:.1f}" x2="{left + pw}" y2="{y:.1f}" stroke="#e3e3e3"/>')
+        out.append(f'<text x="{left - 8}" y="{y + 4:.1f}" font-size="13" text-anchor="end">{v:g}%</text>')
+        v += step
+    out.append(f'<line x1="{left}" y1="{y0_px:.1f}" x2="{left + pw}" y2="{y0_px:.1f}" stroke="#7bbf8c" stroke-width="1.2"/>')
+    out.append(f'<text x="{left - 8}" y="{y0_px + 5:.1f}" font-size="14" font-weight="bold" fill="#1a7a3a" '
+               'text-anchor="end">0%</text>')
+    out.append(f'<text x="{left + pw - 8}" y="{top + ph - 4}" font-size="11.5" fill="#1a7a3a" text-anchor="end">'
+               'on the 0 line: agrees with the exact reference on every audit scene</text>')
+    # x ticks: decades labelled, 2..9 minor
+    names = {0: "1 ns", 1: "10 ns", 2: "100 ns", 3: "1 µs", 4: "10 µs", 5: "100 µs", 6: "1 ms",
+             7: "10 ms", 8: "100 ms", 9: "1 s", 10: "10 s"}
+    for d in range(xmin, xmax + 1):
+        x = X(10 ** d)
+        out.append(f'<line x1="{x:.1f}" y1="{top}" x2="{x:.1f}" y2="{top + ph}" stroke="#dcdcdc"/>')
+        out.append(f'<text x="{x:.1f}" y="{top + ph + 20}" font-size="13" text-anchor="middle">{names.get(d, f"1e{d} ns")}</text>')
+        if d < xmax:
+            for m in range(2, 10):
+                xm = X(m * 10 ** d)
+                out.append(f'<line x1="{xm:.1f}" y1="{top + ph}" x2="{xm:.1f}" y2="{top + ph + 5}" stroke="#999"/>')
+    out.append(f'<text x="{left + pw / 2}" y="{top + ph + 44}" font-size="14.5" text-anchor="middle">'
+               'run time per frame (median CPU time, log scale)  →  slower</text>')
+    out.append(f'<text transform="translate({24},{top + ph / 2}) rotate(-90)" font-size="14.5" text-anchor="middle">'
+               'scenes whose decisions differ from exact (%)</text>')
+
+    # Dominance: everything slower and no more accurate than the fastest error-free point.
+    best = min((p for p in points if p["err"] == 0), key=lambda p: p["t"], default=None)
+    if best is not None:
+        bx = X(best["t"])
+        out.append(f'<rect x="{bx:.1f}" y="{top + 1}" width="{left + pw - bx - 1:.1f}" height="{ph - 2}" '
+                   'fill="#1a9850" fill-opacity="0.045"/>')
+        out.append(f'<line x1="{bx:.1f}" y1="{top}" x2="{bx:.1f}" y2="{top + ph}" stroke="#1a9850" '
+                   'stroke-width="1.2" stroke-dasharray="3,3"/>')
+        out.append(f'<text x="{bx + 6:.1f}" y="{top + 16}" font-size="12" fill="#1a7a3a">shaded: slower and no '
+                   f'more exact than {html.escape(best["label"])} (dominated)</text>')
+
+    # Range bars (0.5 to 32 tiles/frame), then the points.
+    for p in points:
+        if p["hi"] > p["lo"]:
+            y = Y(p["err"])
+            color = GROUP_STYLE[p["group"]][0]
+            out.append(f'<line x1="{X(p["lo"]):.1f}" y1="{y:.1f}" x2="{X(p["hi"]):.1f}" y2="{y:.1f}" '
+                       f'stroke="{color}" stroke-width="3" stroke-opacity="0.35" stroke-linecap="round"/>')
+    occupied = [(left, top, left + pw, top + 22)] if best is not None else []   # the shading note
+    occupied.append((left + pw - 420, top + ph - 16, left + pw, top + ph))      # the zero band note
+    for p in sorted(points, key=lambda q: not q["impl"].endswith("-double")):
+        x, y = X(p["t"]), Y(p["err"])
+        p["x"], p["y"] = x, y
+        occupied.append((x - 9, y - 9, x + 9, y + 9))
+        color, shape = GROUP_STYLE[p["group"]]
+        out.append(marker(shape, x, y, color, hollow=p["impl"].endswith("-double")))
+
+    # Labels: two lines (name; time and error), placed greedily where they collide with nothing.
+    label_boxes = []
+    for p in sorted(points, key=lambda q: (q["err"], q["t"])):
+        line1 = p["label"]
+        err = "0 (reference)" if p["impl"] == "exact-reference" else (
+            "0" if p["err"] == 0 else f"{p['err']:.1f}%")
+        line2 = f"{fmt_ns(p['t'])}, differs {err}"
+        if p["tunnel"] > 0:
+            line2 += f", tunnels {p['tunnel']:.1f}%"
+        w = max(text_width(line1, 13.5, bold=True), text_width(line2, 11.5)) + 6
+        h = 30
+        x, y = p["x"], p["y"]
+        candidates = []
+        for dist in (12, 26, 44, 64):
+            candidates += [(x + dist, y - h / 2), (x - dist - w, y - h / 2),
+                           (x - w / 2, y - dist - h), (x - w / 2, y + dist),
+                           (x + dist * 0.7, y - dist * 0.7 - h), (x - dist * 0.7 - w, y - dist * 0.7 - h),
+                           (x + dist * 0.7, y + dist * 0.7), (x - dist * 0.7 - w, y + dist * 0.7)]
+        chosen = None
+        for cx, cy in candidates:
+            box = (cx, cy, cx + w, cy + h)
+            if box[0] < left + 2 or box[2] > left + pw - 2 or box[1] < top + 2 or box[3] > top + ph - 2:
+                continue
+            if any(boxes_overlap(box, o) for o in occupied + label_boxes):
+                continue
+            chosen = box
+            break
+        if chosen is None:
+            chosen = (x + 12, y - h / 2, x + 12 + w, y + h / 2)
+        label_boxes.append(chosen)
+        cx, cy = chosen[0], chosen[1]
+        # a leader line when the label is not right beside its point
+        nearest_x = min(max(x, chosen[0]), chosen[2])
+        nearest_y = min(max(y, chosen[1]), chosen[3])
+        if math.hypot(nearest_x - x, nearest_y - y) > 16:
+            out.append(f'<line x1="{x:.1f}" y1="{y:.1f}" x2="{nearest_x:.1f}" y2="{nearest_y:.1f}" stroke="#777" stroke-width="0.8"/>')
+        out.append(f'<rect x="{cx:.1f}" y="{cy:.1f}" width="{w:.1f}" height="{h}" fill="white" fill-opacity="0.85" rx="3"/>')
+        out.append(f'<text x="{cx + 2:.1f}" y="{cy + 13:.1f}" font-size="13.5" font-weight="bold" '
+                   f'fill="{GROUP_STYLE[p["group"]][0] if p["group"] != "production" else "#15703a"}">{html.escape(line1)}</text>')
+        out.append(f'<text x="{cx + 2:.1f}" y="{cy + 27:.1f}" font-size="11.5" fill="#333">{html.escape(line2)}</text>')
+
+    # Legend and footnote below the plot, wrapped to the width of the plot.
+    ly = top + ph + 70
+    lx = left
+    items = [("production", "production resolver (exact)"), ("exact", "exact reference (GMP rationals)"),
+             ("seed", "seed algorithm (the article)"), ("substep", "game-style float substeps"),
+             ("hollow", "hollow: double (filled: float)"), (None, "range: 0.5 to 32 tiles/frame")]
+    for group, text in items:
+        width = 22 + text_width(text, 12.5) + 18
+        if lx + width > left + pw:
+            lx, ly = left, ly + 20
+        if group == "hollow":
+            out.append(marker("circle", lx + 8, ly - 4, "#666", r=6, hollow=True))
+        elif group is None:
+            out.append(f'<line x1="{lx + 1}" y1="{ly - 4}" x2="{lx + 17}" y2="{ly - 4}" stroke="#888" '
+                       'stroke-width="3" stroke-opacity="0.5" stroke-linecap="round"/>')
+        else:
+            color, shape = GROUP_STYLE[group]
+            out.append(marker(shape, lx + 8, ly - 4, color, r=6))
+        out.append(f'<text x="{lx + 22}" y="{ly + 1}" font-size="12.5">{html.escape(text)}</text>')
+        lx += width
+    host = machine.get("host") or results.context.get("host_name", "")
+    cpu = machine.get("cpu_model", "")
+    foot1 = ("Time: production and seed on a 256² map, substeps and exact reference on a 64² map, 30% "
+             "solid; the baselines scan the whole map.")
+    foot2 = (f"Error: decisions differ, over all audit families (seed {audit.seed}, {audit.cases} "
+             f"scenes per family). Machine: {host}, {cpu}.")
+    out.append(f'<text x="{left}" y="{ly + 24}" font-size="11" fill="#555">{html.escape(foot1)}</text>')
+    out.append(f'<text x="{left}" y="{ly + 39}" font-size="11" fill="#555">{html.escape(foot2)}</text>')
+    out.append("</svg>")
+    with open(path, "w", encoding="utf-8") as f:
+        f.write("\n".join(out) + "\n")
+
+
+# --------------------------------------------------------------------------------------------
+
+def main(argv):
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--results", help="Google Benchmark JSON (default: the newest docs/bench/results-*.json)")
+    parser.add_argument("--machine", help="machine description written by scripts/bench.sh")
+    parser.add_argument("--audit", default=os.path.join(root, "docs", "audit", "report.json"))
+    parser.add_argument("--out-dir", default=os.path.join(root, "docs", "bench"))
+    args = parser.parse_args(argv)
+
+    results_path = args.results
+    if results_path is None:
+        found = [os.path.join(args.out_dir, f) for f in os.listdir(args.out_dir)
+                 if f.startswith("results-") and f.endswith(".json")] if os.path.isdir(args.out_dir) else []
+        if not found:
+            parser.error("no --results given and no docs/bench/results-*.json found (run scripts/bench.sh)")
+        results_path = max(found, key=os.path.getmtime)
+    machine_path = args.machine
+    if machine_path is None:
+        guess = os.path.join(os.path.dirname(results_path),
+                             os.path.basename(results_path).replace("results-", "machine-", 1))
+        machine_path = guess if os.path.exists(guess) else None
+    machine = {}
+    if machine_path:
+        with open(machine_path, encoding="utf-8") as f:
+            machine = json.load(f)
+
+    results = Results(results_path)
+    if not results.cpu:
+        print(f"bench_report: no benchmark results in {results_path}", file=sys.stderr)
+        return 1
+    audit = Audit(args.audit)
+    os.makedirs(args.out_dir, exist_ok=True)
+    md = os.path.join(args.out_dir, "bench.md")
+    svg = os.path.join(args.out_dir, "pareto.svg")
+    summary = write_markdown(md, results, audit, machine, results_path, args.audit, args.out_dir)
+    write_svg(svg, results, audit, machine)
+    for label, status, value in summary:
+        print(f"bench_report: {label}: {status}" + (f" ({value})" if value else ""), file=sys.stderr)
+    print(f"bench_report: wrote {os.path.relpath(md)} and {os.path.relpath(svg)}", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
