@@ -55,8 +55,9 @@ template <class T>
     return {negative ? -m : m, exponent + zeros};
 }
 
-/// The exponent just above a dyadic's magnitude: |value| < 2^result.
+/// The exponent just above a dyadic's magnitude: |value| < 2^result (very negative for zero).
 [[nodiscard]] inline int exponentAbove(Dyadic d) noexcept {
+    if (d.mantissa == 0) return std::numeric_limits<int>::min() / 2;  // clz(0) is undefined
     const std::uint64_t mag = d.mantissa < 0 ? 0 - static_cast<std::uint64_t>(d.mantissa)
                                              : static_cast<std::uint64_t>(d.mantissa);
     return d.exponent + 64 - __builtin_clzll(mag);
