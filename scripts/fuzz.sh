@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets of fuzz/ with clang, AddressSanitizer and UBSan (a separate build
+# in build-fuzz/, or $TILESWEEP_FUZZ_BUILD_DIR), runs each for SECONDS_PER_TARGET seconds, prints
+# executions per second and corpus size, then replays the seed corpus, the saved regressions and
+# the grown corpus through the sanitized replay drivers.
+#
+#   bash scripts/fuzz.sh [SECONDS_PER_TARGET [TARGET...]]    # default: 60 s, every target
+#   bash scripts/fuzz.sh 0                                   # build and replay only
+#
+# A failing input is written to fuzz/regressions/<target>/ (a regression test from then on) and
+# makes the script exit 1. The grown corpus stays in <build>/corpus/<target>/ between runs.
+# TILESWEEP_FUZZ_NO_BUILD=1 skips configure and build (to run targets side by side);
+# TILESWEEP_FUZZ_FLAGS adds compile options to the core library, after the sanitizer flags
+# (say "-fno-sanitize=builtin -mlzcnt -O0", to look past a known finding while it is fixed).
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+seconds=${1:-60}
+shift || true
+targets=("$@")
+((${#targets[@]})) || targets=(scene_reader resolver)
+build=${TILESWEEP_FUZZ_BUILD_DIR:-$root/build-fuzz}
+
+# clang and its sanitizer and libFuzzer runtimes, from Debian's packages, when missing.
+packages=(clang libclang-rt-14-dev cmake ninja-build nlohmann-json3-dev)
+missing=()
+for package in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+done
+if ((${#missing[@]})); then
+    echo "fuzz: installing ${missing[*]}" >&2
+    sudo_cmd=()
+    [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+    "${sudo_cmd[@]}" apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+if [ "${TILESWEEP_FUZZ_NO_BUILD:-0}" != 1 ]; then
+    # TILESWEEP_WERROR=OFF: parts of the library outside fuzz/ are written for g++ and draw clang
+    # warnings; fuzz/CMakeLists.txt keeps -Werror on the fuzz targets themselves.
+    CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+        -DTILESWEEP_BUILD_FUZZ=ON -DTILESWEEP_SANITIZE=ON -DTILESWEEP_WERROR=OFF \
+        -DTILESWEEP_BUILD_TESTS=OFF -DTILESWEEP_BUILD_PROPERTIES=OFF -DTILESWEEP_BUILD_ORACLE=OFF \
+        -DTILESWEEP_BUILD_BENCH=OFF -DTILESWEEP_BUILD_CLI=OFF -DTILESWEEP_BUILD_AUDIT=OFF \
+        -DTILESWEEP_FUZZ_FLAGS="${TILESWEEP_FUZZ_FLAGS:-}" >/dev/null
+    binaries=()
+    for target in "${targets[@]}"; do binaries+=("fuzz_$target" "fuzz_${target}_replay"); done
+    cmake --build "$build" --target "${binaries[@]}"
+fi
+
+# Input size bounds: a scene line of a few KiB covers every field several times over; a resolver
+# input is at most 3 + 128 + 10*9 + 1 bytes.
+declare -A max_len=([scene_reader]=4096 [resolver]=256)
+status=0
+for target in "${targets[@]}"; do
+    corpus=$build/corpus/$target
+    regressions=$root/fuzz/regressions/$target
+    mkdir -p "$corpus" "$regressions"
+    if ((seconds > 0)); then
+        log=$build/fuzz-$target.log
+        echo "== fuzz_$target for $seconds s (log: $log)"
+        # New inputs go to the first corpus directory; the seeds in fuzz/corpus/ are only read.
+        if ! "$build/fuzz/fuzz_$target" -max_total_time="$seconds" -max_len="${max_len[$target]:-4096}" \
+            -rss_limit_mb=2048 -malloc_limit_mb=1024 -timeout=10 -print_final_stats=1 \
+            -artifact_prefix="$regressions/" "$corpus" "$root/fuzz/corpus/$target" >"$log" 2>&1; then
+            echo "fuzz_$target: FAILED, see $log; the input is in $regressions/" >&2
+            tail -n 40 "$log" >&2
+            status=1
+        fi
+        execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
+        rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -n 1)
+        peak=$(sed -n 's/^stat::peak_rss_mb: *//p' "$log" | tail -n 1)
+        cov=$(grep -o 'cov: [0-9]*' "$log" | tail -n 1 || true)
+        echo "fuzz_$target: ${execs:-?} executions, ${rate:-?} exec/s, corpus $(find "$corpus" -type f | wc -l) files," \
+             "${cov:-cov: ?}, peak RSS ${peak:-?} MB"
+    fi
+    echo "== replay $target: seeds, regressions, grown corpus"
+    if ! "$build/fuzz/fuzz_${target}_replay" "$root/fuzz/corpus/$target" "$regressions" "$corpus" 2>"$build/replay-$target.log"; then
+        echo "replay $target: FAILED, see $build/replay-$target.log" >&2
+        tail -n 20 "$build/replay-$target.log" >&2
+        status=1
+    fi
+done
+exit $status
