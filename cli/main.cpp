@@ -12,6 +12,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -161,13 +162,13 @@ struct RenderOptions {
 };
 
 CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
-    CLI::App* command = app.add_subcommand(
-        "render", "Draw one scene and its resolved frames as an SVG picture");
+    CLI::App* command =
+        app.add_subcommand("render", "Draw one scene and its resolved frames as an SVG picture");
     command->add_option("--scalar", options.scalar, "The scalar type every number is rounded to")
         ->check(CLI::IsMember(std::vector<std::string>{"float", "double"}))
         ->capture_default_str();
     command->add_option("--index", options.index, "Which scene of the file, counting non-blank lines from 0")
-        ->check(CLI::NonNegativeNumber)
+        ->check(CLI::Range(0, std::numeric_limits<int>::max()))
         ->capture_default_str();
     command->add_option("SCENE_FILE", options.file, "The scene file (JSON Lines)")
         ->type_name("PATH")

@@ -14,6 +14,7 @@
 namespace tilesweep::cli {
 namespace {
 
+#if TILESWEEP_HAVE_ORACLE
 /// N of "prefix:N" when `name` has that form with 1 <= N <= 2^20, else 0.
 std::int64_t substepCount(const std::string& name, const std::string& prefix) {
     if (name.rfind(prefix + ":", 0) != 0) return 0;
@@ -23,7 +24,6 @@ std::int64_t substepCount(const std::string& name, const std::string& prefix) {
     return n >= 1 && n <= (std::int64_t{1} << 20) ? n : 0;
 }
 
-#if TILESWEEP_HAVE_ORACLE
 template <class T, class Frames>
 std::vector<FrameResult<T>> framesOf(const Frames& substepFrames) {
     std::vector<FrameResult<T>> out;

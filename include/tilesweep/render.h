@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "tilesweep/scene.h"
+
 #include <string>
 #include <vector>
-
-#include "tilesweep/scene.h"
 
 // A picture of a scene and its resolved frames, so that a person can look at a counterexample
 // instead of reading numbers. Part of the `tilesweep_scene` target, like scene.h.
@@ -44,7 +44,6 @@ namespace tilesweep {
 /// std::invalid_argument when `frames` does not hold one frame per move, or when the map's
 /// `solid` does not hold columns*rows cells.
 template <class T>
-[[nodiscard]] std::string renderSceneSvg(const Scene<T>& scene,
-                                         const std::vector<FrameResult<T>>& frames);
+[[nodiscard]] std::string renderSceneSvg(const Scene<T>& scene, const std::vector<FrameResult<T>>& frames);
 
 }  // namespace tilesweep

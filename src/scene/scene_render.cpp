@@ -27,26 +27,27 @@ using Real = long double;
 
 // ---- layout, in SVG pixels -----------------------------------------------------------------
 
-constexpr Real kDrawWidth = 880;        // the map and the motion are scaled to fit this box
+constexpr Real kDrawWidth = 880;  // the map and the motion are scaled to fit this box
 constexpr Real kDrawHeight = 520;
-constexpr Real kPad = 40;               // around the drawing: room for indices and arrows
-constexpr Real kHeaderHeight = 60;      // title and caption
-constexpr Real kMinCanvasWidth = 700;   // so that the legend and the listing fit
-constexpr Real kMaxPx = 1e7;            // printed coordinates are clamped to this, see appendPx
-constexpr Real kMinGridSpacing = 4;     // below this a grid is grey noise, so it is left out
+constexpr Real kPad = 40;              // around the drawing: room for indices and arrows
+constexpr Real kHeaderHeight = 60;     // title and caption
+constexpr Real kMinCanvasWidth = 700;  // so that the legend and the listing fit
+constexpr Real kMaxPx = 1e7;           // printed coordinates are clamped to this, see appendPx
+constexpr Real kMinGridSpacing = 4;    // below this a grid is grey noise, so it is left out
 constexpr Real kLegendColumnWidth = 240;
 constexpr Real kLegendRowHeight = 20;
 constexpr Real kListingLineHeight = 15;
 // Rough glyph advances, to size the canvas around text (there is no font metrics in SVG).
-constexpr Real kTitleCharWidth = 10;    // 17px bold sans-serif
-constexpr Real kListingCharWidth = 6.7; // 11px monospace
+constexpr Real kTitleCharWidth = 10;     // 17px bold sans-serif
+constexpr Real kCaptionCharWidth = 6.9;  // 12px sans-serif
+constexpr Real kListingCharWidth = 6.7;  // 11px monospace
 
 // Past this many frames the picture switches to its compact form: frame ends in between become
 // dots, and the per-frame extras (requested motion, box at contact) are left out.
 constexpr std::size_t kMaxFramesDrawnInFull = 8;
 // The listing shows every frame up to this many, else the first and the last few.
 constexpr std::size_t kMaxListedFrames = 12;
-constexpr std::size_t kMaxListedContacts = 3;    // per frame
+constexpr std::size_t kMaxListedContacts = 3;  // per frame
 constexpr std::size_t kMaxTitleCodePoints = 120;
 
 // Colours: boxes blue, contacts red, started-overlapping amber, path near-black.
@@ -122,7 +123,8 @@ template <class T>
 /// Appends text as XML character data or attribute content. Markup characters are escaped;
 /// bytes that are not well-formed UTF-8 become U+FFFD and control characters a space, because
 /// XML 1.0 forbids them and a scene name may carry either (JSON allows "\u0001").
-void appendXmlText(std::string& out, std::string_view text, std::size_t maxCodePoints = std::numeric_limits<std::size_t>::max()) {
+void appendXmlText(std::string& out, std::string_view text,
+                   std::size_t maxCodePoints = std::numeric_limits<std::size_t>::max()) {
     std::size_t codePoints = 0;
     std::size_t k = 0;
     while (k < text.size()) {
@@ -134,12 +136,23 @@ void appendXmlText(std::string& out, std::string_view text, std::size_t maxCodeP
         const auto lead = static_cast<unsigned char>(text[k]);
         if (lead < 0x80) {
             switch (lead) {
-                case '&': out += "&amp;"; break;
-                case '<': out += "&lt;"; break;
-                case '>': out += "&gt;"; break;
-                case '"': out += "&quot;"; break;
-                case '\'': out += "&apos;"; break;
-                default: out += (lead < 0x20 || lead == 0x7f) ? ' ' : static_cast<char>(lead);
+                case '&':
+                    out += "&amp;";
+                    break;
+                case '<':
+                    out += "&lt;";
+                    break;
+                case '>':
+                    out += "&gt;";
+                    break;
+                case '"':
+                    out += "&quot;";
+                    break;
+                case '\'':
+                    out += "&apos;";
+                    break;
+                default:
+                    out += (lead < 0x20 || lead == 0x7f) ? ' ' : static_cast<char>(lead);
             }
             ++k;
             continue;
@@ -161,23 +174,21 @@ void appendXmlText(std::string& out, std::string_view text, std::size_t maxCodeP
             codePoint = lead & 0x07u;
             minimum = 0x10000;
         }
-        bool valid = length != 0 && k + length <= text.size();
-        for (std::size_t m = 1; valid && m < length; ++m) {
+        bool wellFormed = length != 0 && k + length <= text.size();
+        for (std::size_t m = 1; wellFormed && m < length; ++m) {
             const auto next = static_cast<unsigned char>(text[k + m]);
-            valid = (next & 0xc0u) == 0x80u;
+            wellFormed = (next & 0xc0u) == 0x80u;
             codePoint = (codePoint << 6) | (next & 0x3fu);
         }
         // Surrogates, U+FFFE, U+FFFF and C1 controls are not XML characters either.
-        valid = valid && codePoint >= minimum && codePoint <= 0x10ffff &&
-                !(codePoint >= 0xd800 && codePoint <= 0xdfff) && codePoint != 0xfffe &&
-                codePoint != 0xffff && !(codePoint >= 0x80 && codePoint <= 0x9f);
-        if (valid) {
-            out.append(text.substr(k, length));
-            k += length;
-        } else {
-            out += "\uFFFD";
-            ++k;
-        }
+        const bool allowed = wellFormed && codePoint >= minimum && codePoint <= 0x10ffff &&
+                             !(codePoint >= 0xd800 && codePoint <= 0xdfff) && codePoint != 0xfffe &&
+                             codePoint != 0xffff && !(codePoint >= 0x80 && codePoint <= 0x9f);
+        if (allowed) out.append(text.substr(k, length));
+        if (!allowed) out += "\uFFFD";
+        // A well-formed sequence is one character even when it is not allowed; a broken one is
+        // replaced byte by byte, so that the bytes after it are read afresh.
+        k += wellFormed ? length : 1;
     }
 }
 
@@ -202,8 +213,7 @@ struct Bounds {
     Real maxY = -std::numeric_limits<Real>::infinity();
 
     void add(const Rect& r) {
-        if (!std::isfinite(r.x0) || !std::isfinite(r.y0) || !std::isfinite(r.x1) ||
-            !std::isfinite(r.y1))
+        if (!std::isfinite(r.x0) || !std::isfinite(r.y0) || !std::isfinite(r.x1) || !std::isfinite(r.y1))
             return;
         minX = std::min(minX, r.x0);
         minY = std::min(minY, r.y0);
@@ -228,8 +238,8 @@ struct View {
 
 /// Where the box stood when a group of contacts (all at one frame time) happened.
 struct Stop {
-    Real x, y;               ///< box top-left, map-relative
-    std::size_t first;       ///< index of the group's first contact in the frame's list
+    Real x, y;          ///< box top-left, map-relative
+    std::size_t first;  ///< index of the group's first contact in the frame's list
     std::size_t count;
 };
 
@@ -254,9 +264,8 @@ struct FramePlan {
 /// same frame time as step 1 joins step 1's group, which is harmless: the box has not moved in
 /// between, so both groups stand at the same position.
 template <class T>
-[[nodiscard]] std::vector<Stop> planStops(const TileMap<T>& map, Real w, Real h, Real startX,
-                                          Real startY, Real moveX, Real moveY,
-                                          const std::vector<Contact<T>>& contacts) {
+[[nodiscard]] std::vector<Stop> planStops(const TileMap<T>& map, Real w, Real h, Real startX, Real startY,
+                                          Real moveX, Real moveY, const std::vector<Contact<T>>& contacts) {
     std::vector<Stop> stops;
     const auto tw = static_cast<Real>(map.tileSize.x);
     const auto th = static_cast<Real>(map.tileSize.y);
@@ -318,8 +327,7 @@ void appendRect(std::string& out, Real x, Real y, Real width, Real height, std::
 }
 
 void appendLine(std::string& out, Real x0, Real y0, Real x1, Real y1, std::string_view attributes) {
-    out += "<line x1=\"" + px(x0) + "\" y1=\"" + px(y0) + "\" x2=\"" + px(x1) + "\" y2=\"" + px(y1) +
-           "\" ";
+    out += "<line x1=\"" + px(x0) + "\" y1=\"" + px(y0) + "\" x2=\"" + px(x1) + "\" y2=\"" + px(y1) + "\" ";
     out += attributes;
     out += "/>\n";
 }
@@ -345,16 +353,17 @@ void appendText(std::string& out, Real x, Real y, std::string_view text, std::st
 /// An arrow from (x, y) along the unit direction (dx, dy), `length` pixels long, head included.
 void appendArrowShape(std::string& out, Real x, Real y, Real dx, Real dy, Real length,
                       std::string_view colour) {
-    constexpr Real kHead = 7;
+    constexpr Real kHead = 9;
     const Real tipX = x + dx * length;
     const Real tipY = y + dy * length;
     const Real baseX = tipX - dx * kHead;
     const Real baseY = tipY - dy * kHead;
-    const std::string stroke = "stroke=\"" + std::string(colour) + "\" stroke-width=\"2.5\" stroke-linecap=\"round\"";
+    const std::string stroke =
+        "stroke=\"" + std::string(colour) + "\" stroke-width=\"2.5\" stroke-linecap=\"round\"";
     appendLine(out, x, y, baseX, baseY, stroke);
     // The head: the tip and two corners on either side of the shaft, half a head wide.
-    out += "<polygon points=\"" + px(tipX) + "," + px(tipY) + " " + px(baseX - dy * kHead * 0.5L) +
-           "," + px(baseY + dx * kHead * 0.5L) + " " + px(baseX + dy * kHead * 0.5L) + "," +
+    out += "<polygon points=\"" + px(tipX) + "," + px(tipY) + " " + px(baseX - dy * kHead * 0.5L) + "," +
+           px(baseY + dx * kHead * 0.5L) + " " + px(baseX + dy * kHead * 0.5L) + "," +
            px(baseY - dx * kHead * 0.5L) + "\" fill=\"" + std::string(colour) + "\"/>\n";
 }
 
@@ -379,14 +388,15 @@ public:
         plan();
         layout();
         out_.reserve(8192 + frames_.size() * 512 + scene_.map.solid.size() * 96);
-        out_ += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" +
-                px(canvasWidth_) + "\" height=\"" + px(canvasHeight_) + "\" viewBox=\"0 0 " +
-                px(canvasWidth_) + " " + px(canvasHeight_) + "\">\n";
+        out_ += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + px(canvasWidth_) +
+                "\" height=\"" + px(canvasHeight_) + "\" viewBox=\"0 0 " + px(canvasWidth_) + " " +
+                px(canvasHeight_) + "\">\n";
         out_ += "<title>";
         appendXmlText(out_, title(), kMaxTitleCodePoints);
         out_ += "</title>\n";
-        out_ += "<desc>tilesweep scene: tiles, box at start and at each frame end, path, contacts "
-                "and their normals; y grows downward</desc>\n";
+        out_ +=
+            "<desc>tilesweep scene: tiles, box at start and at each frame end, path, contacts "
+            "and their normals; y grows downward</desc>\n";
         appendDefs();
         appendRect(out_, 0, 0, canvasWidth_, canvasHeight_, "fill=\"#ffffff\"");
         appendHeader();
@@ -407,13 +417,11 @@ private:
     void plan() {
         const TileMap<T>& map = scene_.map;
         if (map.columns < 0 || map.rows < 0 ||
-            map.solid.size() !=
-                static_cast<std::size_t>(map.columns) * static_cast<std::size_t>(map.rows))
+            map.solid.size() != static_cast<std::size_t>(map.columns) * static_cast<std::size_t>(map.rows))
             throw std::invalid_argument("renderSceneSvg: the map's cells do not match its size");
         if (frames_.size() != scene_.moves.size())
-            throw std::invalid_argument("renderSceneSvg: " + std::to_string(frames_.size()) +
-                                        " frames for " + std::to_string(scene_.moves.size()) +
-                                        " moves");
+            throw std::invalid_argument("renderSceneSvg: " + std::to_string(frames_.size()) + " frames for " +
+                                        std::to_string(scene_.moves.size()) + " moves");
         tw_ = static_cast<Real>(map.tileSize.x);
         th_ = static_cast<Real>(map.tileSize.y);
         w_ = static_cast<Real>(scene_.box.size.x);
@@ -433,8 +441,7 @@ private:
             frame.endY = relY(frames_[k].position.y);
             frame.endFinite = isFinitePoint(frame.endX, frame.endY);
             if (isFinitePoint(x, y))
-                frame.stops = planStops(map, w_, h_, x, y, frame.moveX, frame.moveY,
-                                        frames_[k].contacts);
+                frame.stops = planStops(map, w_, h_, x, y, frame.moveX, frame.moveY, frames_[k].contacts);
             plans_.push_back(std::move(frame));
             x = plans_.back().endX;
             y = plans_.back().endY;
@@ -443,8 +450,9 @@ private:
 
     void layout() {
         Bounds bounds;
-        if (hasMap()) bounds.add({0, 0, static_cast<Real>(scene_.map.columns) * tw_,
-                                  static_cast<Real>(scene_.map.rows) * th_});
+        if (hasMap())
+            bounds.add({0, 0, static_cast<Real>(scene_.map.columns) * tw_,
+                        static_cast<Real>(scene_.map.rows) * th_});
         bounds.add(boxRect(startX_, startY_));
         for (std::size_t k = 0; k < plans_.size(); ++k) {
             const FramePlan& frame = plans_[k];
@@ -469,20 +477,22 @@ private:
 
         // Canvas width: the drawing, or the text if that is wider.
         Real width = std::max(view_.width + 2 * kPad, kMinCanvasWidth);
-        width = std::max(width, kTitleCharWidth *
-                                        static_cast<Real>(std::min(countCodePoints(title()),
-                                                                   kMaxTitleCodePoints + 1)) +
+        width = std::max(width, kTitleCharWidth * static_cast<Real>(std::min(countCodePoints(title()),
+                                                                             kMaxTitleCodePoints + 1)) +
                                     32);
+        width = std::max(width, kCaptionCharWidth * static_cast<Real>(countCodePoints(caption())) + 32);
         listing_ = listingLines();
         for (const std::string& line : listing_)
             width = std::max(width, kListingCharWidth * static_cast<Real>(countCodePoints(line)) + 32);
         canvasWidth_ = std::ceil(width);
-        view_.left = (canvasWidth_ - view_.width) / 2;
+        // Left-aligned like the legend and the listing, so that a longer text (a far origin
+        // prints more digits) widens the canvas without moving the drawing.
+        view_.left = kPad;
         view_.top = kHeaderHeight + kPad;
 
         legendTop_ = view_.top + view_.height + kPad + 8;
-        const auto columns = std::max<std::size_t>(
-            1, static_cast<std::size_t>((canvasWidth_ - 32) / kLegendColumnWidth));
+        const auto columns =
+            std::max<std::size_t>(1, static_cast<std::size_t>((canvasWidth_ - 32) / kLegendColumnWidth));
         legendColumns_ = columns;
         const std::size_t legendRows = (kLegendItems + columns - 1) / columns;
         listingTop_ = legendTop_ + static_cast<Real>(legendRows) * kLegendRowHeight + 18;
@@ -494,10 +504,11 @@ private:
     void appendDefs() {
         // The hatch of started-overlapping cells; a pattern is internal, so the file stays
         // self-contained.
-        out_ += "<defs>\n<pattern id=\"tilesweep-hatch\" patternUnits=\"userSpaceOnUse\" width=\"7\" "
-                "height=\"7\" patternTransform=\"rotate(45)\">\n"
-                "<rect width=\"7\" height=\"7\" fill=\"#ffd33d\" fill-opacity=\"0.55\"/>\n"
-                "<line x1=\"0\" y1=\"0\" x2=\"0\" y2=\"7\" stroke=\"";
+        out_ +=
+            "<defs>\n<pattern id=\"tilesweep-hatch\" patternUnits=\"userSpaceOnUse\" width=\"7\" "
+            "height=\"7\" patternTransform=\"rotate(45)\">\n"
+            "<rect width=\"7\" height=\"7\" fill=\"#ffd33d\" fill-opacity=\"0.55\"/>\n"
+            "<line x1=\"0\" y1=\"0\" x2=\"0\" y2=\"7\" stroke=\"";
         out_ += kOverlapStroke;
         out_ += "\" stroke-width=\"3\"/>\n</pattern>\n</defs>\n";
     }
@@ -548,8 +559,8 @@ private:
                 appendLine(out_, left, view_.y(static_cast<Real>(j) * th_), right,
                            view_.y(static_cast<Real>(j) * th_), grid);
 
-        const std::string tileStyle = std::string("fill=\"") + kTileFill + "\" stroke=\"" +
-                                      kTileStroke + "\" stroke-width=\"1\" class=\"tile-solid\"";
+        const std::string tileStyle = std::string("fill=\"") + kTileFill + "\" stroke=\"" + kTileStroke +
+                                      "\" stroke-width=\"1\" class=\"tile-solid\"";
         for (std::int32_t j = 0; j < map.rows; ++j) {
             for (std::int32_t i = 0; i < map.columns; ++i) {
                 if (!map.solid[static_cast<std::size_t>(j) * static_cast<std::size_t>(map.columns) +
@@ -572,8 +583,8 @@ private:
                        "middle", indexStyle);
         const std::int64_t stepJ = labelStep(cellH, 13);
         for (std::int64_t j = 0; j < map.rows; j += stepJ)
-            appendText(out_, left - 5, view_.y((static_cast<Real>(j) + 0.5L) * th_) + 3.5L,
-                       std::to_string(j), "end", indexStyle);
+            appendText(out_, left - 5, view_.y((static_cast<Real>(j) + 0.5L) * th_) + 3.5L, std::to_string(j),
+                       "end", indexStyle);
         out_ += "</g>\n";
     }
 
@@ -590,8 +601,8 @@ private:
             appendRect(out_, view_.x(r.x0), view_.y(r.y0), (r.x1 - r.x0) * view_.scale,
                        (r.y1 - r.y0) * view_.scale,
                        std::string("fill=\"url(#tilesweep-hatch)\" stroke=\"") + kOverlapStroke +
-                           "\" stroke-width=\"2\" class=\"overlap-tile\" data-cell=\"" +
-                           std::to_string(i) + "," + std::to_string(j) + "\"");
+                           "\" stroke-width=\"2\" class=\"overlap-tile\" data-cell=\"" + std::to_string(i) +
+                           "," + std::to_string(j) + "\"");
         }
         const Real cellW = tw_ * view_.scale;
         const Real cellH = th_ * view_.scale;
@@ -599,21 +610,21 @@ private:
             const Rect r = cellRect({i, j});
             appendRect(out_, view_.x(r.x0) + 1.5L, view_.y(r.y0) + 1.5L, cellW - 3, cellH - 3,
                        std::string("fill=\"none\" stroke=\"") + kContactRed +
-                           "\" stroke-width=\"3\" class=\"hit-tile\" data-cell=\"" +
-                           std::to_string(i) + "," + std::to_string(j) + "\"");
+                           "\" stroke-width=\"3\" class=\"hit-tile\" data-cell=\"" + std::to_string(i) + "," +
+                           std::to_string(j) + "\"");
             if (cellW >= 30 && cellH >= 16)
-                appendText(out_, view_.x(r.x0) + cellW / 2, view_.y(r.y0) + cellH - 5,
-                           std::to_string(i) + "," + std::to_string(j), "middle",
-                           std::string("font-size=\"10\" font-weight=\"bold\" ") + kFont +
-                               " fill=\"#ffffff\"");
+                appendText(
+                    out_, view_.x(r.x0) + cellW / 2, view_.y(r.y0) + cellH - 5,
+                    std::to_string(i) + "," + std::to_string(j), "middle",
+                    std::string("font-size=\"10\" font-weight=\"bold\" ") + kFont + " fill=\"#ffffff\"");
         }
     }
 
     /// Requested motion, frame ends, boxes at contacts, the start box and the paths.
     void appendMotion() {
         const bool full = plans_.size() <= kMaxFramesDrawnInFull;
-        const Rect viewRect{view_.left - kPad + 2, view_.top - kPad + 2,
-                            view_.left + view_.width + kPad - 2, view_.top + view_.height + kPad - 2};
+        const Rect viewRect{view_.left - kPad + 2, view_.top - kPad + 2, view_.left + view_.width + kPad - 2,
+                            view_.top + view_.height + kPad - 2};
 
         // The motion each frame asked for, from the start centre to start + move, clipped to
         // the view: a blocked move into a distant wall must not shrink the picture.
@@ -632,8 +643,9 @@ private:
                            std::string("stroke=\"") + kMuted +
                                "\" stroke-width=\"1.2\" stroke-dasharray=\"2 3\" class=\"request\"");
                 if (keep >= 1)
-                    appendCircle(out_, ex, ey, 3.5L,
-                                 std::string("fill=\"#ffffff\" stroke=\"") + kMuted + "\" stroke-width=\"1.2\"");
+                    appendCircle(
+                        out_, ex, ey, 3.5L,
+                        std::string("fill=\"#ffffff\" stroke=\"") + kMuted + "\" stroke-width=\"1.2\"");
             }
         }
 
@@ -653,13 +665,17 @@ private:
             }
         }
 
-        // Where the box touched, when there are few frames to look at.
+        // Where the box touched, when there are few frames to look at. A touch where the frame
+        // starts or ends (a box already resting on a floor, a head-on stop) is drawn there already.
         if (full)
             for (const FramePlan& frame : plans_)
                 for (const Stop& stop : frame.stops)
-                    appendBox(stop.x, stop.y,
-                              "fill=\"none\" " + boxStroke +
-                                  " stroke-width=\"1.2\" stroke-dasharray=\"5 3\" class=\"box-at-contact\"");
+                    if (!(stop.x == frame.startX && stop.y == frame.startY) &&
+                        !(stop.x == frame.endX && stop.y == frame.endY))
+                        appendBox(
+                            stop.x, stop.y,
+                            "fill=\"none\" " + boxStroke +
+                                " stroke-width=\"1.2\" stroke-dasharray=\"5 3\" class=\"box-at-contact\"");
 
         if (isFinitePoint(startX_, startY_))
             appendBox(startX_, startY_,
@@ -696,7 +712,7 @@ private:
     void appendContacts() {
         std::set<std::tuple<std::int32_t, std::int32_t, int, int>> drawn;
         const Real cellPx = std::min(tw_, th_) * view_.scale;
-        const Real length = std::clamp(cellPx * 0.55L, Real(16), Real(30));
+        const Real length = std::clamp(cellPx * 0.55L, Real(18), Real(34));
         for (std::size_t k = 0; k < plans_.size(); ++k) {
             for (const Stop& stop : plans_[k].stops) {
                 for (std::size_t m = stop.first; m < stop.first + stop.count; ++m) {
@@ -742,11 +758,11 @@ private:
                 ++end;
             const bool labelled = full || k == 0 || end == plans_.size();
             if (labelled && plans_[k].endFinite) {
-                const std::string text = end - k == 1 ? "end " + std::to_string(k + 1)
-                                                      : "end " + std::to_string(k + 1) + "-" +
-                                                            std::to_string(end);
-                appendText(out_, view_.x(plans_[k].endX + w_), view_.y(plans_[k].endY + h_) + 13,
-                           text, "end", style + " fill=\"" + kBoxDark + "\" class=\"label\"");
+                const std::string text = end - k == 1
+                                             ? "end " + std::to_string(k + 1)
+                                             : "end " + std::to_string(k + 1) + "-" + std::to_string(end);
+                appendText(out_, view_.x(plans_[k].endX + w_), view_.y(plans_[k].endY + h_) + 13, text, "end",
+                           style + " fill=\"" + kBoxDark + "\" class=\"label\"");
             }
             k = end;
         }
@@ -771,65 +787,86 @@ private:
         const std::string blue = kBoxBlue;
         switch (item) {
             case 0:
-                appendRect(out_, x, y, 26, 14, std::string("fill=\"") + kTileFill + "\" stroke=\"" + kTileStroke + "\"");
+                appendRect(out_, x, y, 26, 14,
+                           std::string("fill=\"") + kTileFill + "\" stroke=\"" + kTileStroke + "\"");
                 break;
             case 1:
-                appendRect(out_, x, y, 26, 14, std::string("fill=\"") + kMapFill + "\" stroke=\"" + kGrid + "\"");
+                appendRect(out_, x, y, 26, 14,
+                           std::string("fill=\"") + kMapFill + "\" stroke=\"" + kGrid + "\"");
                 appendLine(out_, x + 13, y, x + 13, y + 14, std::string("stroke=\"") + kGrid + "\"");
                 break;
             case 2:
-                appendRect(out_, x + 1, y + 1, 24, 12, "fill=\"none\" stroke=\"" + blue + "\" stroke-width=\"2\"");
+                appendRect(out_, x + 1, y + 1, 24, 12,
+                           "fill=\"none\" stroke=\"" + blue + "\" stroke-width=\"2\"");
                 break;
             case 3:
                 appendRect(out_, x + 1, y + 1, 24, 12,
-                           "fill=\"" + blue + "\" fill-opacity=\"0.13\" stroke=\"" + blue + "\" stroke-opacity=\"0.6\"");
+                           "fill=\"" + blue + "\" fill-opacity=\"0.13\" stroke=\"" + blue +
+                               "\" stroke-opacity=\"0.6\"");
                 appendCircle(out_, x + 13, y + 7, 2.2L, "fill=\"" + blue + "\"");
                 break;
             case 4:
                 appendRect(out_, x + 1, y + 1, 24, 12,
-                           "fill=\"" + blue + "\" fill-opacity=\"0.38\" stroke=\"" + kBoxDark + "\" stroke-width=\"2.5\"");
+                           "fill=\"" + blue + "\" fill-opacity=\"0.38\" stroke=\"" + kBoxDark +
+                               "\" stroke-width=\"2.5\"");
                 break;
             case 5:
-                appendRect(out_, x + 1, y + 1, 24, 12,
-                           "fill=\"none\" stroke=\"" + blue + "\" stroke-width=\"1.2\" stroke-dasharray=\"5 3\"");
+                appendRect(
+                    out_, x + 1, y + 1, 24, 12,
+                    "fill=\"none\" stroke=\"" + blue + "\" stroke-width=\"1.2\" stroke-dasharray=\"5 3\"");
                 break;
             case 6:
-                appendLine(out_, x, y + 7, x + 26, y + 7, std::string("stroke=\"") + kInk + "\" stroke-width=\"1.6\"");
+                appendLine(out_, x, y + 7, x + 26, y + 7,
+                           std::string("stroke=\"") + kInk + "\" stroke-width=\"1.6\"");
                 appendCircle(out_, x + 13, y + 7, 3, std::string("fill=\"") + kContactRed + "\"");
                 break;
             case 7:
-                appendLine(out_, x, y + 7, x + 22, y + 7,
-                           std::string("stroke=\"") + kMuted + "\" stroke-width=\"1.2\" stroke-dasharray=\"2 3\"");
+                appendLine(
+                    out_, x, y + 7, x + 22, y + 7,
+                    std::string("stroke=\"") + kMuted + "\" stroke-width=\"1.2\" stroke-dasharray=\"2 3\"");
                 appendCircle(out_, x + 22, y + 7, 3.5L,
                              std::string("fill=\"#ffffff\" stroke=\"") + kMuted + "\" stroke-width=\"1.2\"");
                 break;
             case 8:
                 appendRect(out_, x + 1.5L, y + 1.5L, 23, 11,
-                           std::string("fill=\"") + kTileFill + "\" stroke=\"" + kContactRed + "\" stroke-width=\"3\"");
+                           std::string("fill=\"") + kTileFill + "\" stroke=\"" + kContactRed +
+                               "\" stroke-width=\"3\"");
                 break;
             case 9:
                 appendArrowShape(out_, x + 2, y + 7, 1, 0, 24, kContactRed);
                 break;
             default:
                 appendRect(out_, x, y, 26, 14,
-                           std::string("fill=\"url(#tilesweep-hatch)\" stroke=\"") + kOverlapStroke + "\" stroke-width=\"2\"");
+                           std::string("fill=\"url(#tilesweep-hatch)\" stroke=\"") + kOverlapStroke +
+                               "\" stroke-width=\"2\"");
                 break;
         }
     }
 
     [[nodiscard]] std::string legendText(std::size_t item) const {
         switch (item) {
-            case 0: return "solid tile";
-            case 1: return "empty cell (grid)";
-            case 2: return "box at the start";
-            case 3: return "box at a frame end";
-            case 4: return "box at the last frame end";
-            case 5: return "box where it touched";
-            case 6: return "path of the box centre, \u25CF contact";
-            case 7: return "requested move (start + move)";
-            case 8: return "tile hit";
-            case 9: return "contact normal, from the face hit";
-            default: return "started overlapping";
+            case 0:
+                return "solid tile";
+            case 1:
+                return "empty cell (grid)";
+            case 2:
+                return "box at the start";
+            case 3:
+                return "box at a frame end";
+            case 4:
+                return "box at the last frame end";
+            case 5:
+                return "box where it touched";
+            case 6:
+                return "path of the box centre, \u25CF contact";
+            case 7:
+                return "requested move (start + move)";
+            case 8:
+                return "tile hit";
+            case 9:
+                return "contact normal, from the face hit";
+            default:
+                return "started overlapping";
         }
     }
 
@@ -858,13 +895,13 @@ private:
         text += " \u00B7 tile " + formatNumber(map.tileSize.x) + " \u00D7 " + formatNumber(map.tileSize.y) +
                 ", origin " + formatPair(map.origin.x, map.origin.y) + " \u00B7 ";
         if (hasMap())
-            text += "map " + std::to_string(map.columns) + " \u00D7 " + std::to_string(map.rows) + " cells, " +
-                    std::to_string(solid) + " solid";
+            text += "map " + std::to_string(map.columns) + " \u00D7 " + std::to_string(map.rows) +
+                    " cells, " + std::to_string(solid) + " solid";
         else
             text += "empty map (no cells)";
-        text += " \u00B7 box " + formatNumber(scene_.box.size.x) + " \u00D7 " + formatNumber(scene_.box.size.y) +
-                " \u00B7 " + std::to_string(frames_.size()) + (frames_.size() == 1 ? " frame" : " frames") +
-                " \u00B7 y grows downward";
+        text += " \u00B7 box " + formatNumber(scene_.box.size.x) + " \u00D7 " +
+                formatNumber(scene_.box.size.y) + " \u00B7 " + std::to_string(frames_.size()) +
+                (frames_.size() == 1 ? " frame" : " frames") + " \u00B7 y grows downward";
         return text;
     }
 
@@ -911,8 +948,12 @@ private:
     // ---- small helpers ----
 
     [[nodiscard]] bool hasMap() const { return scene_.map.columns > 0 && scene_.map.rows > 0; }
-    [[nodiscard]] Real relX(T x) const { return static_cast<Real>(x) - static_cast<Real>(scene_.map.origin.x); }
-    [[nodiscard]] Real relY(T y) const { return static_cast<Real>(y) - static_cast<Real>(scene_.map.origin.y); }
+    [[nodiscard]] Real relX(T x) const {
+        return static_cast<Real>(x) - static_cast<Real>(scene_.map.origin.x);
+    }
+    [[nodiscard]] Real relY(T y) const {
+        return static_cast<Real>(y) - static_cast<Real>(scene_.map.origin.y);
+    }
     [[nodiscard]] Rect boxRect(Real x, Real y) const { return {x, y, x + w_, y + h_}; }
     [[nodiscard]] Rect cellRect(Cell cell) const {
         const auto i = static_cast<Real>(cell.i);
