@@ -23,7 +23,7 @@ for fault in "${faults[@]}"; do
     start=$SECONDS
     TILESWEEP_PROPERTY_CASES=$cases TILESWEEP_CORPUS_DIR="$corpus" \
         "$build/properties/tilesweep_properties" --gtest_filter='Suite/*' >"$build/run.log" 2>&1 || true
-    failed=$(grep -o 'FAILED  \] Suite/Property.holds/[A-Za-z_]*' "$build/run.log" | sed 's/.*holds\///' | sort -u)
+    failed=$( (grep -o 'FAILED  \] Suite/Property.holds/[A-Za-z_]*' "$build/run.log" || true) | sed 's/.*holds\///' | sort -u)
     row=$(python3 - "$corpus" $failed <<'PY'
 import glob, json, os, sys
 corpus, failed = sys.argv[1], sys.argv[2:]
