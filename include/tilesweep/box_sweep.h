@@ -38,7 +38,8 @@ struct BoxSweepOutput {
     BoxSweepState state = BoxSweepState::InvalidInput;
     Axis axis = Axis::Y;  ///< contact axis, when Blocks: the later entry; on an exact tie the
                           ///< exposed face if exactly one is, otherwise y
-    T time = 0;           ///< time of impact in [0, 1), rounded to nearest, when Blocks
+    T time = 0;           ///< time of impact, when Blocks: the exact one, in [0, 1), rounded to
+                          ///< nearest (so 1 for a hit within half an ulp of the end)
 };
 
 /// Sweeps one box against one tile. Exact decisions; never NaN in the output.

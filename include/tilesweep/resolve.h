@@ -37,7 +37,8 @@ template <class T>
 struct Contact {
     Cell tile;      ///< the cell that was hit
     Normal normal;  ///< points out of the tile face that was hit, against the motion
-    T time;         ///< fraction of the whole frame elapsed at the hit, in [0, 1), rounded to nearest
+    T time;         ///< fraction of the whole frame elapsed at the hit: the exact one, in [0, 1),
+                    ///< rounded to nearest (so 1 for a hit within half an ulp of the frame end)
 };
 
 /// What one frame moves: the box from its position by `displacement` through `map`.

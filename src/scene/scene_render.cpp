@@ -32,15 +32,15 @@ constexpr Real kDrawHeight = 520;
 constexpr Real kPad = 40;              // around the drawing: room for indices and arrows
 constexpr Real kHeaderHeight = 60;     // title and caption
 constexpr Real kMinCanvasWidth = 700;  // so that the legend and the listing fit
-constexpr Real kMaxPx = 1e7;           // printed coordinates are clamped to this, see appendPx
+constexpr Real kMaxPx = 1e7L;          // printed coordinates are clamped to this, see appendPx
 constexpr Real kMinGridSpacing = 4;    // below this a grid is grey noise, so it is left out
 constexpr Real kLegendColumnWidth = 240;
 constexpr Real kLegendRowHeight = 20;
 constexpr Real kListingLineHeight = 15;
 // Rough glyph advances, to size the canvas around text (there is no font metrics in SVG).
 constexpr Real kTitleCharWidth = 10;     // 17px bold sans-serif
-constexpr Real kCaptionCharWidth = 6.9;  // 12px sans-serif
-constexpr Real kListingCharWidth = 6.7;  // 11px monospace
+constexpr Real kCaptionCharWidth = 6.9L; // 12px sans-serif
+constexpr Real kListingCharWidth = 6.7L; // 11px monospace
 
 // Past this many frames the picture switches to its compact form: frame ends in between become
 // dots, and the per-frame extras (requested motion, box at contact) are left out.
