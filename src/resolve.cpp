@@ -108,7 +108,8 @@ struct StepHits {
 template <class T, class Num>
 class FrameSolver {
 public:
-    /// `d` holds the inputs' dyadic forms in the order of kInputs (solveOnLattice).
+    /// `d` holds the inputs' dyadic forms: box position x, y, size x, y, displacement x, y, map
+    /// origin x, y, tile size x, y (solveOnLattice).
     FrameSolver(const SweepInput<T>& input, const detail::Dyadic* d, int latticeExponent) noexcept
         : map_(input.map), exponent_(latticeExponent) {
         grid_[0] = {lattice(d[6]), lattice(d[8]), input.map.columns};

@@ -140,11 +140,6 @@ struct WideInt {
         return -1;
     }
 
-    /// Bit `index` of a non-negative value.
-    [[nodiscard]] bool bit(int index) const noexcept {
-        return ((limb[index / 64] >> (index % 64)) & 1) != 0;
-    }
-
     /// This non-negative value shifted left by `bits` (the result must fit).
     [[nodiscard]] WideInt shiftedLeft(int bits) const noexcept {
         WideInt r = fromInt(0);
