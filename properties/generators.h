@@ -34,6 +34,7 @@ enum class Family : std::uint8_t {
     SeamLanding, ///< landing straddling the seam between two floor tiles
     Gap,         ///< a box exactly as wide as a one-tile gap, or one ulp wider
     Resting,     ///< resting on a floor under gravity for many frames, possibly sliding
+    FarSubUlp,   ///< far from the origin, moves of a few ulps past a tile corner: rounding at work
     Mixed,
 };
 
@@ -48,6 +49,7 @@ enum class Family : std::uint8_t {
         case Family::SeamLanding: return "seam-landing";
         case Family::Gap: return "gap";
         case Family::Resting: return "resting";
+        case Family::FarSubUlp: return "far-sub-ulp";
         case Family::Mixed: return "mixed";
     }
     return "?";
@@ -117,10 +119,10 @@ rc::Gen<T> genDisplacement(int tile, T at) {
 }
 
 template <class T>
-Scene<T> makeScene(const Grid<T>& g, double ox, double oy, int tile, Box<T> box, std::vector<Vec2<T>> moves) {
+Scene<T> makeScene(const Grid<T>& g, double ox, double oy, double tile, Box<T> box, std::vector<Vec2<T>> moves) {
     Scene<T> s;
     s.map.origin = {static_cast<T>(ox), static_cast<T>(oy)};
-    s.map.tileSize = {T(tile), T(tile)};
+    s.map.tileSize = {static_cast<T>(tile), static_cast<T>(tile)};
     s.map.columns = g.columns;
     s.map.rows = g.rows;
     s.map.solid = g.solid;
@@ -131,7 +133,7 @@ Scene<T> makeScene(const Grid<T>& g, double ox, double oy, int tile, Box<T> box,
 
 /// Clears the cells the box overlaps (or touches) at its start, so it starts free.
 template <class T>
-void clearUnder(Grid<T>& g, double ox, double oy, int tile, Box<T> box) {
+void clearUnder(Grid<T>& g, double ox, double oy, double tile, Box<T> box) {
     const double x0 = (static_cast<double>(box.pos.x) - ox) / tile;
     const double y0 = (static_cast<double>(box.pos.y) - oy) / tile;
     const double x1 = x0 + static_cast<double>(box.size.x) / tile;
@@ -332,12 +334,50 @@ rc::Gen<GeneratedScene<T>> genFloorScene(Family family) {
     });
 }
 
+/// Far from the origin (2^20 in float, 2^49 in double, where one ulp is 1/8), a 0.75 tile and a
+/// box of decimal size next to one of its corners, moving by a few ulps on each axis, either
+/// sign: where rounding toward the start decides what the box ends up overlapping.
+template <class T>
+rc::Gen<GeneratedScene<T>> genFarSubUlpScene() {
+    return rc::gen::exec([] {
+        const double far = std::is_same<T, float>::value ? 1048576.0 : 562949953421312.0;
+        const double ulp = 0.125;
+        const double tile = 0.75;
+        Grid<T> g;
+        g.columns = 5;
+        g.rows = 5;
+        g.solid.assign(25, 0);
+        g.set(2, 2, true);
+        for (int k = 0; k < 3; ++k) g.set(*rc::gen::inRange(0, 5), *rc::gen::inRange(0, 5), *rc::gen::arbitrary<bool>());
+        const double ox = far * *rc::gen::element(1, -1);
+        const double oy = far / 2 * *rc::gen::element(1, -1);
+        const T w = static_cast<T>(*rc::gen::inRange(1, 100) / 100.0);
+        const T h = static_cast<T>(*rc::gen::inRange(1, 100) / 100.0);
+        // The box's corner within a couple of ulps of one of the tile's corners.
+        const double cx = ox + (2 + *rc::gen::element(0, 1)) * tile + *rc::gen::inRange(-3, 4) * ulp;
+        const double cy = oy + (2 + *rc::gen::element(0, 1)) * tile + *rc::gen::inRange(-3, 4) * ulp;
+        const Box<T> box{{static_cast<T>(cx - (*rc::gen::arbitrary<bool>() ? static_cast<double>(w) : 0.0)),
+                          static_cast<T>(cy - (*rc::gen::arbitrary<bool>() ? static_cast<double>(h) : 0.0))},
+                         {w, h}};
+        // One axis moves less than an ulp (so it rounds back to its start unless it is stopped),
+        // the other a few ulps: the motion that lets rounding undo a corner miss.
+        const auto sign = [] { return *rc::gen::element(1.0, -1.0); };
+        const double slow = sign() * *rc::gen::inRange(1, 100) / 100.0 * ulp;
+        const double fast = sign() * (*rc::gen::inRange(5, 40) * ulp / 10.0 + *rc::gen::inRange(0, 7) / 1000.0);
+        const bool slowOnX = *rc::gen::arbitrary<bool>();
+        const auto move = [&](bool xAxis) { return static_cast<T>(xAxis == slowOnX ? slow : fast); };
+        clearUnder(g, ox, oy, tile, box);
+        return GeneratedScene<T>{makeScene(g, ox, oy, tile, box, {{move(true), move(false)}}), Family::FarSubUlp, true};
+    });
+}
+
 }  // namespace detail
 
 /// Scenes of one family, or of all of them (`Mixed`).
 template <class T>
 rc::Gen<GeneratedScene<T>> genScene(Family family) {
     using detail::genCornerScene;
+    using detail::genFarSubUlpScene;
     using detail::genFloorScene;
     using detail::genLayoutScene;
     switch (family) {
@@ -350,6 +390,7 @@ rc::Gen<GeneratedScene<T>> genScene(Family family) {
         case Family::SeamLanding:
         case Family::Gap:
         case Family::Resting: return genFloorScene<T>(family);
+        case Family::FarSubUlp: return genFarSubUlpScene<T>();
         case Family::Mixed: break;
     }
     return rc::gen::weightedOneOf<GeneratedScene<T>>({
@@ -362,6 +403,7 @@ rc::Gen<GeneratedScene<T>> genScene(Family family) {
         {2, genFloorScene<T>(Family::SeamLanding)},
         {1, genFloorScene<T>(Family::Gap)},
         {2, genFloorScene<T>(Family::Resting)},
+        {1, genFarSubUlpScene<T>()},
     });
 }
 

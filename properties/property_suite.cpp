@@ -154,6 +154,8 @@ void addAll(std::vector<Property>& out) {
     addClaim<T>(out, "mirroringYMirrorsTheResult", "mirroringYMirrorsTheResult", Family::Mixed, {{"hit", 0.2}});
     addClaim<T>(out, "translatingByWholeTilesKeepsDecisions", "translatingByWholeTilesKeepsDecisions", Family::Mixed,
                 {{"hit", 0.2}});
+    addClaim<T>(out, "roundingNearFarCornersStaysOutOfHitTiles", "neverEndsInsideATileItDidNotStartIn",
+                Family::FarSubUlp, {{"far-origin", 0.9}});
     addClaim<T>(out, "restingContactIsStable", "restingContactIsStable", Family::Resting, {{"touch-at-0", 0.3}});
     addClaim<T>(out, "slidingAlongFloorNeverSnags", "slidingAlongFloorNeverSnags", Family::SeamLanding,
                 {{"seam", 0.1}, {"touch-at-0", 0.2}});

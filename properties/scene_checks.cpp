@@ -361,6 +361,16 @@ const Claim<T>* findClaim(const std::string& name) {
     return nullptr;
 }
 
+namespace {
+
+/// The exact frames under the contract's rounding (what every resolver must return).
+template <class T>
+std::vector<FrameResult<T>> toFrameResultsForTags(const Scene<T>& scene) {
+    return oracle::resolveSceneExactRounded(scene);
+}
+
+}  // namespace
+
 template <class T>
 std::vector<std::string> classifyScene(const Scene<T>& scene) {
     std::vector<std::string> tags;
@@ -382,7 +392,21 @@ std::vector<std::string> classifyScene(const Scene<T>& scene) {
             if (k > 0 && f.contacts[k - 1].step == c.step && f.contacts[k - 1].normal == c.normal) seam = true;
         }
     }
+    // The rounded end overlapping a tile the frame neither started in nor hit: the case where the
+    // contract's rounding undoes a corner miss (see neverEndsInsideATileItDidNotStartIn).
+    const std::vector<FrameResult<T>> rounded = toFrameResultsForTags(scene);
+    const oracle::ExactTileMap map = oracle::toExact(scene.map);
+    bool roundingOverlap = false;
+    for (const FrameResult<T>& f : rounded) {
+        const oracle::ExactRect box = oracle::rectOf(oracle::toExact(Box<T>{f.position, scene.box.size}));
+        for (std::int32_t j = 0; j < map.rows && !roundingOverlap; ++j)
+            for (std::int32_t i = 0; i < map.columns && !roundingOverlap; ++i)
+                roundingOverlap = map.isSolid(i, j) && oracle::overlaps(box, map.tileRect(i, j)) &&
+                                  std::find(f.startOverlaps.begin(), f.startOverlaps.end(), Cell{i, j}) ==
+                                      f.startOverlaps.end();
+    }
     tags.push_back(hit ? "hit" : "miss");
+    if (roundingOverlap) tags.push_back("rounding-overlap");
     if (tie) tags.push_back("tie");
     if (touch0) tags.push_back("touch-at-0");
     if (twoStep) tags.push_back("two-step");
