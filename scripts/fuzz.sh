@@ -20,19 +20,9 @@ targets=("$@")
 ((${#targets[@]})) || targets=(scene_reader resolver)
 build=${TILESWEEP_FUZZ_BUILD_DIR:-$root/build-fuzz}
 
-# clang and its sanitizer and libFuzzer runtimes, from Debian's packages, when missing.
-packages=(clang libclang-rt-14-dev cmake ninja-build nlohmann-json3-dev)
-missing=()
-for package in "${packages[@]}"; do
-    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
-done
-if ((${#missing[@]})); then
-    echo "fuzz: installing ${missing[*]}" >&2
-    sudo_cmd=()
-    [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
-    "${sudo_cmd[@]}" apt-get update -qq
-    DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
+# clang and its sanitizer and libFuzzer runtimes, from Debian's packages, when missing, with
+# what every build needs (scripts/setup.sh).
+TILESWEEP_EXTRA_PACKAGES="clang libclang-rt-14-dev" source "$root/scripts/setup.sh"
 
 if [ "${TILESWEEP_FUZZ_NO_BUILD:-0}" != 1 ]; then
     # TILESWEEP_WERROR=OFF: parts of the library outside fuzz/ are written for g++ and draw clang

@@ -11,6 +11,10 @@ TILESWEEP_PACKAGES=(
     libbenchmark-dev libbox2d-dev        # benchmarks, and Box2D as the peer they measure against
 )
 
+# Scripts that need more (scripts/fuzz.sh: clang) name it in TILESWEEP_EXTRA_PACKAGES.
+read -r -a extra <<<"${TILESWEEP_EXTRA_PACKAGES:-}"
+TILESWEEP_PACKAGES+=("${extra[@]}")
+
 missing=()
 for package in "${TILESWEEP_PACKAGES[@]}"; do
     dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
