@@ -25,10 +25,9 @@ build=${TILESWEEP_FUZZ_BUILD_DIR:-$root/build-fuzz}
 TILESWEEP_EXTRA_PACKAGES="clang libclang-rt-14-dev" source "$root/scripts/setup.sh"
 
 if [ "${TILESWEEP_FUZZ_NO_BUILD:-0}" != 1 ]; then
-    # TILESWEEP_WERROR=OFF: parts of the library outside fuzz/ are written for g++ and draw clang
-    # warnings; fuzz/CMakeLists.txt keeps -Werror on the fuzz targets themselves.
+    # Warnings are errors under clang too, as in the g++ builds.
     CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-        -DTILESWEEP_BUILD_FUZZ=ON -DTILESWEEP_SANITIZE=ON -DTILESWEEP_WERROR=OFF \
+        -DTILESWEEP_BUILD_FUZZ=ON -DTILESWEEP_SANITIZE=ON \
         -DTILESWEEP_BUILD_TESTS=OFF -DTILESWEEP_BUILD_PROPERTIES=OFF -DTILESWEEP_BUILD_ORACLE=OFF \
         -DTILESWEEP_BUILD_BENCH=OFF -DTILESWEEP_BUILD_CLI=OFF -DTILESWEEP_BUILD_AUDIT=OFF \
         -DTILESWEEP_FUZZ_FLAGS="${TILESWEEP_FUZZ_FLAGS:-}" >/dev/null

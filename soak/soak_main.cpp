@@ -302,7 +302,7 @@ void run(const Options& options, Counters& counters, long& rssStartKb) {
 }
 
 bool parseOptions(int argc, char** argv, Options& options) {
-    for (int a = 1; a < argc; ++a) {
+    for (int a = 1; a < argc; a += 2) {  // every option takes a value
         const std::string arg = argv[a];
         const char* value = a + 1 < argc ? argv[a + 1] : nullptr;
         if (value == nullptr) return false;
@@ -320,7 +320,6 @@ bool parseOptions(int argc, char** argv, Options& options) {
         } else {
             return false;
         }
-        ++a;
     }
     return options.seconds >= 0 && options.walkers > 0;
 }
