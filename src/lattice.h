@@ -204,11 +204,12 @@ namespace tilesweep::detail {
 }
 
 /// Calls f(Num{}) with the narrowest of the integer types this library instantiates that holds
-/// `bits` signed bits: native __int128 (typical float and integer scenes), 256 (typical double
-/// scenes), 640 (any float scene) or 4480 (any double scene, subnormals to the largest finite).
+/// `bits` signed bits: native __int128 (typical float and integer scenes), 192 or 256 (typical
+/// double scenes), 640 (any float scene) or 4480 (any double scene, subnormals to the largest finite).
 template <class F>
 decltype(auto) withWidth(int bits, F&& f) {
     if (bits < 127) return f(Int128::fromInt(0));
+    if (bits < 192) return f(WideInt<3>::fromInt(0));
     if (bits < 256) return f(WideInt<4>::fromInt(0));
     if (bits < 640) return f(WideInt<10>::fromInt(0));
     return f(WideInt<70>::fromInt(0));
