@@ -141,7 +141,7 @@ void addAll(std::vector<Property>& out) {
     addClaim<T>(out, "settlesCornerTiesByExposedFace", "matchesExactReferenceBitForBit", Family::CornerTie,
                 {{"tie", 0.3}});
     addClaim<T>(out, "broadphaseOffersEveryBlockingTile", "matchesExactReferenceBitForBit", Family::Random,
-                {{"hit", 0.15}, {"two-step", 0.02}});
+                {{"hit", 0.10}, {"two-step", 0.02}});  // about 18.6% on average, 14.4% in the worst of 4,700 rounds
     addClaim<T>(out, "neverEndsInsideATileItDidNotStartIn", "neverEndsInsideATileItDidNotStartIn", Family::Mixed,
                 {{"hit", 0.2}});
     addClaim<T>(out, "stopsJustTouching", "stopsJustTouching", Family::Mixed, {{"hit", 0.2}});
