@@ -11,10 +11,13 @@
 //   DOUBLE_PREDICATE   entry times compared in plain double        (axis_sweep.h)
 //   ROUND_NEAREST      positions rounded to nearest, not toward the start (resolve.cpp)
 //   BROADPHASE_SHORT   the broadphase's secondary range one cell short   (resolve.cpp)
+//   OLD_ROUNDING_RULE  positions always rounded toward the start: the contract before its
+//                      amendment, which can leave the far edge inside a missed corner (resolve.cpp)
 //   FMA                -ffp-contract=fast instead of off           (cmake/warnings.cmake)
 
 #if defined(TILESWEEP_FAULT_TOUCH_OVERLAPS) || defined(TILESWEEP_FAULT_NO_CORNER_MISS) ||   \
     defined(TILESWEEP_FAULT_TIE_REVERSED) || defined(TILESWEEP_FAULT_DOUBLE_PREDICATE) || \
-    defined(TILESWEEP_FAULT_ROUND_NEAREST) || defined(TILESWEEP_FAULT_BROADPHASE_SHORT) || defined(TILESWEEP_FAULT_FMA)
+    defined(TILESWEEP_FAULT_ROUND_NEAREST) || defined(TILESWEEP_FAULT_BROADPHASE_SHORT) || defined(TILESWEEP_FAULT_FMA) || \
+    defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE)
 #define TILESWEEP_FAULT_INJECTED 1
 #endif

@@ -136,6 +136,31 @@ template <class T, class Num>
     return v.isNegative() ? -r : r;
 }
 
+/// a mod b, floored (in [0, b)), for b > 0, exactly. The quotient is estimated in floating
+/// point and taken off a, 40 bits at a time while it is huge, then the last units are settled
+/// by exact comparisons. Rarely used: the rounding rule's grid-line test (resolve.cpp).
+template <class Num>
+[[nodiscard]] inline Num floorModulo(Num a, const Num& b) noexcept {
+    for (;;) {
+        int ea = 0;
+        int eb = 0;
+        const double ma = a.approximate(ea);
+        const double mb = b.approximate(eb);
+        if (ma == 0) return a;
+        const double ratio = ma / mb;  // a / b = ratio * 2^shift, |ratio| in (0.5, 2), error < 2^-50
+        const int shift = ea - eb;
+        if (shift <= 40) {
+            // |a / b| < 2^41: the estimate is off by less than one unit.
+            a = a - b * static_cast<std::int64_t>(std::floor(std::ldexp(ratio, shift)));
+            while (a.isNegative()) a = a + b;
+            while (a >= b) a = a - b;
+            return a;
+        }
+        // Take off 40 leading bits of the quotient, truncated: |a| shrinks by 2^38 or more.
+        a = a - b * Num::fromShifted(static_cast<std::int64_t>(std::ldexp(ratio, 40)), shift - 40);
+    }
+}
+
 /// Rounds num / den to T, to nearest (ties to even), for 0 <= num and 0 < den.
 template <class T, class Num>
 [[nodiscard]] inline T roundRatioToNearest(const Num& num, const Num& den) noexcept {

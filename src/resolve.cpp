@@ -14,7 +14,8 @@
 //
 // Structure. A frame is scaled onto an integer lattice (lattice.h) and solved there exactly by
 // FrameSolver, then the final position and the frame times are rounded back to T: positions
-// toward the start, times to nearest. The contract's loop runs at most two steps, and the
+// toward the start (or down, where the far edge would cross a grid line: roundFinal), times to
+// nearest. The contract's loop runs at most two steps, and the
 // second is always a one-axis move: after the first contact at time s, the motion on the
 // contact axes is zeroed; if both were contact axes nothing moves, otherwise only the free axis
 // moves on, from where it was at s, while the contact axis stays exactly touching. In the
@@ -66,6 +67,18 @@ struct GridAxis {
         return q;
     }
     [[nodiscard]] std::int64_t cellOf(const Num& coord) const noexcept { return cellOf(coord, Num::fromInt(1)); }
+
+    /// Whether a grid line origin + k*tile (k any integer, on the map or off it) lies in
+    /// [low, high). One exact remainder; the map is not scanned.
+    [[nodiscard]] bool hasLineIn(const Num& low, const Num& high) const noexcept {
+        if (!(low < high)) return false;
+        const Num width = high - low;
+        if (width >= tile) return true;
+        // The last line below high lies `back` below it.
+        const Num r = detail::floorModulo(high - origin, tile);
+        const Num back = r.isZero() ? tile : r;
+        return back <= width;
+    }
 };
 
 /// The hits of one step: all tiles at the earliest time of impact found so far.
@@ -159,7 +172,7 @@ public:
         }
         result.contactCount = total;
         result.status = total > 0 ? Status::Blocked : Status::Moved;
-        result.position = {roundTowardStart(finalPos[0], 0), roundTowardStart(finalPos[1], 1)};
+        result.position = {roundFinal(finalPos[0], 0), roundFinal(finalPos[1], 1)};
         return result;
     }
 
@@ -168,7 +181,7 @@ private:
     static Fraction<Num> zeroTime() noexcept { return {Num::fromInt(0), Num::fromInt(1)}; }
 
     /// The exact final coordinate, rounded to the T between the start and it that is nearest
-    /// to it (CONTRACT.md): toward -inf when it lies after the start, toward +inf before.
+    /// to it: toward -inf when it lies after the start, toward +inf before.
     T roundTowardStart(const Num& exact, int axis) const noexcept {
         const int side = compare(exact, motion_[axis].low);
         if (side == 0) return start_[axis];
@@ -183,6 +196,32 @@ private:
                                                                  : MagnitudeRounding::AwayFromZero;
 #endif
         return detail::roundLattice<T>(exact, exponent_, mode);
+    }
+
+    /// The contract's rounding of a final coordinate ("Positions"): toward the start, except on
+    /// an axis that moved toward minus infinity when that would carry the far edge (x + w) over
+    /// a grid line the exact far edge had not passed; then toward minus infinity. Rounding down
+    /// never carries the near edge over a tile edge (edges are representable), and the far edge
+    /// then stays short of every line the exact one had not reached, so the rounded box overlaps
+    /// no tile the exact one does not. When nothing finite lies at or below the exact value, the
+    /// rounding toward the start stands.
+    T roundFinal(const Num& exact, int axis) const noexcept {
+        const T towardStart = roundTowardStart(exact, axis);
+#if defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE)
+        return towardStart;  // deliberate fault: the contract's rule before the amendment
+#else
+        const AxisMotion<Num>& m = motion_[axis];
+        if (!(exact < m.low)) return towardStart;  // not a move toward minus infinity
+        // The rounded value is a T between the exact value and the start: on the lattice.
+        const Num rounded = lattice(detail::decompose(towardStart));
+        if (rounded == exact) return towardStart;
+        const Num size = m.high - m.low;
+        if (!grid_[axis].hasLineIn(exact + size, rounded + size)) return towardStart;
+        const bool negative = exact.isNegative();
+        const T down = detail::roundLattice<T>(
+            exact, exponent_, negative ? MagnitudeRounding::AwayFromZero : MagnitudeRounding::TowardZero);
+        return std::isfinite(down) ? down : towardStart;
+#endif
     }
 
     /// Solid cells the box overlaps (open) at the start, by row then column.

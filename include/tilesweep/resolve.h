@@ -12,8 +12,11 @@
 // in [0, 1]. At most two steps: the first contact (every tile hit at that earliest time is taken
 // at once) zeroes the motion on its contact axes, and the rest of the motion slides on. Every
 // decision (hit or miss, which tiles, contact axis, normal) is exact; the final position is the
-// exact one rounded toward the start, per axis, so the box never moves past the exact motion and
-// never ends inside a tile it did not start inside.
+// exact one rounded toward the start, per axis, except that an axis moving toward minus infinity
+// rounds down when rounding back would carry the box's far edge over a grid line (CONTRACT.md,
+// "Positions"). So the box never ends inside a tile it did not start inside, stops touching a
+// face it hits or less than an ulp short, and never moves past the exact motion but by less
+// than an ulp on such an axis.
 //
 // Usage, one frame per game tick:
 //

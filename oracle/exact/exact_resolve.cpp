@@ -75,6 +75,9 @@ ExactFrame resolveFrame(const ExactTileMap& map, const std::vector<SolidTile>& t
                         const ExactVec2& displacement) {
     ExactFrame frame;
     frame.start = box.pos;
+    frame.size = box.size;
+    frame.gridOrigin = map.origin;
+    frame.tileSize = map.tileSize;
 
     const ExactRect startRect = rectOf(box);
     for (const SolidTile& tile : tiles) {
@@ -156,7 +159,9 @@ FrameResult<T> roundFrame(const ExactFrame& frame) {
     // bits and all, so a -0 start stays -0.
     const T startX = frame.startXIsNegativeZero ? -T(0) : fromRational<T>(frame.start.x, Rounding::NearestEven);
     const T startY = frame.startYIsNegativeZero ? -T(0) : fromRational<T>(frame.start.y, Rounding::NearestEven);
-    result.position = {roundToward<T>(frame.position.x, startX), roundToward<T>(frame.position.y, startY)};
+    result.position = {
+        roundFinalCoordinate<T>(frame.position.x, startX, frame.size.x, frame.gridOrigin.x, frame.tileSize.x),
+        roundFinalCoordinate<T>(frame.position.y, startY, frame.size.y, frame.gridOrigin.y, frame.tileSize.y)};
     result.contacts.reserve(frame.contacts.size());
     for (const ExactContact& c : frame.contacts) {
         result.contacts.push_back({c.tile, c.normal, fromRational<T>(c.time, Rounding::NearestEven)});

@@ -43,6 +43,9 @@ struct ExactFrame {
     ExactVec2 start;                    ///< the position the frame started from (a T value, exactly)
     bool startXIsNegativeZero = false;  ///< the start's x was -0 (a rational has no sign of zero)
     bool startYIsNegativeZero = false;  ///< likewise y; a position equal to the start keeps its bits
+    ExactVec2 size;                     ///< the box's size, for the rounding rule's far edge
+    ExactVec2 gridOrigin;               ///< the map's origin and tile size: the grid lines of
+    ExactVec2 tileSize;                 ///< the rounding rule, on and off the map
     ExactVec2 position;                 ///< the exact final position
     std::vector<ExactContact> contacts; ///< step by step; within a step by row, then column
     std::vector<Cell> startOverlaps;    ///< solid cells overlapped at the start, by row then column
@@ -53,13 +56,15 @@ struct ExactFrame {
                                            const ExactVec2& displacement);
 
 /// Resolves every frame of a scene exactly. Frame k > 0 starts at the position frame k - 1
-/// returned rounded to T toward its start, per axis (what a T resolver hands to the next frame).
+/// returned under the contract's rounding (roundFrame: what a T resolver hands to the next frame).
 template <class T>
 [[nodiscard]] std::vector<ExactFrame> resolveSceneExact(const Scene<T>& scene);
 
 /// One exact frame under the contract's rounding: the position rounded per axis toward the
-/// frame's start (the representable value nearest the exact one between start and it), frame
-/// times rounded to nearest, ties to even. Decisions (tiles, normals, order) are unchanged.
+/// frame's start (the representable value nearest the exact one between start and it), or
+/// toward minus infinity where that would carry the box's far edge over a grid line the exact
+/// far edge had not passed (roundFinalCoordinate); frame times rounded to nearest, ties to even.
+/// Decisions (tiles, normals, order) are unchanged.
 template <class T>
 [[nodiscard]] FrameResult<T> roundFrame(const ExactFrame& frame);
 

@@ -138,9 +138,41 @@ T roundToward(const Rational& q, T from) {
     return fromRational<T>(q, q < start ? Rounding::TowardPositive : Rounding::TowardNegative);
 }
 
+bool gridLineIn(const Rational& low, const Rational& high, const Rational& gridOrigin, const Rational& tile) {
+    if (!(low < high)) {
+        return false;
+    }
+    // The first grid line at or above `low`: k = ceil((low - gridOrigin) / tile).
+    const Rational steps = (low - gridOrigin) / tile;
+    Integer k = numerator(steps) / denominator(steps);  // truncates toward zero
+    if (Rational(k) < steps) {
+        k += 1;
+    }
+    return gridOrigin + Rational(k) * tile < high;
+}
+
+template <class T>
+T roundFinalCoordinate(const Rational& exact, T from, const Rational& size, const Rational& gridOrigin,
+                       const Rational& tile) {
+    const T towardStart = roundToward<T>(exact, from);
+    const Rational start = toRational(from);
+    if (!(exact < start)) {
+        return towardStart;  // not a move toward minus infinity: the rule is plain
+    }
+    const Rational rounded = toRational(towardStart);
+    if (!gridLineIn(exact + size, rounded + size, gridOrigin, tile)) {
+        return towardStart;
+    }
+    const T down = fromRational<T>(exact, Rounding::TowardNegative);
+    return std::isfinite(down) ? down : towardStart;
+}
+
 template float fromRational<float>(const Rational&, Rounding);
 template double fromRational<double>(const Rational&, Rounding);
 template float roundToward<float>(const Rational&, float);
 template double roundToward<double>(const Rational&, double);
+template float roundFinalCoordinate<float>(const Rational&, float, const Rational&, const Rational&, const Rational&);
+template double roundFinalCoordinate<double>(const Rational&, double, const Rational&, const Rational&,
+                                             const Rational&);
 
 }  // namespace tilesweep::oracle

@@ -43,9 +43,27 @@ template <class T>
 template <class T>
 [[nodiscard]] T roundToward(const Rational& q, T from);
 
+/// The contract's rounding of a final coordinate on one axis ("Positions"): `exact` rounded
+/// toward the start `from`, except on an axis that moved toward minus infinity when that would
+/// carry the box's far edge (exact + `size`) over a grid line `gridOrigin + k*tile` (any integer
+/// k) that the exact far edge had not passed; then toward minus infinity instead. When no finite
+/// value lies at or below `exact` (it is below the lowest finite T), the rounding toward the
+/// start stands.
+template <class T>
+[[nodiscard]] T roundFinalCoordinate(const Rational& exact, T from, const Rational& size, const Rational& gridOrigin,
+                                     const Rational& tile);
+
+/// Whether a grid line gridOrigin + k*tile (k any integer, tile > 0) lies in [low, high).
+[[nodiscard]] bool gridLineIn(const Rational& low, const Rational& high, const Rational& gridOrigin,
+                              const Rational& tile);
+
 extern template float fromRational<float>(const Rational&, Rounding);
 extern template double fromRational<double>(const Rational&, Rounding);
 extern template float roundToward<float>(const Rational&, float);
 extern template double roundToward<double>(const Rational&, double);
+extern template float roundFinalCoordinate<float>(const Rational&, float, const Rational&, const Rational&,
+                                                  const Rational&);
+extern template double roundFinalCoordinate<double>(const Rational&, double, const Rational&, const Rational&,
+                                                    const Rational&);
 
 }  // namespace tilesweep::oracle

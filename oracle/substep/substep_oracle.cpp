@@ -108,7 +108,9 @@ std::vector<SubstepFrame<T>> resolveSceneSubstep(const Scene<T>& scene, std::int
                     {cell, guessNormal(separatedX, separatedY, signOf(d.x), signOf(d.y), xDominant), time});
             }
         }
-        out.frame.position = {roundToward<T>(stopped.min.x, start.x), roundToward<T>(stopped.min.y, start.y)};
+        out.frame.position = {
+            roundFinalCoordinate<T>(stopped.min.x, start.x, size.x, map.origin.x, map.tileSize.x),
+            roundFinalCoordinate<T>(stopped.min.y, start.y, size.y, map.origin.y, map.tileSize.y)};
         start = out.frame.position;
         frames.push_back(std::move(out));
     }
