@@ -8,7 +8,9 @@
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <random>
+#include <string>
 #include <vector>
 
 #if TILESWEEP_BENCH_HAVE_BOX2D
@@ -24,6 +26,9 @@
 #include "oracle/substep/substep_float.h"
 #include "tilesweep/scene.h"
 #include "tilesweep/sweep.h"
+#include "frame_scenarios.h"
+#include "grid_resolve.h"
+#include "twin_resolve.h"
 
 namespace {
 
@@ -252,5 +257,91 @@ void BM_Box2D_TimeOfImpact_Pairs(benchmark::State& state) {
 }
 BENCHMARK(BM_Box2D_TimeOfImpact_Pairs);
 #endif
+
+// ---------------------------------------------------------------------------------------------
+// Side by side (issue 10): tilesweep's exact resolver against the baselines a game developer
+// would pick instead, on the same pre-generated frames (frame_scenarios.h, 65,536 per
+// scenario): the inexact twin (twin_resolve.h: plain T arithmetic, the same path-order walk)
+// and the swept-bounds grid resolver (grid_resolve.h). Named BM_<Impl>_<Scenario><T>[/speed],
+// registered scenario by scenario so that the three implementations run next to each other.
+// Why each scenario: Random30 and FloorAndWalls are the common cases at four speeds; resting
+// on a floor is what a platformer does most frames (a hit at t = 0 and a slide, every frame);
+// free flight is the cheapest useful frame (no hit: the walk's cost alone); far from the origin
+// tilesweep's lattice needs wider integers; a zero move measures the fixed cost per call.
+
+enum class Impl { Tilesweep, Twin, Grid };
+
+template <class T>
+const tilesweep::bench::FrameScenario<T>& frameScenario(tilesweep::bench::FrameKind kind, int speedArg) {
+    // Built once per parameter set, outside the timed loop; kept for the whole run.
+    static std::vector<std::pair<std::pair<int, int>, std::unique_ptr<tilesweep::bench::FrameScenario<T>>>> cache;
+    const auto key = std::make_pair(static_cast<int>(kind), speedArg);
+    for (const auto& entry : cache)
+        if (entry.first == key) return *entry.second;
+    cache.emplace_back(key, std::make_unique<tilesweep::bench::FrameScenario<T>>(
+                                tilesweep::bench::makeFrameScenario<T>(kind, speedArg / 2.0)));
+    return *cache.back().second;
+}
+
+template <class T, Impl I>
+void frameLoop(benchmark::State& state, tilesweep::bench::FrameKind kind, int speedArg) {
+    const tilesweep::bench::FrameScenario<T>& s = frameScenario<T>(kind, speedArg);
+    const tilesweep::TileMapView<T> view = s.map.view();
+    tilesweep::Contact<T> contacts[64];
+    tilesweep::Cell overlaps[64];
+    const tilesweep::ResolveOutput<T> out{contacts, 64, overlaps, 64};
+    std::size_t k = 0;
+    for (auto _ : state) {
+        const tilesweep::SweepInput<T> in{view, s.boxes[k], s.moves[k]};
+        if constexpr (I == Impl::Tilesweep) {
+            benchmark::DoNotOptimize(tilesweep::resolveMove<T>(in, out));
+        } else if constexpr (I == Impl::Twin) {
+            benchmark::DoNotOptimize(tilesweep::bench::resolveMoveTwin<T>(in, out));
+        } else {
+            benchmark::DoNotOptimize(tilesweep::bench::resolveMoveGrid<T>(in, out));
+        }
+        benchmark::ClobberMemory();
+        k = (k + 1) & (tilesweep::bench::kFrameCount - 1);
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+
+template <class T, Impl I>
+void registerFrameBenchmark(const char* impl, const char* scalar, tilesweep::bench::FrameKind kind, int speedArg) {
+    std::string name = std::string("BM_") + impl + "_" + tilesweep::bench::nameOf(kind) + "<" + scalar + ">";
+    if (speedArg > 0) name += "/" + std::to_string(speedArg);
+    benchmark::RegisterBenchmark(name.c_str(), [kind, speedArg](benchmark::State& state) {
+        frameLoop<T, I>(state, kind, speedArg);
+    });
+}
+
+template <class T>
+void registerFrameBenchmarks(const char* scalar, tilesweep::bench::FrameKind kind, int speedArg) {
+    registerFrameBenchmark<T, Impl::Tilesweep>("Tilesweep", scalar, kind, speedArg);
+    registerFrameBenchmark<T, Impl::Twin>("Twin", scalar, kind, speedArg);
+    registerFrameBenchmark<T, Impl::Grid>("Grid", scalar, kind, speedArg);
+}
+
+bool registerSideBySide() {
+    using tilesweep::bench::FrameKind;
+    struct Entry {
+        FrameKind kind;
+        int speedArg;  // 2 x tiles/frame, as above; 0 for none
+    };
+    const Entry entries[] = {
+        {FrameKind::Random30, 1},       {FrameKind::Random30, 4},       {FrameKind::Random30, 16},
+        {FrameKind::Random30, 64},      {FrameKind::FloorAndWalls, 1},  {FrameKind::FloorAndWalls, 4},
+        {FrameKind::FloorAndWalls, 16}, {FrameKind::FloorAndWalls, 64}, {FrameKind::RestingOnFloor, 0},
+        {FrameKind::FreeFlight, 4},     {FrameKind::FarRandom30, 1},    {FrameKind::FarRandom30, 4},
+        {FrameKind::FarRandom30, 16},   {FrameKind::FarRandom30, 64},   {FrameKind::ZeroMove, 0},
+    };
+    for (const Entry& e : entries) {
+        registerFrameBenchmarks<float>("float", e.kind, e.speedArg);
+        registerFrameBenchmarks<double>("double", e.kind, e.speedArg);
+    }
+    return true;
+}
+
+const bool kSideBySideRegistered = registerSideBySide();
 
 }  // namespace

@@ -1,0 +1,281 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "tilesweep/resolve.h"
+
+// The inexact twin: the move-and-slide a competent game developer writes, in plain T arithmetic,
+// as the baseline tilesweep::resolveMove has to be measured against (issue 10, "Exact at the
+// speed of inexact"). It is NOT exact and is not meant to be: it exists for the benchmarks and
+// for counting how often plain arithmetic decides differently (tilesweep_twin_agreement).
+//
+// What it does, per frame (the contract's loop in spirit, CONTRACT.md "One frame through a map"):
+//   - at most two steps; each finds the earliest time of impact over the cells the step's path
+//     covers, takes every tile hit at exactly that time (T equality), snaps the box to the face
+//     on each contact axis, zeroes that axis of the remaining motion and slides on;
+//   - per tile, the slab method with divisions by the displacement (Ericson, RTCD 5.3.3): an
+//     axis that does not move overlaps at all times or at none; touching is not overlapping
+//     (open intervals, entry == exit misses); a tile the box overlaps at the step's start never
+//     blocks; the later entry is the contact axis, and an exact tie takes y unless only the x
+//     face is exposed;
+//   - the broadphase walks cells in path order along the primary axis (the one that crosses more
+//     cells) and stops at the first cell entered later than the earliest hit found, as
+//     tilesweep's does, but every time and span is a rounded T.
+// The final position is the rounded sum p + s*r + (1-s)*r, not the contract's rounding, and the
+// free axis after a snap starts from a rounded point, so a box can end an ulp inside a tile; the
+// next frame then lets it walk out. No validation: the input is assumed valid (tilesweep's
+// resolveMove checks it every frame; a NaN here just propagates). No allocation.
+//
+// The frame loop and the tile test are shared with bench/grid_resolve.h (the swept-bounds
+// variant); only the broadphase differs.
+
+namespace tilesweep::bench {
+
+namespace detail {
+
+/// The times at which a box's projection on one axis overlaps a tile's: the open interval
+/// (entry, exit); all times when `ever` and the axis does not move; none when !ever.
+template <class T>
+struct Slab {
+    bool ever;
+    T entry;
+    T exit;
+};
+
+/// Slab of [lo, hi] moving by d against [tileLo, tileHi], in T, with divisions by d.
+template <class T>
+[[nodiscard]] inline Slab<T> slabOf(T lo, T hi, T d, T tileLo, T tileHi) noexcept {
+    constexpr T inf = std::numeric_limits<T>::infinity();
+    if (d == T(0)) return {lo < tileHi && hi > tileLo, -inf, inf};
+    if (d > T(0)) return {true, (tileLo - hi) / d, (tileHi - lo) / d};
+    return {true, (tileHi - lo) / d, (tileLo - hi) / d};
+}
+
+/// One step's geometry, per axis (0 = x, 1 = y), computed once per step.
+template <class T>
+struct StepFrame {
+    T lo[2];      ///< box min edge at the step's start
+    T hi[2];      ///< box max edge at the step's start (lo + size, rounded)
+    T r[2];       ///< the step's motion
+    T origin[2];  ///< map origin
+    T tile[2];    ///< tile size
+    std::int64_t cells[2];  ///< columns, rows
+
+    /// floor((v - origin) / tile), clamped to [-1, cells]: the cell holding v on axis a.
+    [[nodiscard]] std::int64_t cellOf(int a, T v) const noexcept {
+        const T q = std::floor((v - origin[a]) / tile[a]);
+        if (!(q > T(-1))) return -1;
+        if (q >= static_cast<T>(cells[a])) return cells[a];
+        return static_cast<std::int64_t>(q);
+    }
+    [[nodiscard]] T edge(int a, std::int64_t k) const noexcept {
+        return origin[a] + static_cast<T>(k) * tile[a];
+    }
+};
+
+/// The hits of one step, kept in the caller's buffer: all tiles at the earliest time so far.
+template <class T>
+struct StepHits {
+    Contact<T>* store;
+    std::int32_t capacity;
+    std::int32_t count = 0;  ///< hits at `time`, stored or not
+    bool any = false;
+    T time = T(0);           ///< the step's time of impact, fraction of the step
+    bool axisHit[2] = {false, false};
+    T face[2] = {T(0), T(0)};  ///< the box position touching the hit face, per contact axis
+
+    void add(Cell cell, int axis, Normal normal, T t, T touch) noexcept {
+        if (any) {
+            if (t > time) return;
+            if (t < time) {
+                count = 0;
+                axisHit[0] = axisHit[1] = false;
+            }
+        }
+        any = true;
+        time = t;
+        if (!axisHit[axis]) face[axis] = touch;
+        axisHit[axis] = true;
+        if (count < capacity) store[count] = {cell, normal, t};
+        ++count;
+    }
+};
+
+/// Tests solid tile (i, j) against the step and records a hit. The slab method; see the header.
+template <class T>
+inline void testTile(const TileMapView<T>& map, const StepFrame<T>& f, std::int64_t i, std::int64_t j,
+                     StepHits<T>& hits) noexcept {
+    const T x0 = f.edge(0, i), x1 = f.edge(0, i + 1);
+    const T y0 = f.edge(1, j), y1 = f.edge(1, j + 1);
+    // A tile the box overlaps at the step's start never blocks.
+    if (f.lo[0] < x1 && f.hi[0] > x0 && f.lo[1] < y1 && f.hi[1] > y0) return;
+    const Slab<T> sx = slabOf(f.lo[0], f.hi[0], f.r[0], x0, x1);
+    if (!sx.ever) return;
+    const Slab<T> sy = slabOf(f.lo[1], f.hi[1], f.r[1], y0, y1);
+    if (!sy.ever) return;
+    const T entry = std::max(sx.entry, sy.entry);
+    const T exit = std::min(sx.exit, sy.exit);
+    // Open intervals: entry == exit is a corner touch, not a hit.
+    if (!(entry < exit) || !(entry < T(1)) || !(exit > T(0))) return;
+    int axis = 1;
+    if (sx.entry > sy.entry) {
+        axis = 0;
+    } else if (sx.entry == sy.entry) {
+        const std::int64_t sxDir = f.r[0] > T(0) ? 1 : -1;
+        const std::int64_t syDir = f.r[1] > T(0) ? 1 : -1;
+        const bool xExposed = !map.isSolid(i - sxDir, j);
+        const bool yExposed = !map.isSolid(i, j - syDir);
+        axis = xExposed && !yExposed ? 0 : 1;
+    }
+    const T size = f.hi[axis] - f.lo[axis];
+    const T lo = axis == 0 ? x0 : y0;
+    const T hi = axis == 0 ? x1 : y1;
+    const bool forward = f.r[axis] > T(0);
+    const auto against = static_cast<std::int8_t>(forward ? -1 : 1);
+    const Normal normal = axis == 0 ? Normal{against, 0} : Normal{0, against};
+    hits.add({static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)}, axis, normal, std::max(entry, T(0)),
+             forward ? lo - size : hi);
+}
+
+/// Solid cells the box overlaps (open) at the frame's start, by row then column.
+template <class T>
+inline std::int32_t listStartOverlaps(const TileMapView<T>& map, const StepFrame<T>& f, Cell* store,
+                                      std::int32_t capacity) noexcept {
+    const std::int64_t i0 = std::max<std::int64_t>(f.cellOf(0, f.lo[0]), 0);
+    const std::int64_t i1 = std::min<std::int64_t>(f.cellOf(0, f.hi[0]), f.cells[0] - 1);
+    const std::int64_t j0 = std::max<std::int64_t>(f.cellOf(1, f.lo[1]), 0);
+    const std::int64_t j1 = std::min<std::int64_t>(f.cellOf(1, f.hi[1]), f.cells[1] - 1);
+    std::int32_t count = 0;
+    for (std::int64_t j = j0; j <= j1; ++j)
+        for (std::int64_t i = i0; i <= i1; ++i) {
+            if (!map.isSolid(i, j)) continue;
+            if (!(f.lo[0] < f.edge(0, i + 1) && f.hi[0] > f.edge(0, i) && f.lo[1] < f.edge(1, j + 1) &&
+                  f.hi[1] > f.edge(1, j)))
+                continue;
+            if (count < capacity) store[count] = {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)};
+            ++count;
+        }
+    return count;
+}
+
+/// The frame loop (at most two steps), with the broadphase `findHits(map, frame, hits)`.
+template <class T, class FindHits>
+[[nodiscard]] inline SweepResult<T> resolveFrame(const SweepInput<T>& in, const ResolveOutput<T>& out,
+                                                 FindHits findHits) noexcept {
+    const TileMapView<T>& map = in.map;
+    StepFrame<T> f{{in.box.pos.x, in.box.pos.y},
+                   {in.box.pos.x + in.box.size.x, in.box.pos.y + in.box.size.y},
+                   {in.displacement.x, in.displacement.y},
+                   {map.origin.x, map.origin.y},
+                   {map.tileSize.x, map.tileSize.y},
+                   {map.columns, map.rows}};
+    const T size[2] = {in.box.size.x, in.box.size.y};
+    SweepResult<T> result;
+    result.status = Status::Moved;
+    result.startOverlapCount = listStartOverlaps(map, f, out.startOverlaps, out.startOverlapCapacity);
+    std::int32_t used = 0;
+    std::int32_t total = 0;
+    T elapsed = T(0);  // frame time at the step's start
+    for (int step = 0; step < 2; ++step) {
+        if (f.r[0] == T(0) && f.r[1] == T(0)) break;
+        StepHits<T> hits{out.contacts + used, std::max<std::int32_t>(out.contactCapacity - used, 0)};
+        findHits(map, f, hits);
+        if (!hits.any) {
+            f.lo[0] += f.r[0];
+            f.lo[1] += f.r[1];
+            f.r[0] = f.r[1] = T(0);
+            break;
+        }
+        const T s = hits.time;
+        const T frameTime = elapsed + (T(1) - elapsed) * s;
+        const std::int32_t stored = std::min(hits.count, hits.capacity);
+        for (std::int32_t k = 0; k < stored; ++k) hits.store[k].time = frameTime;
+        // Within a step, by row then column (insertion sort: a step has a handful of hits).
+        for (std::int32_t k = 1; k < stored; ++k)
+            for (std::int32_t m = k; m > 0; --m) {
+                const Cell a = hits.store[m - 1].tile, b = hits.store[m].tile;
+                if (a.j < b.j || (a.j == b.j && a.i <= b.i)) break;
+                std::swap(hits.store[m - 1], hits.store[m]);
+            }
+        used += stored;
+        total += hits.count;
+        for (int a = 0; a < 2; ++a) {
+            if (hits.axisHit[a]) {
+                f.lo[a] = hits.face[a];
+                f.r[a] = T(0);
+            } else {
+                f.lo[a] += s * f.r[a];
+                f.r[a] *= T(1) - s;
+            }
+            f.hi[a] = f.lo[a] + size[a];
+        }
+        elapsed = frameTime;
+    }
+    // A second step that was not resolved (two contacts already) leaves its motion unapplied.
+    result.position = {f.lo[0], f.lo[1]};
+    result.contactCount = total;
+    if (total > 0) result.status = Status::Blocked;
+    return result;
+}
+
+/// The twin's broadphase: cells in path order along the primary axis, with the early exit.
+template <class T>
+inline void findHitsInPathOrder(const TileMapView<T>& map, const StepFrame<T>& f, StepHits<T>& hits) noexcept {
+    // Primary: the axis whose motion crosses more cells, |r_x| / tile_x >= |r_y| / tile_y.
+    const int p = std::abs(f.r[0]) * f.tile[1] >= std::abs(f.r[1]) * f.tile[0] ? 0 : 1;
+    const int s = 1 - p;
+    const T rp = f.r[p];
+    const bool forward = rp > T(0);
+    // From the cell holding the trailing edge to the one holding the leading edge at the end.
+    std::int64_t k = forward ? f.cellOf(p, f.lo[p]) : f.cellOf(p, f.hi[p]);
+    std::int64_t last = forward ? f.cellOf(p, f.hi[p] + rp) : f.cellOf(p, f.lo[p] + rp);
+    const std::int64_t dir = forward ? 1 : -1;
+    if (forward) {
+        k = std::max<std::int64_t>(k, 0);
+        last = std::min<std::int64_t>(last, f.cells[p] - 1);
+    } else {
+        k = std::min<std::int64_t>(k, f.cells[p] - 1);
+        last = std::max<std::int64_t>(last, 0);
+    }
+    for (; forward ? k <= last : k >= last; k += dir) {
+        const T lo = f.edge(p, k);
+        const T hi = f.edge(p, k + 1);
+        // The box is inside this primary cell for t in (enter, leave), clamped to [0, 1].
+        T enter = forward ? (lo - f.hi[p]) / rp : (hi - f.lo[p]) / rp;
+        T leave = forward ? (hi - f.lo[p]) / rp : (lo - f.hi[p]) / rp;
+        enter = std::max(enter, T(0));
+        leave = std::min(leave, T(1));
+        if (enter >= T(1)) break;
+        if (hits.any && enter > hits.time) break;  // later than the earliest hit: done
+        // The secondary span over that window.
+        const T a = f.r[s] * enter;
+        const T b = f.r[s] * leave;
+        const std::int64_t j0 = std::max<std::int64_t>(f.cellOf(s, f.lo[s] + std::min(a, b)), 0);
+        const std::int64_t j1 = std::min<std::int64_t>(f.cellOf(s, f.hi[s] + std::max(a, b)), f.cells[s] - 1);
+        for (std::int64_t j = j0; j <= j1; ++j) {
+            const std::int64_t ci = p == 0 ? k : j;
+            const std::int64_t cj = p == 0 ? j : k;
+            if (map.isSolid(ci, cj)) testTile(map, f, ci, cj, hits);
+        }
+    }
+}
+
+}  // namespace detail
+
+/// Resolves one frame the inexact way (see the header comment): same signature shape as
+/// tilesweep::resolveMove, so it can be swapped in. Contacts step by step, within a step by row
+/// then column; a count above capacity means truncated. Input assumed valid.
+template <class T>
+[[nodiscard]] inline SweepResult<T> resolveMoveTwin(const SweepInput<T>& input,
+                                                    const ResolveOutput<T>& output) noexcept {
+    return detail::resolveFrame(input, output, [](const TileMapView<T>& map, const detail::StepFrame<T>& f,
+                                                  detail::StepHits<T>& hits) {
+        detail::findHitsInPathOrder(map, f, hits);
+    });
+}
+
+}  // namespace tilesweep::bench
