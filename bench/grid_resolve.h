@@ -24,7 +24,7 @@ inline void findHitsInSweptBounds(const TileMapView<T>& map, const StepFrame<T>&
     for (int a = 0; a < 2; ++a) {
         const T lo = std::min(f.lo[a], f.lo[a] + f.r[a]);
         const T hi = std::max(f.hi[a], f.hi[a] + f.r[a]);
-        first[a] = std::max<std::int64_t>(f.cellOf(a, lo), 0);
+        first[a] = std::max<std::int64_t>(f.cellBefore(a, lo), 0);
         last[a] = std::min<std::int64_t>(f.cellOf(a, hi), f.cells[a] - 1);
     }
     for (std::int64_t j = first[1]; j <= last[1]; ++j)

@@ -72,6 +72,16 @@ struct StepFrame {
         if (q >= static_cast<T>(cells[a])) return cells[a];
         return static_cast<std::int64_t>(q);
     }
+    /// ceil((v - origin) / tile) - 1, clamped likewise: the lowest cell that v lies in or
+    /// touches from above. Used for the low end of a range whose bound is a rounded sum: the
+    /// rounding can land such a bound on a tile edge (edges are representable) but not carry it
+    /// over, so a range that keeps the touching cells at both ends loses no tile to it.
+    [[nodiscard]] std::int64_t cellBefore(int a, T v) const noexcept {
+        const T q = std::ceil((v - origin[a]) / tile[a]) - T(1);
+        if (!(q > T(-1))) return -1;
+        if (q >= static_cast<T>(cells[a])) return cells[a];
+        return static_cast<std::int64_t>(q);
+    }
     [[nodiscard]] T edge(int a, std::int64_t k) const noexcept {
         return origin[a] + static_cast<T>(k) * tile[a];
     }
@@ -231,8 +241,8 @@ inline void findHitsInPathOrder(const TileMapView<T>& map, const StepFrame<T>& f
     const T rp = f.r[p];
     const bool forward = rp > T(0);
     // From the cell holding the trailing edge to the one holding the leading edge at the end.
-    std::int64_t k = forward ? f.cellOf(p, f.lo[p]) : f.cellOf(p, f.hi[p]);
-    std::int64_t last = forward ? f.cellOf(p, f.hi[p] + rp) : f.cellOf(p, f.lo[p] + rp);
+    std::int64_t k = forward ? f.cellBefore(p, f.lo[p]) : f.cellOf(p, f.hi[p]);
+    std::int64_t last = forward ? f.cellOf(p, f.hi[p] + rp) : f.cellBefore(p, f.lo[p] + rp);
     const std::int64_t dir = forward ? 1 : -1;
     if (forward) {
         k = std::max<std::int64_t>(k, 0);
@@ -254,7 +264,7 @@ inline void findHitsInPathOrder(const TileMapView<T>& map, const StepFrame<T>& f
         // The secondary span over that window.
         const T a = f.r[s] * enter;
         const T b = f.r[s] * leave;
-        const std::int64_t j0 = std::max<std::int64_t>(f.cellOf(s, f.lo[s] + std::min(a, b)), 0);
+        const std::int64_t j0 = std::max<std::int64_t>(f.cellBefore(s, f.lo[s] + std::min(a, b)), 0);
         const std::int64_t j1 = std::min<std::int64_t>(f.cellOf(s, f.hi[s] + std::max(a, b)), f.cells[s] - 1);
         for (std::int64_t j = j0; j <= j1; ++j) {
             const std::int64_t ci = p == 0 ? k : j;

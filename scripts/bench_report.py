@@ -104,6 +104,17 @@ def describe(name):
         return f"one box against one tile (sweepBox), {scalar}, per pair"
     if base.startswith("BM_Box2D_TimeOfImpact_Pairs"):
         return "Box2D b2TimeOfImpact, float, the same pairs, per pair"
+    # Side by side on 65,536 pre-generated frames per scenario (bench/frame_scenarios.h).
+    impls = {"BM_Tilesweep_": "tilesweep", "BM_Twin_": "inexact twin", "BM_Grid_": "swept-bounds grid"}
+    for prefix, impl in impls.items():
+        if base.startswith(prefix):
+            scenario = base[len(prefix):].split("<")[0]
+            where = {"Random30": "256² map 30% solid", "FloorAndWalls": "256² floors and walls",
+                     "FarRandom30": "256² map 30% solid at origin 2^20", "FreeFlight": "empty 256² map",
+                     "RestingOnFloor": "box resting on a floor, walking, one frame of gravity",
+                     "ZeroMove": "zero move, 256² map 30% solid"}.get(scenario, scenario)
+            speed = f", {speed_of(args[0])} tiles/frame" if args else ""
+            return f"{impl}, {scalar}, {where}{speed}"
     return ""
 
 
