@@ -19,7 +19,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "frame_safety.h"
+#include "frame_safety.h"  // checks/
 #include "fuzz_check.h"
 #include "tilesweep/resolve.h"
 #include "tilesweep/tile_map.h"
@@ -197,12 +197,12 @@ void fuzzResolver(ByteReader& in) {
         !fuzz::sameBits(r.position.y, first.position.y))
         fuzz::failCheck(kTarget, "result depends on the list capacities", describeInput(input, solid));
 
-    const fuzz::MapEdges<T> edges = fuzz::computeEdges(map);
-    fuzz::SafetyScratch scratch;
-    const fuzz::FrameRecord<T> frame{map, input.box, input.displacement, r, full.contacts.data(),
+    const checks::MapEdges<T> edges = checks::computeEdges(map);
+    checks::SafetyScratch scratch;
+    const checks::FrameRecord<T> frame{map, input.box, input.displacement, r, full.contacts.data(),
                                      full.overlaps.data()};
-    const std::string violation = fuzz::findSafetyViolation(frame, edges, scratch);
-    if (!violation.empty()) fuzz::failCheck(kTarget, violation, describeInput(input, solid));
+    const checks::SafetyViolation violation = checks::checkFrameSafety(frame, edges, scratch);
+    if (violation) fuzz::failCheck(kTarget, violation.detail, describeInput(input, solid));
 }
 
 }  // namespace

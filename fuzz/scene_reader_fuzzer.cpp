@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "frame_safety.h"
+#include "frame_safety.h"  // checks/
 #include "fuzz_check.h"
 #include "tilesweep/scene.h"
 
@@ -83,8 +83,8 @@ void checkFrames(const Scene<T>& scene, std::string_view line) {
         fuzz::failCheck(kTarget, "runScene did not return one frame per move", excerpt(line));
 
     const TileMapView<T> map = scene.map.view();
-    const fuzz::MapEdges<T> edges = fuzz::computeEdges(map);
-    fuzz::SafetyScratch scratch;
+    const checks::MapEdges<T> edges = checks::computeEdges(map);
+    checks::SafetyScratch scratch;
     Box<T> box = scene.box;
     for (std::size_t k = 0; k < frames.size(); ++k) {
         const FrameResult<T>& f = frames[k];
@@ -93,11 +93,10 @@ void checkFrames(const Scene<T>& scene, std::string_view line) {
         result.position = f.position;
         result.contactCount = static_cast<std::int32_t>(f.contacts.size());
         result.startOverlapCount = static_cast<std::int32_t>(f.startOverlaps.size());
-        const fuzz::FrameRecord<T> frame{map, box, scene.moves[k], result, f.contacts.data(),
+        const checks::FrameRecord<T> frame{map, box, scene.moves[k], result, f.contacts.data(),
                                          f.startOverlaps.data()};
-        const std::string violation = fuzz::findSafetyViolation(frame, edges, scratch);
-        if (!violation.empty())
-            fuzz::failCheck(kTarget, "frame " + std::to_string(k) + ": " + violation, excerpt(line));
+        const checks::SafetyViolation violation = checks::checkFrameSafety(frame, edges, scratch);
+        if (violation) fuzz::failCheck(kTarget, "frame " + std::to_string(k) + ": " + violation.detail, excerpt(line));
         box.pos = f.position;
     }
 }

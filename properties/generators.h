@@ -35,6 +35,7 @@ enum class Family : std::uint8_t {
     Gap,         ///< a box exactly as wide as a one-tile gap, or one ulp wider
     Resting,     ///< resting on a floor under gravity for many frames, possibly sliding
     FarSubUlp,   ///< far from the origin, moves of a few ulps past a tile corner: rounding at work
+    FarEdge,     ///< far edge a few ulps past a grid line, a tiny move away, then back: the rounding rule
     Mixed,
 };
 
@@ -50,6 +51,7 @@ enum class Family : std::uint8_t {
         case Family::Gap: return "gap";
         case Family::Resting: return "resting";
         case Family::FarSubUlp: return "far-sub-ulp";
+        case Family::FarEdge: return "far-edge";
         case Family::Mixed: return "mixed";
     }
     return "?";
@@ -371,12 +373,77 @@ rc::Gen<GeneratedScene<T>> genFarSubUlpScene() {
     });
 }
 
+/// The rounding rule's family (CONTRACT.md, "Positions"). Far from the origin (float 2^17 to 2^21,
+/// double 2^46 to 2^50), the box's far edge lies a few ulps past a grid line, just above a solid
+/// tile on the far side of that line. Frame 1 moves toward minus infinity on that axis by a
+/// few ulps, mostly just enough to take the exact far edge back over the line, and down
+/// onto the tile's row, often missing its corner; rounding back toward the start would put the
+/// far edge over the line again, inside the tile. Frames 2 and 3 move back toward the tile: the
+/// box must stop at its face, never walk into it. Half the scenes swap the axes.
+template <class T>
+rc::Gen<GeneratedScene<T>> genFarEdgeScene() {
+    return rc::gen::exec([] {
+        const bool isFloat = std::is_same<T, float>::value;
+        const double tile = *rc::gen::element(16.0, 8.0, 0.75, 12.0, 2.5);
+        const int binade = isFloat ? *rc::gen::inRange(17, 22) : *rc::gen::inRange(46, 51);
+        // A multiple of the tile near 2^binade, on either side of the origin.
+        const double ox = std::round(std::ldexp(1.0, binade) / tile) * tile * *rc::gen::element(1, -1);
+        const double oy = *rc::gen::element(0.0, ox, -ox);
+        Grid<T> g;
+        g.columns = 6;
+        g.rows = 6;
+        g.solid.assign(36, 0);
+        g.set(3, 3, true);  // the tile beyond the line x = ox + 3*tile, one row down
+        for (int k = 0; k < 2; ++k) g.set(*rc::gen::inRange(3, 6), *rc::gen::inRange(3, 6), *rc::gen::arbitrary<bool>());
+        const double line = ox + 3 * tile;
+        const double ulp = static_cast<double>(std::nextafter(static_cast<T>(line), std::numeric_limits<T>::infinity())) -
+                           static_cast<double>(static_cast<T>(line));
+        const T w = static_cast<T>(*rc::gen::inRange(101, 400) / 100.0 * tile / 4);  // decimal: off the lattice
+        const T h = static_cast<T>(*rc::gen::inRange(1, 9) * tile / 8.0);
+        // Far edge a few ulps past the line; bottom a little above the tile's top.
+        const T x = static_cast<T>(line + *rc::gen::inRange(1, 5) * ulp - static_cast<double>(w));
+        const double gapY = *rc::gen::element(0.0, 1.0, 3.0) * ulp + *rc::gen::inRange(0, 5) * tile / 16.0;
+        const T y = static_cast<T>(oy + 3 * tile - static_cast<double>(h) - gapY);
+        const Box<T> box{{x, y}, {w, h}};
+        // Away by the far edge's offset past the line and a fraction of an ulp more, so that the
+        // exact far edge ends just short of the line (where rounding back up would cross it);
+        // now and then a plain quarter of an ulp to four ulps.
+        const double offset = static_cast<double>(x) + static_cast<double>(w) - line;
+        const double fraction = *rc::gen::element(1.0 / 16, 1.0 / 8, 1.0 / 4, 1.0 / 2);
+        const T away = *rc::gen::arbitrary<bool>() || *rc::gen::arbitrary<bool>()
+                           ? static_cast<T>(-(offset + fraction * ulp))
+                           : static_cast<T>(-*rc::gen::inRange(1, 17) * ulp / 4);
+        const T down = static_cast<T>(gapY + *rc::gen::inRange(1, 9) * tile / 8.0);
+        const T back = static_cast<T>(*rc::gen::element(1.0, 3.0, 8.0) * ulp + *rc::gen::element(0.0, tile / 2));
+        std::vector<Vec2<T>> moves{{away, down}, {back, T(0)}, {back, static_cast<T>(tile / 8.0)}};
+        Grid<T> cleared = g;
+        clearUnder(cleared, ox, oy, tile, box);
+        cleared.set(3, 3, true);  // the box starts above it, never in it
+        Scene<T> scene = makeScene(cleared, ox, oy, tile, box, moves);
+        if (*rc::gen::arbitrary<bool>()) {  // the same on y: transpose everything
+            Scene<T> t = scene;
+            std::swap(t.map.origin.x, t.map.origin.y);
+            std::swap(t.box.pos.x, t.box.pos.y);
+            std::swap(t.box.size.x, t.box.size.y);
+            for (Vec2<T>& m : t.moves) std::swap(m.x, m.y);
+            std::swap(t.map.columns, t.map.rows);
+            for (int j = 0; j < scene.map.rows; ++j)
+                for (int i = 0; i < scene.map.columns; ++i)
+                    t.map.solid[static_cast<std::size_t>(i * t.map.columns + j)] =
+                        scene.map.solid[static_cast<std::size_t>(j * scene.map.columns + i)];
+            scene = t;
+        }
+        return GeneratedScene<T>{scene, Family::FarEdge, true};
+    });
+}
+
 }  // namespace detail
 
 /// Scenes of one family, or of all of them (`Mixed`).
 template <class T>
 rc::Gen<GeneratedScene<T>> genScene(Family family) {
     using detail::genCornerScene;
+    using detail::genFarEdgeScene;
     using detail::genFarSubUlpScene;
     using detail::genFloorScene;
     using detail::genLayoutScene;
@@ -391,6 +458,7 @@ rc::Gen<GeneratedScene<T>> genScene(Family family) {
         case Family::Gap:
         case Family::Resting: return genFloorScene<T>(family);
         case Family::FarSubUlp: return genFarSubUlpScene<T>();
+        case Family::FarEdge: return genFarEdgeScene<T>();
         case Family::Mixed: break;
     }
     return rc::gen::weightedOneOf<GeneratedScene<T>>({
@@ -404,6 +472,7 @@ rc::Gen<GeneratedScene<T>> genScene(Family family) {
         {1, genFloorScene<T>(Family::Gap)},
         {2, genFloorScene<T>(Family::Resting)},
         {1, genFarSubUlpScene<T>()},
+        {1, genFarEdgeScene<T>()},
     });
 }
 

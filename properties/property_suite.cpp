@@ -143,8 +143,16 @@ void addAll(std::vector<Property>& out) {
     addClaim<T>(out, "broadphaseOffersEveryBlockingTile", "matchesExactReferenceBitForBit", Family::Random,
                 {{"hit", 0.10}, {"two-step", 0.02}});  // about 18.6% on average, 14.4% in the worst of 4,700 rounds
     addClaim<T>(out, "neverEndsInsideATileItDidNotStartIn", "neverEndsInsideATileItDidNotStartIn", Family::Mixed,
-                {{"hit", 0.2}});
+                {{"hit", 0.2}, {"rounded-down", 0.002}});
     addClaim<T>(out, "stopsJustTouching", "stopsJustTouching", Family::Mixed, {{"hit", 0.2}});
+    addClaim<T>(out, "obeysTheSafetyRules", "obeysTheSafetyRules", Family::Mixed, {{"hit", 0.2}});
+    // The rounding rule's family: the exception must change the result in a good share of it.
+    addClaim<T>(out, "roundsFarEdgesByTheAmendedRule", "matchesExactReferenceBitForBit", Family::FarEdge,
+                {{"rounded-down", 0.05}, {"hit", 0.2}});
+    addClaim<T>(out, "neverGetsIntoAWall", "neverGetsIntoAWall", Family::FarEdge, {{"rounded-down", 0.05}});
+    addClaim<T>(out, "farEdgesNeverEndInsideATile", "neverEndsInsideATileItDidNotStartIn", Family::FarEdge,
+                {{"rounded-down", 0.05}});
+    addClaim<T>(out, "farEdgesObeyTheSafetyRules", "obeysTheSafetyRules", Family::FarEdge, {{"rounded-down", 0.05}});
     addClaim<T>(out, "substepOracleFindsNoMissedContact", "substepOracleFindsNoMissedContact", Family::Mixed,
                 {{"hit", 0.2}});
     addClaim<T>(out, "zeroMoveChangesNothing", "zeroMoveChangesNothing", Family::Mixed, {});

@@ -12,6 +12,7 @@
 #include "oracle/exact/exact_resolve.h"
 #include "oracle/exact/rational_convert.h"
 #include "oracle/substep/substep_oracle.h"
+#include "frame_safety.h"  // checks/
 
 namespace tilesweep::properties {
 namespace {
@@ -87,10 +88,6 @@ std::vector<Vec2<T>> frameStarts(const Scene<T>& scene, const std::vector<FrameR
     return starts;
 }
 
-template <class T>
-T nextUp(T v) { return std::nextafter(v, std::numeric_limits<T>::infinity()); }
-template <class T>
-T nextDown(T v) { return std::nextafter(v, -std::numeric_limits<T>::infinity()); }
 
 // ---------------------------------------------------------------------------------------------
 // The claims.
@@ -101,38 +98,62 @@ std::string matchesExactReferenceBitForBit(const Scene<T>& scene) {
     return diffFrames(runScene(scene), oracle::resolveSceneExactRounded(scene));
 }
 
-/// At the end of every frame, the exact box overlaps no solid tile it did not overlap at the
-/// start, and the rounded box overlaps one only through the rounding: a tile the frame did not
-/// hit, which the exact end box misses or only touches.
-///
-/// Why not "the rounded box never overlaps a new tile", as CONTRACT.md's rounding paragraph says
-/// ("The box thus never ... ends inside a tile it did not start inside")? Rounding each axis
-/// toward the start can undo a corner miss: when the exact path passes just beside a tile's
-/// corner and one axis moves less than an ulp, that axis rounds back to the start while the
-/// other moves on, and the rounded box ends overlapping the corner by less than an ulp on each
-/// axis (properties/corpus/contract-rounding-undoes-corner-miss.jsonl, found by the soak). The
-/// resolver follows the rounding rule bit for bit; this claim holds for the rule as written.
+/// The frames of a scene as the shared safety checks see them (checks/frame_safety.h).
+template <class T>
+struct CheckedFrames {
+    std::vector<FrameResult<T>> frames;
+    std::vector<Vec2<T>> starts;
+    checks::MapEdges<T> edges;
+};
+
+template <class T>
+CheckedFrames<T> checkedFrames(const Scene<T>& scene) {
+    CheckedFrames<T> c;
+    c.frames = runScene(scene);
+    c.starts = frameStarts(scene, c.frames);
+    c.edges = checks::computeEdges(scene.map.view());
+    return c;
+}
+
+template <class T>
+checks::FrameRecord<T> recordOf(const Scene<T>& scene, const CheckedFrames<T>& c, std::size_t f) {
+    const FrameResult<T>& r = c.frames[f];
+    SweepResult<T> result;
+    result.status = r.contacts.empty() ? Status::Moved : Status::Blocked;
+    result.position = r.position;
+    result.contactCount = static_cast<std::int32_t>(r.contacts.size());
+    result.startOverlapCount = static_cast<std::int32_t>(r.startOverlaps.size());
+    return {scene.map.view(), {c.starts[f], scene.box.size}, scene.moves[f], result, r.contacts.data(),
+            r.startOverlaps.data()};
+}
+
+/// At the end of every frame, the box overlaps no solid tile it did not overlap at the frame's
+/// start: CONTRACT.md's promise, with no allowance (the amended rounding rule keeps it).
 template <class T>
 std::string neverEndsInsideATileItDidNotStartIn(const Scene<T>& scene) {
-    const std::vector<FrameResult<T>> frames = runScene(scene);
-    const std::vector<oracle::ExactFrame> exact = oracle::resolveSceneExact(scene);
-    const oracle::ExactTileMap map = oracle::toExact(scene.map);
-    const oracle::ExactVec2 size = oracle::toExact(scene.box.size);
-    for (std::size_t f = 0; f < frames.size(); ++f) {
-        const oracle::ExactRect box = oracle::rectOf(oracle::toExact(Box<T>{frames[f].position, scene.box.size}));
-        const oracle::ExactRect exactBox = oracle::rectOf(oracle::ExactBox{exact[f].position, size});
-        const auto& started = frames[f].startOverlaps;
-        for (std::int32_t j = 0; j < map.rows; ++j)
-            for (std::int32_t i = 0; i < map.columns; ++i) {
-                if (!map.isSolid(i, j) || std::find(started.begin(), started.end(), Cell{i, j}) != started.end()) continue;
-                const oracle::ExactRect tile = map.tileRect(i, j);
-                if (oracle::overlaps(exactBox, tile))
-                    return "frame " + std::to_string(f) + ": the exact end is inside tile " + cellText({i, j});
-                if (!oracle::overlaps(box, tile)) continue;
-                const auto& hits = frames[f].contacts;
-                if (std::any_of(hits.begin(), hits.end(), [&](const Contact<T>& c) { return c.tile == Cell{i, j}; }))
-                    return "frame " + std::to_string(f) + ": ends inside tile " + cellText({i, j}) + ", which it hit";
-            }
+    const CheckedFrames<T> c = checkedFrames(scene);
+    checks::SafetyScratch scratch;
+    for (std::size_t f = 0; f < c.frames.size(); ++f)
+        if (const auto cell = checks::findNewOverlap(scene.map.view(), c.edges, Box<T>{c.starts[f], scene.box.size},
+                                                     c.frames[f].position, scratch))
+            return "frame " + std::to_string(f) + ": ends inside tile " + cellText(*cell) + ", which it did not start in";
+    return {};
+}
+
+/// Over a run of frames, every solid tile the box overlaps at the start of a frame is one it
+/// overlapped at the start of the first frame: the box never gets into a wall.
+template <class T>
+std::string neverGetsIntoAWall(const Scene<T>& scene) {
+    const CheckedFrames<T> c = checkedFrames(scene);
+    std::vector<Cell> first;
+    std::vector<Cell> now;
+    checks::listOverlaps(scene.map.view(), c.edges, scene.box.pos, scene.box.size, first);
+    for (std::size_t f = 0; f < c.frames.size(); ++f) {
+        checks::listOverlaps(scene.map.view(), c.edges, c.frames[f].position, scene.box.size, now);
+        for (const Cell cell : now)
+            if (std::find(first.begin(), first.end(), cell) == first.end())
+                return "after frame " + std::to_string(f) + ": inside tile " + cellText(cell) +
+                       ", which it was not in at the first frame's start";
     }
     return {};
 }
@@ -140,22 +161,23 @@ std::string neverEndsInsideATileItDidNotStartIn(const Scene<T>& scene) {
 /// After a hit on a face, the box ends touching it or short of it by less than one ulp.
 template <class T>
 std::string stopsJustTouching(const Scene<T>& scene) {
-    const std::vector<FrameResult<T>> frames = runScene(scene);
-    const oracle::ExactTileMap map = oracle::toExact(scene.map);
-    const Rational w = oracle::toRational(scene.box.size.x);
-    const Rational h = oracle::toRational(scene.box.size.y);
-    for (std::size_t f = 0; f < frames.size(); ++f) {
-        const Vec2<T> p = frames[f].position;
-        for (const Contact<T>& c : frames[f].contacts) {
-            const oracle::ExactRect tile = map.tileRect(c.tile.i, c.tile.j);
-            bool ok = true;
-            if (c.normal.x == -1) ok = oracle::toRational(p.x) + w <= tile.min.x && oracle::toRational(nextUp(p.x)) + w > tile.min.x;
-            if (c.normal.x == 1) ok = oracle::toRational(p.x) >= tile.max.x && oracle::toRational(nextDown(p.x)) < tile.max.x;
-            if (c.normal.y == -1) ok = oracle::toRational(p.y) + h <= tile.min.y && oracle::toRational(nextUp(p.y)) + h > tile.min.y;
-            if (c.normal.y == 1) ok = oracle::toRational(p.y) >= tile.max.y && oracle::toRational(nextDown(p.y)) < tile.max.y;
-            if (!ok) return "frame " + std::to_string(f) + ": not just touching tile " + cellText(c.tile);
-        }
-    }
+    const CheckedFrames<T> c = checkedFrames(scene);
+    for (std::size_t f = 0; f < c.frames.size(); ++f)
+        if (std::string why = checks::checkHitTilesLeftTouching(recordOf(scene, c, f), c.edges); !why.empty())
+            return "frame " + std::to_string(f) + ": " + why;
+    return {};
+}
+
+/// Every frame obeys every safety rule of checks/frame_safety.h: well formed, the exact start
+/// overlaps, no new overlap at the end, hit tiles left touching, and the position between the
+/// start and the exact end, or one ulp below it exactly where the rounding rule says.
+template <class T>
+std::string obeysTheSafetyRules(const Scene<T>& scene) {
+    const CheckedFrames<T> c = checkedFrames(scene);
+    checks::SafetyScratch scratch;
+    for (std::size_t f = 0; f < c.frames.size(); ++f)
+        if (const checks::SafetyViolation v = checks::checkFrameSafety(recordOf(scene, c, f), c.edges, scratch))
+            return "frame " + std::to_string(f) + ": " + checks::ruleName(v.rule) + ": " + v.detail;
     return {};
 }
 
@@ -179,16 +201,23 @@ std::string substepOracleFindsNoMissedContact(const Scene<T>& scene) {
     return {};
 }
 
-/// A frame whose move is zero changes nothing and touches nothing.
+/// A frame whose move is zero changes nothing and touches nothing, and reports as start overlaps
+/// exactly the solid tiles the box overlaps (checked apart from the resolver).
 template <class T>
 std::string zeroMoveChangesNothing(const Scene<T>& scene) {
     Scene<T> still = scene;
     for (auto& m : still.moves) m = {0, 0};
     const std::vector<FrameResult<T>> frames = runScene(still);
+    std::vector<Cell> overlapping;
+    checks::listOverlaps(scene.map.view(), checks::computeEdges(scene.map.view()), scene.box.pos, scene.box.size,
+                         overlapping);
     for (std::size_t f = 0; f < frames.size(); ++f) {
         if (!sameBits(frames[f].position.x, scene.box.pos.x) || !sameBits(frames[f].position.y, scene.box.pos.y))
             return "frame " + std::to_string(f) + ": a zero move changed the position";
         if (!frames[f].contacts.empty()) return "frame " + std::to_string(f) + ": a zero move reported a contact";
+        if (frames[f].startOverlaps.size() != overlapping.size() ||
+            !std::equal(overlapping.begin(), overlapping.end(), frames[f].startOverlaps.begin()))
+            return "frame " + std::to_string(f) + ": start overlaps differ from the tiles the box overlaps";
     }
     return {};
 }
@@ -291,20 +320,38 @@ std::string translatingByWholeTilesKeepsDecisions(const Scene<T>& scene) {
     return diffFrames(got, expected, what);
 }
 
-/// Under gravity on a floor, once landed, the position is identical frame after frame.
+/// Whether the box at `pos` stands on the map: a solid tile's top exactly at its bottom, under
+/// its open x span.
+template <class T>
+bool standsOnFloor(const oracle::ExactTileMap& map, const Scene<T>& scene, Vec2<T> pos) {
+    const oracle::ExactRect box = oracle::rectOf(oracle::toExact(Box<T>{pos, scene.box.size}));
+    for (std::int32_t j = 0; j < map.rows; ++j)
+        for (std::int32_t i = 0; i < map.columns; ++i) {
+            if (!map.isSolid(i, j)) continue;
+            const oracle::ExactRect t = map.tileRect(i, j);
+            if (t.min.y == box.max.y && t.min.x < box.max.x && t.max.x > box.min.x) return true;
+        }
+    return false;
+}
+
+/// A box standing on a floor and pushed down by gravity lands at once (a floor contact at time
+/// 0) and keeps its height bit for bit, and its x too when it does not walk. Every frame that
+/// starts on a floor is checked, so a box that sinks into or falls through the floor fails.
 template <class T>
 std::string restingContactIsStable(const Scene<T>& scene) {
     const std::vector<FrameResult<T>> frames = runScene(scene);
-    for (std::size_t f = 1; f < frames.size(); ++f) {
+    const std::vector<Vec2<T>> starts = frameStarts(scene, frames);
+    const oracle::ExactTileMap map = oracle::toExact(scene.map);
+    for (std::size_t f = 0; f < frames.size(); ++f) {
         const Vec2<T> m = scene.moves[f];
-        const Vec2<T> previous = scene.moves[f - 1];
-        if (!(m.x == 0 && m.y > 0 && previous.x == 0 && previous.y == m.y)) continue;
-        const auto& before = frames[f - 1].contacts;
-        const bool landed = std::any_of(before.begin(), before.end(), [](const Contact<T>& c) { return c.normal.y == -1; });
-        if (!landed) continue;
-        if (!sameBits(frames[f].position.x, frames[f - 1].position.x) || !sameBits(frames[f].position.y, frames[f - 1].position.y))
-            return "frame " + std::to_string(f) + ": resting box moved from (" + hex(frames[f - 1].position.x) + ", " +
-                   hex(frames[f - 1].position.y) + ") to (" + hex(frames[f].position.x) + ", " + hex(frames[f].position.y) + ")";
+        if (!(m.y > 0) || !standsOnFloor(map, scene, starts[f])) continue;
+        const auto& hits = frames[f].contacts;
+        const bool landed = std::any_of(hits.begin(), hits.end(),
+                                        [](const Contact<T>& c) { return c.normal.y == -1 && c.time == 0; });
+        if (!landed) return "frame " + std::to_string(f) + ": standing on a floor, no floor contact at time 0";
+        if (!sameBits(frames[f].position.y, starts[f].y) || (m.x == 0 && !sameBits(frames[f].position.x, starts[f].x)))
+            return "frame " + std::to_string(f) + ": resting box moved from (" + hex(starts[f].x) + ", " +
+                   hex(starts[f].y) + ") to (" + hex(frames[f].position.x) + ", " + hex(frames[f].position.y) + ")";
     }
     return {};
 }
@@ -327,6 +374,8 @@ std::string slidingAlongFloorNeverSnags(const Scene<T>& scene) {
                 supported = t.min.y == box.max.y && t.min.x < box.max.x && t.max.x > box.min.x;
             }
         if (!supported) continue;
+        if (!sameBits(frames[f].position.y, starts[f].y))
+            return "frame " + std::to_string(f) + ": left the floor it stood on, moving down";
         for (const Contact<T>& c : frames[f].contacts)
             if (c.normal.x != 0 && map.tileRect(c.tile.i, c.tile.j).min.y == box.max.y)
                 return "frame " + std::to_string(f) + ": snagged on the side of floor tile " + cellText(c.tile);
@@ -341,7 +390,9 @@ const std::vector<Claim<T>>& allClaims() {
     static const std::vector<Claim<T>> claims = {
         {"matchesExactReferenceBitForBit", &matchesExactReferenceBitForBit<T>},
         {"neverEndsInsideATileItDidNotStartIn", &neverEndsInsideATileItDidNotStartIn<T>},
+        {"neverGetsIntoAWall", &neverGetsIntoAWall<T>},
         {"stopsJustTouching", &stopsJustTouching<T>},
+        {"obeysTheSafetyRules", &obeysTheSafetyRules<T>},
         {"substepOracleFindsNoMissedContact", &substepOracleFindsNoMissedContact<T>},
         {"zeroMoveChangesNothing", &zeroMoveChangesNothing<T>},
         {"scalingByPowerOfTwoScalesTheResult", &scalingByPowerOfTwoScalesTheResult<T>},
@@ -363,10 +414,78 @@ const Claim<T>* findClaim(const std::string& name) {
 
 namespace {
 
-/// The exact frames under the contract's rounding (what every resolver must return).
+/// Whether the contract's rounding rule rounded some axis down, where rounding toward the start
+/// would have carried the far edge over a grid line: the two roundings differ.
 template <class T>
-std::vector<FrameResult<T>> toFrameResultsForTags(const Scene<T>& scene) {
-    return oracle::resolveSceneExactRounded(scene);
+bool roundedDown(const oracle::ExactFrame& f) {
+    const FrameResult<T> rounded = oracle::roundFrame<T>(f);
+    const T startX = oracle::fromRational<T>(f.start.x, oracle::Rounding::NearestEven);
+    const T startY = oracle::fromRational<T>(f.start.y, oracle::Rounding::NearestEven);
+    return rounded.position.x != oracle::roundToward<T>(f.position.x, startX) ||
+           rounded.position.y != oracle::roundToward<T>(f.position.y, startY);
+}
+
+/// Whether an exact time lies exactly halfway between two neighbouring T values (the
+/// ties-to-even case of the frame times' rounding).
+template <class T>
+bool halfwayBetweenValues(const Rational& t) {
+    const T below = oracle::fromRational<T>(t, oracle::Rounding::TowardNegative);
+    const T above = oracle::fromRational<T>(t, oracle::Rounding::TowardPositive);
+    return below != above && (oracle::toRational(below) + oracle::toRational(above)) / 2 == t;
+}
+
+/// Whether, in the first step of some frame with both axes moving, a solid tile is first
+/// reached at exactly t = 1 (which the contract does not count as a hit).
+template <class T>
+bool reachesATileAtTheEnd(const Scene<T>& scene, const std::vector<oracle::ExactFrame>& frames) {
+    const oracle::ExactTileMap map = oracle::toExact(scene.map);
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+        const oracle::ExactVec2 d = oracle::toExact(scene.moves[f]);
+        if (d.x == 0 || d.y == 0) continue;
+        for (std::int32_t j = 0; j < map.rows; ++j)
+            for (std::int32_t i = 0; i < map.columns; ++i) {
+                if (!map.isSolid(i, j)) continue;
+                const oracle::ExactSweepOutput sweep =
+                    oracle::sweepTileExact({{frames[f].start, frames[f].size}, d, map.tileRect(i, j)});
+                if (!sweep.overlap.empty && sweep.overlap.low.isFinite() && sweep.overlap.low.value == 1) return true;
+            }
+    }
+    return false;
+}
+
+/// The bits between the finest set bit and the largest magnitude among a scene's inputs: what
+/// sets the width of the resolver's integers (above about 60 it needs more than 128 bits for
+/// products; above about 92, more than 192).
+template <class T>
+int latticeSpan(const Scene<T>& scene) {
+    int lowest = std::numeric_limits<int>::max();
+    int highest = std::numeric_limits<int>::min();
+    const auto note = [&](T v) {
+        if (v == 0) return;
+        int e = 0;
+        const T fraction = std::frexp(v, &e);
+        auto m = static_cast<std::int64_t>(std::ldexp(fraction, std::numeric_limits<T>::digits));
+        int low = e - std::numeric_limits<T>::digits;
+        while (m % 2 == 0) {
+            m /= 2;
+            ++low;
+        }
+        lowest = std::min(lowest, low);
+        highest = std::max(highest, e);
+    };
+    note(scene.map.origin.x);
+    note(scene.map.origin.y);
+    note(scene.map.tileSize.x);
+    note(scene.map.tileSize.y);
+    note(scene.box.pos.x);
+    note(scene.box.pos.y);
+    note(scene.box.size.x);
+    note(scene.box.size.y);
+    for (const Vec2<T>& m : scene.moves) {
+        note(m.x);
+        note(m.y);
+    }
+    return highest >= lowest ? highest - lowest : 0;
 }
 
 }  // namespace
@@ -381,37 +500,33 @@ std::vector<std::string> classifyScene(const Scene<T>& scene) {
     bool twoStep = false;
     bool seam = false;
     bool startOverlap = false;
+    bool down = false;
+    bool timeTie = false;
     for (const auto& f : frames) {
         hit = hit || !f.contacts.empty();
         startOverlap = startOverlap || !f.startOverlaps.empty();
+        down = down || roundedDown<T>(f);
         for (std::size_t k = 0; k < f.contacts.size(); ++k) {
             const auto& c = f.contacts[k];
             tie = tie || c.tie;
             touch0 = touch0 || c.time == 0;
             twoStep = twoStep || c.step == 2;
+            timeTie = timeTie || halfwayBetweenValues<T>(c.time);
             if (k > 0 && f.contacts[k - 1].step == c.step && f.contacts[k - 1].normal == c.normal) seam = true;
         }
     }
-    // The rounded end overlapping a tile the frame neither started in nor hit: the case where the
-    // contract's rounding undoes a corner miss (see neverEndsInsideATileItDidNotStartIn).
-    const std::vector<FrameResult<T>> rounded = toFrameResultsForTags(scene);
-    const oracle::ExactTileMap map = oracle::toExact(scene.map);
-    bool roundingOverlap = false;
-    for (const FrameResult<T>& f : rounded) {
-        const oracle::ExactRect box = oracle::rectOf(oracle::toExact(Box<T>{f.position, scene.box.size}));
-        for (std::int32_t j = 0; j < map.rows && !roundingOverlap; ++j)
-            for (std::int32_t i = 0; i < map.columns && !roundingOverlap; ++i)
-                roundingOverlap = map.isSolid(i, j) && oracle::overlaps(box, map.tileRect(i, j)) &&
-                                  std::find(f.startOverlaps.begin(), f.startOverlaps.end(), Cell{i, j}) ==
-                                      f.startOverlaps.end();
-    }
     tags.push_back(hit ? "hit" : "miss");
-    if (roundingOverlap) tags.push_back("rounding-overlap");
+    if (down) tags.push_back("rounded-down");
     if (tie) tags.push_back("tie");
+    if (timeTie) tags.push_back("time-tie");
+    if (reachesATileAtTheEnd(scene, frames)) tags.push_back("reaches-at-end");
     if (touch0) tags.push_back("touch-at-0");
     if (twoStep) tags.push_back("two-step");
     if (seam) tags.push_back("seam");
     if (startOverlap) tags.push_back("start-overlap");
+    const int span = latticeSpan(scene);
+    if (span > 60) tags.push_back("lattice-wide");
+    if (span > 92) tags.push_back("lattice-192");
     if (std::fabs(scene.map.origin.x) >= T(1048576) || std::fabs(scene.map.origin.y) >= T(1048576)) tags.push_back("far-origin");
     return tags;
 }

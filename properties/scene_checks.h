@@ -28,8 +28,12 @@ template <class T>
 template <class T>
 [[nodiscard]] const Claim<T>* findClaim(const std::string& name);
 
-/// Coverage tags of a scene, from its exact resolution: "hit", "miss", "tie", "touch-at-0",
-/// "two-step", "seam" (several tiles hit at once on one face), "start-overlap", "far-origin".
+/// Coverage tags of a scene, from its exact resolution: "hit", "miss", "tie" (an exact corner
+/// tie), "time-tie" (a frame time exactly halfway between two T values), "reaches-at-end" (a
+/// tile first reached at exactly t = 1 with both axes moving), "rounded-down" (the rounding
+/// rule's exception changed a position), "touch-at-0", "two-step", "seam" (several tiles hit at
+/// once on one face), "start-overlap", "lattice-wide" and "lattice-192" (inputs spanning more
+/// than 60 or 92 bits: the resolver's wide integer tiers), "far-origin".
 template <class T>
 [[nodiscard]] std::vector<std::string> classifyScene(const Scene<T>& scene);
 

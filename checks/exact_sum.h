@@ -3,10 +3,10 @@
 
 #include <limits>
 
-// The exact sign of a short sum of floats or doubles, so that the fuzz targets and the soak can
-// check the contract's safety rules ("x + w > a", "s + d - e >= 0") without rounding, and
-// without the library's lattice code or the Boost oracle (they stay dependency-light, and a
-// check that shared code with the resolver could share its bugs).
+// The exact sign of a short sum of floats or doubles, so that the contract checks
+// (frame_safety.h) can test the safety rules ("x + w > a", "s + d - e >= 0") without rounding,
+// and without the library's lattice code or the GMP oracle (they stay light enough for the
+// fuzz targets and the soak, and a check that shared code with the resolver could share its bugs).
 //
 // Why it is exact. Every float and double converts exactly to x87 extended precision (64-bit
 // significand, 15-bit exponent). Knuth's TwoSum gives the exact rounding error of a sum
@@ -18,7 +18,7 @@
 // magnitude, and the sign of the sum is the sign of its largest nonzero component.
 // Needs -ffp-contract=off (tilesweep_warnings sets it) and round-to-nearest.
 
-namespace tilesweep::fuzz {
+namespace tilesweep::checks {
 
 static_assert(std::numeric_limits<long double>::radix == 2 &&
                   std::numeric_limits<long double>::digits >= 64 &&
@@ -26,7 +26,7 @@ static_assert(std::numeric_limits<long double>::radix == 2 &&
               "the exact checks need x87 extended (or wider) long double");
 
 /// The most terms signOfSum takes.
-inline constexpr int kMaxSumTerms = 4;
+inline constexpr int kMaxSumTerms = 6;
 
 /// The sign (-1, 0 or 1) of the exact sum of `count` (at most kMaxSumTerms) finite terms,
 /// each a float or a double widened to long double.
@@ -58,4 +58,4 @@ template <class T>
     return signOfSum(terms, 3);
 }
 
-}  // namespace tilesweep::fuzz
+}  // namespace tilesweep::checks
