@@ -4,8 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 #include "axis_sweep.h"
+#include "decision_path.h"
+#include "fast_frame.h"
 #include "fault_injection.h"
 #include "lattice.h"
 #include "wide_int.h"
@@ -34,6 +37,9 @@
 
 namespace tilesweep {
 namespace {
+
+/// The path that decided this thread's last frame (decision_path.h): one byte, no constructor.
+thread_local detail::DecisionPath lastPath = detail::DecisionPath::Exact;
 
 using detail::AxisMotion;
 using detail::Fraction;
@@ -420,10 +426,27 @@ SweepResult<T> resolveMove(const SweepInput<T>& input, const ResolveOutput<T>& o
         invalid.status = Status::InvalidInput;
         invalid.position = input.box.pos;
         if (!std::isfinite(invalid.position.x) || !std::isfinite(invalid.position.y)) invalid.position = {0, 0};
+        lastPath = detail::DecisionPath::Exact;
         return invalid;
     }
+    if constexpr (std::is_same<T, float>::value) {
+        // The fast path, when the range test shows it holds every value exactly (fast_frame.h).
+        if (detail::admitFloatFrame(input)) {
+            detail::FastFrame frame(input);
+            SweepResult<T> result;
+            if (frame.run(output, result)) {
+                lastPath = frame.refined() ? detail::DecisionPath::Filtered : detail::DecisionPath::Fast;
+                return result;
+            }
+        }
+    }
+    lastPath = detail::DecisionPath::Exact;
     return solveOnLattice(input, output);
 }
+
+namespace detail {
+DecisionPath lastDecisionPath() noexcept { return lastPath; }
+}  // namespace detail
 
 template SweepResult<float> resolveMove<float>(const SweepInput<float>&, const ResolveOutput<float>&) noexcept;
 template SweepResult<double> resolveMove<double>(const SweepInput<double>&, const ResolveOutput<double>&) noexcept;
