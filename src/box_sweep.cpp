@@ -3,8 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <type_traits>
 
 #include "axis_sweep.h"
+#include "fast_frame.h"
 #include "lattice.h"
 
 // One box against one tile: the same exact test the resolver applies to every candidate tile
@@ -35,6 +39,58 @@ BoxSweepOutput<T> sweepOnLattice(const BoxSweepInput<T>& in, const detail::Dyadi
     return out;
 }
 
+/// Whether the fast path holds every value of this float pair exactly: as admitFloatFrame
+/// (fast_frame.h), with the box's edges (sums of three inputs) and the tile's bounds as the
+/// coordinates. All nonzero inputs normal; every coordinate below 2^C, every difference of two
+/// below 2^(C+1), all multiples of 2^G; (C + 1) - G <= 53.
+bool admitFloatPair(const BoxSweepInput<float>& in) noexcept {
+    const float values[10] = {in.box.pos.x,  in.box.pos.y,  in.box.size.x, in.box.size.y, in.displacement.x,
+                              in.displacement.y, in.tileMin.x, in.tileMin.y, in.tileMax.x, in.tileMax.y};
+    int lowest = 255;
+    int boxTop = 0;
+    int tileTop = 0;
+    for (int k = 0; k < 10; ++k) {
+        std::uint32_t bits = 0;
+        std::memcpy(&bits, &values[k], sizeof bits);
+        const int f = static_cast<int>((bits >> 23) & 0xff);  // |v| in [2^(f-127), 2^(f-126))
+        if ((bits & 0x7fffffff) == 0) continue;
+        if (f == 0) return false;  // subnormal
+        lowest = std::min(lowest, f);
+        if (k < 6) boxTop = std::max(boxTop, f);
+        else tileTop = std::max(tileTop, f);
+    }
+    const int top = std::max(boxTop + 2, tileTop);  // coordinates below 2^(top - 126)
+    int span = (top - 126 + 1) - (lowest - 150);
+#if defined(TILESWEEP_FAULT_FAST_RANGE_TOO_WIDE)
+    --span;  // deliberate fault: the range test one binade too generous
+#endif
+    return span <= detail::kFastSpanBits && top - 126 <= 120;
+}
+
+/// The pair on exact doubles (fast_frame.h): the verdict by testTileFast, the time rounded by
+/// roundTimeToFloat; false when the time needs the lattice's rounding.
+bool sweepFast(const BoxSweepInput<float>& in, BoxSweepOutput<float>& out) noexcept {
+    const auto axis = [](float pos, float size, float disp) {
+        const double d = disp;
+        const double p = pos;
+        return detail::FastAxis{p, p + static_cast<double>(size), d, std::fabs(d), d > 0 ? 1 : (d < 0 ? -1 : 0), 0, 1, 0};
+    };
+    const detail::FastAxis mx = axis(in.box.pos.x, in.box.size.x, in.displacement.x);
+    const detail::FastAxis my = axis(in.box.pos.y, in.box.size.y, in.displacement.y);
+    bool refined = false;
+    const detail::FastTileTest test =
+        detail::testTileFast(mx, my, in.tileMin.x, in.tileMax.x, in.tileMin.y, in.tileMax.y, refined);
+    switch (test.verdict) {
+        case detail::TileVerdict::Misses: out.state = BoxSweepState::Misses; return true;
+        case detail::TileVerdict::StartsOverlapping: out.state = BoxSweepState::StartsOverlapping; return true;
+        case detail::TileVerdict::BlocksOnX: out.axis = Axis::X; break;
+        case detail::TileVerdict::BlocksOnY: out.axis = Axis::Y; break;
+        case detail::TileVerdict::Tie: out.axis = detail::settleTie(in.xFaceExposed, in.yFaceExposed); break;
+    }
+    out.state = BoxSweepState::Blocks;
+    return detail::roundTimeToFloat(test.time, refined, out.time);
+}
+
 }  // namespace
 
 template <class T>
@@ -43,6 +99,10 @@ BoxSweepOutput<T> sweepBox(const BoxSweepInput<T>& in) noexcept {
         !isFinite(in.displacement) || !isFinite(in.tileMin) || !isFinite(in.tileMax) ||
         !(in.tileMin.x < in.tileMax.x && in.tileMin.y < in.tileMax.y))
         return {};
+    if constexpr (std::is_same<T, float>::value) {
+        BoxSweepOutput<T> out;
+        if (admitFloatPair(in) && sweepFast(in, out)) return out;
+    }
     using detail::decompose;
     const detail::Dyadic d[10] = {decompose(in.box.pos.x),      decompose(in.box.pos.y),
                                   decompose(in.box.size.x),     decompose(in.box.size.y),

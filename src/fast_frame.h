@@ -35,12 +35,15 @@
 
 namespace tilesweep::detail {
 
-/// Certified bound on the error of the walk's secondary range, in units of the double
-/// precision u = 2^-53 times (|low| + |high| + |disp| + |origin|) / tile cells. The value is
-/// computed by five rounded operations (a quotient, a product, a sum, a difference and a
-/// quotient), whose errors add up to less than 6 such units (FastFrame::sweepBothAxes); 32
-/// leaves room for the rounding of the bound itself and of its subtraction from the estimate.
-inline constexpr double kSecondaryRangeErrorUlps = 32;
+/// Certified bound on the error of the walk's secondary range estimate, in units of
+/// u = 2^-53 times A / tile cells, A = |low| + |high| + |disp| + |origin| of the secondary axis.
+/// The estimate v = (low + disp * (t / speed) - origin) / tile takes five rounded operations;
+/// with tau = t / speed in [0, 1] and every intermediate below A in magnitude, their errors are
+/// at most 2.01u|disp| (quotient, product), + uA (sum), + uA (difference), then + uA/tile
+/// (quotient): under 5.05 uA/tile in all. Subtracting (adding) the margin rounds once more,
+/// by at most 1.01 uA/tile, and the margin itself is computed 4u low at worst: 8 covers the
+/// 6.07 needed.
+inline constexpr double kSecondaryRangeErrorUlps = 8;
 
 /// The most bits the fast path's exact doubles may need: a double's 53.
 inline constexpr int kFastSpanBits = 53;
@@ -148,6 +151,95 @@ struct FastTime {
     double den;
 };
 
+/// The verdict on one tile and, when it blocks, its time of impact (TileTest, axis_sweep.h).
+struct FastTileTest {
+    TileVerdict verdict;
+    FastTime time;
+};
+
+/// testTile (axis_sweep.h) on exact doubles: the same branches, every comparison of two times
+/// made by compareProducts. Only the motion fields of mx and my are read.
+[[nodiscard]] inline FastTileTest testTileFast(const FastAxis& mx, const FastAxis& my, double xlo, double xhi,
+                                               double ylo, double yhi, bool& refined) noexcept {
+    FastTileTest miss{TileVerdict::Misses, {0, 1}};
+    if (mx.dir == 0 || my.dir == 0) {
+        if (mx.dir == 0 && my.dir == 0) {
+            if (mx.overlapsAtStart(xlo, xhi) && my.overlapsAtStart(ylo, yhi)) miss.verdict = TileVerdict::StartsOverlapping;
+            return miss;
+        }
+        const bool xMoves = mx.dir != 0;
+        const FastAxis& moving = xMoves ? mx : my;
+        const FastAxis& still = xMoves ? my : mx;
+        const double lo = xMoves ? xlo : ylo;
+        const double hi = xMoves ? xhi : yhi;
+        if (!(xMoves ? still.overlapsAtStart(ylo, yhi) : still.overlapsAtStart(xlo, xhi))) return miss;
+        const double entry = moving.entryDistance(lo, hi);
+        if (entry < 0) {
+            if (moving.exitDistance(lo, hi) > 0) miss.verdict = TileVerdict::StartsOverlapping;
+            return miss;
+        }
+        if (entry >= moving.speed) return miss;
+        return {xMoves ? TileVerdict::BlocksOnX : TileVerdict::BlocksOnY, {entry, moving.speed}};
+    }
+    const double ex = mx.entryDistance(xlo, xhi);
+    const double ey = my.entryDistance(ylo, yhi);
+    const double xx = mx.exitDistance(xlo, xhi);
+    const double xy = my.exitDistance(ylo, yhi);
+    if (ex < 0 && ey < 0) {
+        if (xx > 0 && xy > 0) miss.verdict = TileVerdict::StartsOverlapping;
+        return miss;
+    }
+    if (ex >= mx.speed || ey >= my.speed) return miss;  // E >= 1
+#if !defined(TILESWEEP_FAULT_NO_CORNER_MISS)
+    // E < X: each axis enters before the other exits.
+    if (compareProducts(ex, my.speed, xy, mx.speed, refined) >= 0) return miss;
+    if (compareProducts(ey, mx.speed, xx, my.speed, refined) >= 0) return miss;
+#endif
+#if defined(TILESWEEP_FAULT_DOUBLE_PREDICATE)
+    // Deliberate fault: the entry comparison in plain double arithmetic.
+    const double pa = ex * my.speed;
+    const double pb = ey * mx.speed;
+    const int order = pa > pb ? 1 : (pa < pb ? -1 : 0);
+#else
+    const int order = compareProducts(ex, my.speed, ey, mx.speed, refined);
+#endif
+    if (order > 0) return {TileVerdict::BlocksOnX, {ex, mx.speed}};
+    if (order < 0) return {TileVerdict::BlocksOnY, {ey, my.speed}};
+    return {TileVerdict::Tie, {ey, my.speed}};
+}
+
+/// The exact time num / den (0 <= num <= den, exact doubles) rounded to the nearest float,
+/// ties to even; false for a time in float's subnormal range (the lattice rounds those).
+/// `refined` is set when the rounded quotient landed on a float rounding midpoint.
+[[nodiscard]] inline bool roundTimeToFloat(const FastTime& t, bool& refined, float& out) noexcept {
+    const double q = t.num / t.den + 0.0;  // -0 (from -0 - +0) reads +0, as the lattice's does
+    if (q != 0 && q < 0x1p-126) return false;
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &q, sizeof bits);
+    // The 29 bits of q below float's 24 (q is a normal double in float's normal range).
+    // Rounding q to float is the correct rounding of num/den unless q is a float rounding
+    // midpoint: q = fl(num/den) lies on the same side of every float and every midpoint as
+    // num/den does (monotonic rounding, and floats and their midpoints are doubles).
+    if ((bits & 0x1fffffffu) != 0x10000000u) {
+        out = static_cast<float>(q);
+        return true;
+    }
+    // q is a midpoint: the sign of num - q*den decides. q*den = p + e exactly (TwoProduct),
+    // and num - p is exact (Sterbenz: p is within a factor 2 of num).
+    refined = true;
+    const double p = q * t.den;
+    const double e = productError(q, t.den, p);
+    const double r = t.num - p;
+    if (r > e) {
+        out = roundToFloat(q, true);
+    } else if (r < e) {
+        out = roundToFloat(q, false);
+    } else {
+        out = static_cast<float>(q);  // exactly the midpoint: ties to even
+    }
+    return true;
+}
+
 /// The fast path's frame solver: FrameSolver (resolve.cpp) step for step, on exact doubles.
 class FastFrame {
 public:
@@ -247,42 +339,11 @@ private:
         ++hits.count;
     }
 
-    /// The exact time num / den (0 <= num < den) rounded to the nearest float, ties to even;
-    /// false for a time in float's subnormal range (the lattice rounds those).
-    bool roundTime(const FastTime& t, float& out) noexcept {
-        const double q = t.num / t.den + 0.0;  // -0 (from -0 - +0) reads +0, as the lattice's does
-        if (q != 0 && q < 0x1p-126) return false;
-        std::uint64_t bits = 0;
-        std::memcpy(&bits, &q, sizeof bits);
-        // The 29 bits of q below float's 24 (q is a normal double in float's normal range).
-        // Rounding q to float is the correct rounding of num/den unless q is a float rounding
-        // midpoint: q = fl(num/den) lies on the same side of every float and every other
-        // midpoint as num/den does (monotonic rounding, and both are doubles).
-        if ((bits & 0x1fffffffu) != 0x10000000u) {
-            out = static_cast<float>(q);
-            return true;
-        }
-        // q is a midpoint: the sign of num - q*den decides. q*den = p + e exactly (TwoProduct),
-        // and num - p is exact (Sterbenz: p is within a factor 2 of num).
-        refined_ = true;
-        const double p = q * t.den;
-        const double e = productError(q, t.den, p);
-        const double r = t.num - p;
-        if (r > e) {
-            out = roundToFloat(q, true);
-        } else if (r < e) {
-            out = roundToFloat(q, false);
-        } else {
-            out = static_cast<float>(q);  // exactly the midpoint: ties to even
-        }
-        return true;
-    }
-
     /// Sorts a step's stored hits by row, then column, and writes its frame time.
     bool finishStep(Hits& hits) noexcept {
         const std::int32_t stored = std::min(hits.count, hits.capacity);
         float time = 0;
-        if (!roundTime(hits.time, time)) return false;
+        if (!roundTimeToFloat(hits.time, refined_, time)) return false;
         for (std::int32_t k = 0; k < stored; ++k) hits.store[k].time = time;
         if (stored > 1)
             std::sort(hits.store, hits.store + stored, [](const Contact<float>& a, const Contact<float>& b) {
@@ -364,7 +425,12 @@ private:
         const FastAxis& ms = axis_[s];
         const bool forward = ms.dir > 0;
         // The secondary range's certified error bound, in cells (kSecondaryRangeErrorUlps).
-        const double margin = kSecondaryRangeErrorUlps * 0x1p-53 *
+#if defined(TILESWEEP_FAULT_FILTER_BOUND_HALVED)
+        const double bound = kSecondaryRangeErrorUlps / 2;  // deliberate fault: the bound halved
+#else
+        const double bound = kSecondaryRangeErrorUlps;
+#endif
+        const double margin = bound * 0x1p-53 *
                               (std::fabs(ms.low) + std::fabs(ms.high) + ms.speed + std::fabs(ms.origin)) / ms.tile;
         for (std::int64_t k = firstCellAhead(p); k >= 0 && k < mp.cells; k += mp.dir) {
             const double lo = mp.edge(k);
@@ -397,42 +463,25 @@ private:
         }
     }
 
-    /// testTile (axis_sweep.h) for a box moving on both axes, on exact doubles.
     void testAndRecord(std::int64_t i, std::int64_t j, Hits& hits) noexcept {
         const FastAxis& mx = axis_[0];
         const FastAxis& my = axis_[1];
-        const double xlo = mx.edge(i);
-        const double xhi = mx.edge(i + 1);
-        const double ylo = my.edge(j);
-        const double yhi = my.edge(j + 1);
-        const double ex = mx.entryDistance(xlo, xhi);
-        const double ey = my.entryDistance(ylo, yhi);
-        if (ex < 0 && ey < 0) return;  // overlapping now, or I lies before t = 0
-        if (ex >= mx.speed || ey >= my.speed) return;  // E >= 1
-#if !defined(TILESWEEP_FAULT_NO_CORNER_MISS)
-        // E < X: each axis enters before the other exits.
-        if (compareProducts(ex, my.speed, my.exitDistance(ylo, yhi), mx.speed, refined_) >= 0) return;
-        if (compareProducts(ey, mx.speed, mx.exitDistance(xlo, xhi), my.speed, refined_) >= 0) return;
-#endif
-#if defined(TILESWEEP_FAULT_DOUBLE_PREDICATE)
-        // Deliberate fault: the entry comparison in plain double arithmetic.
-        const double pa = ex * my.speed;
-        const double pb = ey * mx.speed;
-        const int order = pa > pb ? 1 : (pa < pb ? -1 : 0);
-#else
-        const int order = compareProducts(ex, my.speed, ey, mx.speed, refined_);
-#endif
+        const FastTileTest test = testTileFast(mx, my, mx.edge(i), mx.edge(i + 1), my.edge(j), my.edge(j + 1), refined_);
         Axis axis = Axis::Y;
-        if (order > 0) {
-            axis = Axis::X;
-        } else if (order == 0) {
-            const bool xExposed = !map_.isSolid(i - mx.dir, j);
-            const bool yExposed = !map_.isSolid(i, j - my.dir);
-            axis = settleTie(xExposed, yExposed);
+        switch (test.verdict) {
+            case TileVerdict::Misses:
+            case TileVerdict::StartsOverlapping: return;
+            case TileVerdict::BlocksOnX: axis = Axis::X; break;
+            case TileVerdict::BlocksOnY: axis = Axis::Y; break;
+            case TileVerdict::Tie: {
+                const bool xExposed = !map_.isSolid(i - mx.dir, j);
+                const bool yExposed = !map_.isSolid(i, j - my.dir);
+                axis = settleTie(xExposed, yExposed);
+                break;
+            }
         }
         const int a = axis == Axis::X ? 0 : 1;
-        const FastTime t = order > 0 ? FastTime{ex, mx.speed} : FastTime{ey, my.speed};
-        add(hits, {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)}, axis, t,
+        add(hits, {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)}, axis, test.time,
             touchPosition(a, a == 0 ? i : j));
     }
 

@@ -14,10 +14,16 @@
 //   OLD_ROUNDING_RULE  positions always rounded toward the start: the contract before its
 //                      amendment, which can leave the far edge inside a missed corner (resolve.cpp)
 //   FMA                -ffp-contract=fast instead of off           (cmake/warnings.cmake)
+//   FILTER_BOUND_HALVED  the fast path's certified error bound (the secondary range of its
+//                      walk, kSecondaryRangeErrorUlps) halved, below what its derivation needs
+//                                                                  (fast_frame.h)
+//   FAST_RANGE_TOO_WIDE  the range test admitting a float frame to the fast path one binade
+//                      too generous (spans of 54 bits, which a double cannot hold) (fast_frame.h)
 
 #if defined(TILESWEEP_FAULT_TOUCH_OVERLAPS) || defined(TILESWEEP_FAULT_NO_CORNER_MISS) ||   \
     defined(TILESWEEP_FAULT_TIE_REVERSED) || defined(TILESWEEP_FAULT_DOUBLE_PREDICATE) || \
     defined(TILESWEEP_FAULT_ROUND_NEAREST) || defined(TILESWEEP_FAULT_BROADPHASE_SHORT) || defined(TILESWEEP_FAULT_FMA) || \
-    defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE)
+    defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE) || defined(TILESWEEP_FAULT_FILTER_BOUND_HALVED) || \
+    defined(TILESWEEP_FAULT_FAST_RANGE_TOO_WIDE)
 #define TILESWEEP_FAULT_INJECTED 1
 #endif
