@@ -114,7 +114,11 @@ template <class Num>
         if (xx.sign() > 0 && xy.sign() > 0) miss.verdict = TileVerdict::StartsOverlapping;
         return miss;
     }
+#if defined(TILESWEEP_FAULT_END_INCLUSIVE)
+    if (ex > mx.speed || ey > my.speed) return miss;  // deliberate fault: a tile reached at t = 1 blocks
+#else
     if (ex >= mx.speed || ey >= my.speed) return miss;  // E >= 1
+#endif
 #if !defined(TILESWEEP_FAULT_NO_CORNER_MISS)
     // E < X: each axis enters before the other exits (an axis's own entry precedes its exit).
     if (!(ex * my.speed < xy * mx.speed)) return miss;

@@ -13,6 +13,9 @@
 //   BROADPHASE_SHORT   the broadphase's secondary range one cell short   (resolve.cpp)
 //   OLD_ROUNDING_RULE  positions always rounded toward the start: the contract before its
 //                      amendment, which can leave the far edge inside a missed corner (resolve.cpp)
+//   TIME_TIES_AWAY     a frame time exactly halfway between two values rounded away, not to even (lattice.h)
+//   END_INCLUSIVE      a tile reached at exactly t = 1, both axes moving, counted as a hit (axis_sweep.h)
+//   NARROW_TIER        frames that need 128 to 191 bits solved on 128-bit integers (lattice.h)
 //   FMA                -ffp-contract=fast instead of off           (cmake/warnings.cmake)
 //   FILTER_BOUND_HALVED  the fast path's certified error bound (the secondary range of its
 //                      walk, kSecondaryRangeErrorUlps) halved, below what its derivation needs
@@ -23,7 +26,8 @@
 #if defined(TILESWEEP_FAULT_TOUCH_OVERLAPS) || defined(TILESWEEP_FAULT_NO_CORNER_MISS) ||   \
     defined(TILESWEEP_FAULT_TIE_REVERSED) || defined(TILESWEEP_FAULT_DOUBLE_PREDICATE) || \
     defined(TILESWEEP_FAULT_ROUND_NEAREST) || defined(TILESWEEP_FAULT_BROADPHASE_SHORT) || defined(TILESWEEP_FAULT_FMA) || \
-    defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE) || defined(TILESWEEP_FAULT_FILTER_BOUND_HALVED) || \
+    defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE) || defined(TILESWEEP_FAULT_TIME_TIES_AWAY) || \
+    defined(TILESWEEP_FAULT_END_INCLUSIVE) || defined(TILESWEEP_FAULT_NARROW_TIER) || defined(TILESWEEP_FAULT_FILTER_BOUND_HALVED) || \
     defined(TILESWEEP_FAULT_FAST_RANGE_TOO_WIDE)
 #define TILESWEEP_FAULT_INJECTED 1
 #endif

@@ -21,6 +21,7 @@
 #include <limits>
 #include <type_traits>
 
+#include "fault_injection.h"
 #include "wide_int.h"
 
 namespace tilesweep::detail {
@@ -111,7 +112,11 @@ template <class T>
                 } else if (dropped > half || (dropped == half && sticky)) {
                     up = true;
                 } else if (dropped == half) {
+#if defined(TILESWEEP_FAULT_TIME_TIES_AWAY)
+                    up = true;  // deliberate fault: an exact halfway time rounded away, not to even
+#else
                     up = (kept & 1) != 0;
+#endif
                 }
                 break;
             }
@@ -233,6 +238,9 @@ namespace tilesweep::detail {
 /// double scenes), 640 (any float scene) or 4480 (any double scene, subnormals to the largest finite).
 template <class F>
 decltype(auto) withWidth(int bits, F&& f) {
+#if defined(TILESWEEP_FAULT_NARROW_TIER)
+    if (bits < 192) return f(Int128::fromInt(0));  // deliberate fault: 128 bits where 192 are needed
+#endif
     if (bits < 127) return f(Int128::fromInt(0));
     if (bits < 192) return f(WideInt<3>::fromInt(0));
     if (bits < 256) return f(WideInt<4>::fromInt(0));
