@@ -150,6 +150,9 @@ void addAll(std::vector<Property>& out) {
     addClaim<T>(out, "roundsFarEdgesByTheAmendedRule", "matchesExactReferenceBitForBit", Family::FarEdge,
                 {{"rounded-down", 0.05}, {"hit", 0.2}});
     addClaim<T>(out, "neverGetsIntoAWall", "neverGetsIntoAWall", Family::FarEdge, {{"rounded-down", 0.05}});
+    // Events the other families do not aim at: each has its floor.
+    addClaim<T>(out, "decidesFineBitsExactly", "matchesExactReferenceBitForBit", Family::FineBits,
+                {{"time-tie", 0.05}, {"reaches-at-end", 0.05}, {"lattice-wide", 0.05}, {"lattice-192", 0.03}});
     addClaim<T>(out, "farEdgesNeverEndInsideATile", "neverEndsInsideATileItDidNotStartIn", Family::FarEdge,
                 {{"rounded-down", 0.05}});
     addClaim<T>(out, "farEdgesObeyTheSafetyRules", "obeysTheSafetyRules", Family::FarEdge, {{"rounded-down", 0.05}});
