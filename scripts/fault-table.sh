@@ -3,11 +3,13 @@
 # time (src/fault_injection.h), runs the property suite on it, and prints which properties
 # caught the fault and the shrunk counterexample's size. Usage:
 #   bash scripts/fault-table.sh [CASES]        (default 300 cases per property)
+# TILESWEEP_FAULTS="NAME ..." runs only those faults.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 source "$root/scripts/setup.sh"
 cases=${1:-300}
-faults=(TOUCH_OVERLAPS NO_CORNER_MISS TIE_REVERSED DOUBLE_PREDICATE ROUND_NEAREST BROADPHASE_SHORT FMA)
+faults=(${TILESWEEP_FAULTS:-TOUCH_OVERLAPS NO_CORNER_MISS TIE_REVERSED DOUBLE_PREDICATE ROUND_NEAREST BROADPHASE_SHORT FMA
+         OLD_ROUNDING_RULE TIME_TIES_AWAY END_INCLUSIVE NARROW_TIER})
 out=${TILESWEEP_FAULT_DIR:-$root/build-faults}
 mkdir -p "$out"
 echo "| fault | caught by (a shrunk counterexample) | smallest counterexample | other failures | seconds |"
