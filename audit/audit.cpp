@@ -15,6 +15,7 @@
 #include <thread>
 #include <utility>
 
+#include "frame_safety.h"  // checks/
 #include "oracle/exact/exact_resolve.h"
 #include "oracle/exact/exact_sweep.h"
 #include "oracle/exact/rational_convert.h"
@@ -199,7 +200,8 @@ struct SceneVerdict {
 template <class T>
 class SceneJudge {
 public:
-    explicit SceneJudge(const Scene<T>& scene) : scene_(scene), map_(oracle::toExact(scene.map)) {
+    explicit SceneJudge(const Scene<T>& scene)
+        : scene_(scene), map_(oracle::toExact(scene.map)), edges_(checks::computeEdges(scene.map.view())) {
         for (std::int32_t j = 0; j < scene.map.rows; ++j)
             for (std::int32_t i = 0; i < scene.map.columns; ++i)
                 if (map_.isSolid(i, j)) solid_.push_back({i, j});
@@ -380,18 +382,16 @@ private:
             if (beyond) fail(Metric::Tunnel);
         }
 
-        // Ends inside a tile it did not start in.
-        for (const Cell& c : solid_) {
-            if (!oracle::overlaps(endRect, map_.tileRect(c.i, c.j))) continue;
-            const bool startedIn = std::any_of(f.exact.startOverlaps.begin(), f.exact.startOverlaps.end(),
-                                               [&](const Cell& s) { return s == c; });
-            if (!startedIn) fail(Metric::Inside);
-        }
+        // Ends inside a tile it did not start in: the shared safety rule, no allowance.
+        if (checks::findNewOverlap(scene_.map.view(), edges_, Box<T>{f.start, scene_.box.size}, got.position, scratch_))
+            fail(Metric::Inside);
     }
 
     const Scene<T>& scene_;
     ExactTileMap map_;
     std::vector<Cell> solid_;
+    checks::MapEdges<T> edges_;
+    checks::SafetyScratch scratch_;
     std::vector<std::vector<FrameFacts<T>>> facts_;
 };
 
