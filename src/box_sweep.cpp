@@ -73,7 +73,7 @@ bool sweepFast(const BoxSweepInput<float>& in, BoxSweepOutput<float>& out) noexc
     const auto axis = [](float pos, float size, float disp) {
         const double d = disp;
         const double p = pos;
-        return detail::FastAxis{p, p + static_cast<double>(size), d, std::fabs(d), d > 0 ? 1 : (d < 0 ? -1 : 0), 0, 1, 0};
+        return detail::FastAxis{p, p + static_cast<double>(size), d, std::fabs(d), d > 0 ? 1 : (d < 0 ? -1 : 0), 0, 1, 0, 1};
     };
     const detail::FastAxis mx = axis(in.box.pos.x, in.box.size.x, in.displacement.x);
     const detail::FastAxis my = axis(in.box.pos.y, in.box.size.y, in.displacement.y);

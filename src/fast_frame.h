@@ -37,13 +37,14 @@ namespace tilesweep::detail {
 
 /// Certified bound on the error of the walk's secondary range estimate, in units of
 /// u = 2^-53 times A / tile cells, A = |low| + |high| + |disp| + |origin| of the secondary axis.
-/// The estimate v = (low + disp * (t / speed) - origin) / tile takes five rounded operations;
-/// with tau = t / speed in [0, 1] and every intermediate below A in magnitude, their errors are
-/// at most 2.01u|disp| (quotient, product), + uA (sum), + uA (difference), then + uA/tile
-/// (quotient): under 5.05 uA/tile in all. Subtracting (adding) the margin rounds once more,
-/// by at most 1.01 uA/tile, and the margin itself is computed 4u low at worst: 8 covers the
-/// 6.07 needed.
-inline constexpr double kSecondaryRangeErrorUlps = 8;
+/// The estimate v = (low + (disp / speed) * t - origin) * fl(1 / tile) takes six rounded
+/// operations. With t / speed in [0, 1] and every intermediate below A(1 + 3u) in magnitude,
+/// their errors are at most 2.01u|disp| (the slope and its product with t), + 1.01uA (sum),
+/// + 1.01uA (difference), all scaled by 1/tile (1 + 2.01u), then + 2.01uA/tile (the rounded
+/// reciprocal and the product): under 6.05 uA/tile in all. Adding or subtracting the margin
+/// rounds once more, by at most 1.01 uA/tile, and the margin itself is computed 5u low at
+/// worst: 10 covers the 7.07 needed (and half of it does not).
+inline constexpr double kSecondaryRangeErrorUlps = 10;
 
 /// The most bits the fast path's exact doubles may need: a double's 53.
 inline constexpr int kFastSpanBits = 53;
@@ -88,6 +89,13 @@ inline constexpr int kFastSpanBits = 53;
     return span <= kFastSpanBits && top - 126 <= 120;
 }
 
+/// floor(v) for |v| < 2^62, without a libm call (x86-64's baseline has no rounding instruction).
+[[nodiscard]] inline std::int64_t floorToInt(double v) noexcept {
+    auto k = static_cast<std::int64_t>(v);  // toward zero
+    if (static_cast<double>(k) > v) --k;
+    return k;
+}
+
 /// One axis of a fast frame: the box's motion and the grid, as exact doubles.
 struct FastAxis {
     double low;     ///< box edge with the smaller coordinate, at t = 0
@@ -98,6 +106,7 @@ struct FastAxis {
     double origin;  ///< map origin
     double tile;    ///< tile size
     std::int64_t cells;
+    double invTile; ///< 1 / tile, rounded: for estimates only
 
     [[nodiscard]] double edge(std::int64_t k) const noexcept { return origin + static_cast<double>(k) * tile; }
     [[nodiscard]] double entryDistance(double lo, double hi) const noexcept { return dir > 0 ? lo - high : low - hi; }
@@ -110,15 +119,17 @@ struct FastAxis {
 #endif
     }
 
-    /// clamp(floor((c - origin) / tile), -1, cells), exactly. The rounded quotient is at least
-    /// the exact one's floor (rounding is monotonic and that floor is a double) and less than
-    /// one above it, so one exact comparison with a tile edge settles it.
+    /// clamp(floor((c - origin) / tile), -1, cells), exactly. The estimate (c - origin) * invTile
+    /// is within 2.01u of the quotient, relatively: off by far less than one where the clamp
+    /// does not decide (|quotient| < 2^25), so one exact comparison with a tile edge, either
+    /// way, settles it.
     [[nodiscard]] std::int64_t cellOf(double c) const noexcept {
-        double q = std::floor((c - origin) / tile);
-        if (q < -1) q = -1;
-        if (q > static_cast<double>(cells)) q = static_cast<double>(cells);
-        auto k = static_cast<std::int64_t>(q);
-        if (k > -1 && edge(k) > c) --k;
+        std::int64_t k = clampCell((c - origin) * invTile);
+        if (k > -1 && edge(k) > c) {
+            --k;
+        } else if (k < cells && edge(k + 1) <= c) {
+            ++k;
+        }
         return k;
     }
 
@@ -126,7 +137,7 @@ struct FastAxis {
     [[nodiscard]] std::int64_t clampCell(double v) const noexcept {
         if (!(v > -1)) return -1;
         if (v >= static_cast<double>(cells)) return cells;
-        return static_cast<std::int64_t>(std::floor(v));
+        return floorToInt(v);
     }
 
     /// Whether a grid line origin + k*tile (any integer k) lies in [lo, hi): the least k with
@@ -135,7 +146,8 @@ struct FastAxis {
     [[nodiscard]] bool hasLineIn(double lo, double hi) const noexcept {
         if (!(lo < hi)) return false;
         if (hi - lo >= tile) return true;
-        double k = std::ceil((lo - origin) / tile);
+        // |(lo - origin) / tile| < 2^53 (the range test): the ceiling fits, and k * tile is exact.
+        auto k = static_cast<double>(-floorToInt(-((lo - origin) / tile)));
         if (origin + k * tile < lo) {
             k += 1;
         } else if (origin + (k - 1) * tile >= lo) {
@@ -314,10 +326,13 @@ private:
         const double p = pos;
         const double d = disp;
         const int dir = d > 0 ? 1 : (d < 0 ? -1 : 0);
-        return {p, p + static_cast<double>(size), d, std::fabs(d), dir, origin, tile, cells};
+        const double t = tile;
+        return {p, p + static_cast<double>(size), d, std::fabs(d), dir, origin, t, cells, 1 / t};
     }
 
     int compareTimes(const FastTime& a, const FastTime& b) noexcept {
+        // The same fraction (tiles entered across one face line): equal without arithmetic.
+        if (a.num == b.num && a.den == b.den) return 0;
         return compareProducts(a.num, b.den, b.num, a.den, refined_);
     }
 
@@ -431,7 +446,8 @@ private:
         const double bound = kSecondaryRangeErrorUlps;
 #endif
         const double margin = bound * 0x1p-53 *
-                              (std::fabs(ms.low) + std::fabs(ms.high) + ms.speed + std::fabs(ms.origin)) / ms.tile;
+                              (std::fabs(ms.low) + std::fabs(ms.high) + ms.speed + std::fabs(ms.origin)) * ms.invTile;
+        const double slope = ms.disp / mp.speed;  // secondary motion per unit of primary distance
         for (std::int64_t k = firstCellAhead(p); k >= 0 && k < mp.cells; k += mp.dir) {
             const double lo = mp.edge(k);
             const double hi = mp.edge(k + 1);
@@ -445,10 +461,8 @@ private:
             const double t1 = exit < mp.speed ? exit : mp.speed;
             // The secondary span while the box is in this primary cell, estimated, then widened
             // by the bound so that it holds the exact range (extra cells are tested and rejected).
-            const double a0 = (forward ? t0 : t1) / mp.speed;
-            const double a1 = (forward ? t1 : t0) / mp.speed;
-            const double lowAt = (ms.low + ms.disp * a0 - ms.origin) / ms.tile;
-            const double highAt = (ms.high + ms.disp * a1 - ms.origin) / ms.tile;
+            const double lowAt = (ms.low + slope * (forward ? t0 : t1) - ms.origin) * ms.invTile;
+            const double highAt = (ms.high + slope * (forward ? t1 : t0) - ms.origin) * ms.invTile;
             const std::int64_t j0 = std::max<std::int64_t>(ms.clampCell(lowAt - margin), 0);
             std::int64_t j1 = std::min<std::int64_t>(ms.clampCell(highAt + margin), ms.cells - 1);
 #if defined(TILESWEEP_FAULT_BROADPHASE_SHORT)

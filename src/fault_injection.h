@@ -17,6 +17,8 @@
 //   END_INCLUSIVE      a tile reached at exactly t = 1, both axes moving, counted as a hit (axis_sweep.h)
 //   NARROW_TIER        frames that need 128 to 191 bits solved on 128-bit integers (lattice.h)
 //   FMA                -ffp-contract=fast instead of off           (cmake/warnings.cmake)
+//   ORACLE_SKIPS_TOUCH_AT_0  in the exact reference only: a tile touched at t = 0 never blocks
+//                      (oracle/exact/exact_sweep.cpp), for the reference's own cross-check
 //   FILTER_BOUND_HALVED  the fast path's certified error bound (the secondary range of its
 //                      walk, kSecondaryRangeErrorUlps) halved, below what its derivation needs
 //                                                                  (fast_frame.h)
