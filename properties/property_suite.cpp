@@ -158,6 +158,8 @@ void addAll(std::vector<Property>& out) {
     addClaim<T>(out, "farEdgesObeyTheSafetyRules", "obeysTheSafetyRules", Family::FarEdge, {{"rounded-down", 0.05}});
     addClaim<T>(out, "substepOracleFindsNoMissedContact", "substepOracleFindsNoMissedContact", Family::Mixed,
                 {{"hit", 0.2}});
+    addClaim<T>(out, "exactReferenceAgreesWithSubsteps", "exactReferenceAgreesWithSubsteps", Family::Mixed,
+                {{"hit", 0.2}, {"touch-at-0", 0.03}});
     addClaim<T>(out, "zeroMoveChangesNothing", "zeroMoveChangesNothing", Family::Mixed, {});
     addClaim<T>(out, "scalingByPowerOfTwoScalesTheResult", "scalingByPowerOfTwoScalesTheResult", Family::Mixed,
                 {{"hit", 0.2}, {"tie", 0.02}});

@@ -98,6 +98,13 @@ ExactSweepOutput sweepTileExact(const ExactSweepInput& input) {
         out.state = ExactSweepState::Misses;
         return out;
     }
+#if defined(TILESWEEP_FAULT_ORACLE_SKIPS_TOUCH_AT_0)
+    // Deliberate fault in the reference, not the resolver: a tile touched at t = 0 never blocks.
+    if (out.overlap.low.isFinite() && out.overlap.low.value == 0) {
+        out.state = ExactSweepState::Misses;
+        return out;
+    }
+#endif
     // I is an open interval that meets (0, 1) but does not contain 0, so inf I is finite and in
     // [0, 1): at least one axis moves, and the later entry is that of a moving axis.
     out.state = ExactSweepState::Blocks;
