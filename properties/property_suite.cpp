@@ -51,7 +51,11 @@ PropertyOutcome runClaim(const std::string& propertyName, const Claim<T>& claim,
         const GeneratedScene<T> g = *genScene<T>(family);
         // One RC_TAG per case (a second would replace the first): the classes, space-separated.
         std::string tags = std::string("family:") + familyName(g.family);
-        for (const std::string& tag : classifyScene(g.scene)) tags += " " + tag;
+        for (const std::string& tag : classifyScene(g.scene)) {
+            tags += " " + tag;
+            // The rounding rule's exception per family, for the share each family reaches.
+            if (tag == "rounded-down") tags += std::string(" rounded-down@") + familyName(g.family);
+        }
         RC_TAG(tags);
         const std::string message = claim.check(g.scene);
         if (!message.empty()) {
