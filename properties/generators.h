@@ -37,6 +37,7 @@ enum class Family : std::uint8_t {
     FarSubUlp,   ///< far from the origin, moves of a few ulps past a tile corner: rounding at work
     FarEdge,     ///< far edge a few ulps past a grid line, a tiny move away, then back: the rounding rule
     FineBits,    ///< frame times exactly halfway between two values, tiles reached at t = 1, wide lattices
+    Extreme,     ///< empty maps (0 x 0, or no solid cell), huge moves, huge coordinates
     Mixed,
 };
 
@@ -54,6 +55,7 @@ enum class Family : std::uint8_t {
         case Family::FarSubUlp: return "far-sub-ulp";
         case Family::FarEdge: return "far-edge";
         case Family::FineBits: return "fine-bits";
+        case Family::Extreme: return "extreme";
         case Family::Mixed: return "mixed";
     }
     return "?";
@@ -512,6 +514,45 @@ rc::Gen<GeneratedScene<T>> genFineBitsScene() {
     });
 }
 
+/// What the unit tests alone used to reach: a map of 0 x 0 cells or with no solid cell, moves of
+/// 2^20 up to near the largest finite value, boxes far beyond the map (2^60 to 2^120 in float,
+/// to 2^1000 in double), each on a small random map otherwise.
+template <class T>
+rc::Gen<GeneratedScene<T>> genExtremeScene() {
+    return rc::gen::exec([] {
+        const bool isFloat = std::is_same<T, float>::value;
+        const int maxExponent = std::numeric_limits<T>::max_exponent - 2;
+        const double tile = *rc::gen::element(16.0, 8.0, 0.5);
+        Grid<T> g;
+        const int kind = *rc::gen::element(0, 1, 2, 3);
+        g.columns = kind == 0 ? 0 : *rc::gen::element(1, 4, 9, 16);
+        g.rows = kind == 0 ? 0 : *rc::gen::element(1, 3, 8, 16);
+        g.solid.assign(static_cast<std::size_t>(g.columns * g.rows), 0);
+        if (kind >= 2)
+            for (int k = 0; k < g.columns * g.rows / 3 + 1; ++k)
+                g.set(*rc::gen::inRange(0, g.columns), *rc::gen::inRange(0, g.rows), true);
+        const auto huge = [maxExponent] {
+            const int e = *rc::gen::element(20, 40, 60, 100, maxExponent);
+            return static_cast<T>(std::ldexp(*rc::gen::element(1.0, -1.0, 1.5, -0.75), e));
+        };
+        const auto small = [tile] { return static_cast<T>(*rc::gen::inRange(-32, 33) * tile / 8); };
+        Box<T> box{{static_cast<T>(*rc::gen::inRange(0, 8) * tile), static_cast<T>(*rc::gen::inRange(0, 8) * tile)},
+                   {static_cast<T>(tile * 0.75), static_cast<T>(tile)}};
+        if (kind == 3) {  // far beyond the map
+            const int e = isFloat ? *rc::gen::element(60, 90, 120) : *rc::gen::element(60, 300, 1000);
+            box.pos = {static_cast<T>(std::ldexp(*rc::gen::element(1.0, -1.0), e)), box.pos.y};
+        }
+        clearUnder(g, 0.0, 0.0, tile, box);
+        std::vector<Vec2<T>> moves;
+        const int frames = *rc::gen::element(1, 2, 3);
+        for (int k = 0; k < frames; ++k) {
+            const int which = *rc::gen::element(0, 1, 2);
+            moves.push_back({which == 1 ? small() : huge(), which == 0 ? small() : huge()});
+        }
+        return GeneratedScene<T>{makeScene(g, 0.0, 0.0, tile, box, moves), Family::Extreme, false};
+    });
+}
+
 }  // namespace detail
 
 /// Scenes of one family, or of all of them (`Mixed`).
@@ -519,6 +560,7 @@ template <class T>
 rc::Gen<GeneratedScene<T>> genScene(Family family) {
     using detail::genCornerScene;
     using detail::genFarEdgeScene;
+    using detail::genExtremeScene;
     using detail::genFineBitsScene;
     using detail::genFarSubUlpScene;
     using detail::genFloorScene;
@@ -536,6 +578,7 @@ rc::Gen<GeneratedScene<T>> genScene(Family family) {
         case Family::FarSubUlp: return genFarSubUlpScene<T>();
         case Family::FarEdge: return genFarEdgeScene<T>();
         case Family::FineBits: return genFineBitsScene<T>();
+        case Family::Extreme: return genExtremeScene<T>();
         case Family::Mixed: break;
     }
     return rc::gen::weightedOneOf<GeneratedScene<T>>({

@@ -165,6 +165,14 @@ void addAll(std::vector<Property>& out) {
     addClaim<T>(out, "exactReferenceAgreesWithSubsteps", "exactReferenceAgreesWithSubsteps", Family::Mixed,
                 {{"hit", 0.2}, {"touch-at-0", 0.03}});
     addClaim<T>(out, "zeroMoveChangesNothing", "zeroMoveChangesNothing", Family::Mixed, {});
+    // What only the unit tests reached before: bad input, sweepBox, empty maps, huge moves.
+    addClaim<T>(out, "badInputIsRejected", "badInputIsRejected", Family::Mixed, {});
+    addClaim<T>(out, "sweepBoxMatchesTheReference", "sweepBoxMatchesTheReference", Family::Mixed,
+                {{"hit", 0.2}, {"tie", 0.03}});
+    addClaim<T>(out, "handlesEmptyMapsAndHugeMovesExactly", "matchesExactReferenceBitForBit", Family::Extreme,
+                {{"empty-map", 0.2}, {"huge-move", 0.3}});
+    addClaim<T>(out, "extremeScenesObeyTheSafetyRules", "obeysTheSafetyRules", Family::Extreme,
+                {{"empty-map", 0.2}, {"huge-move", 0.3}});
     addClaim<T>(out, "scalingByPowerOfTwoScalesTheResult", "scalingByPowerOfTwoScalesTheResult", Family::Mixed,
                 {{"hit", 0.2}, {"tie", 0.02}});
     addClaim<T>(out, "mirroringXMirrorsTheResult", "mirroringXMirrorsTheResult", Family::Mixed, {{"hit", 0.2}});
@@ -192,6 +200,7 @@ const std::vector<Property>& allProperties() {
 
 RunOptions optionsFromEnvironment() {
     RunOptions options;
+    if (const char* seed = std::getenv("TILESWEEP_PROPERTY_DEFAULT_SEED")) options.seed = std::strtoull(seed, nullptr, 10);
     if (const char* seed = std::getenv("TILESWEEP_PROPERTY_SEED")) options.seed = std::strtoull(seed, nullptr, 10);
     if (const char* cases = std::getenv("TILESWEEP_PROPERTY_CASES")) options.cases = std::atoi(cases);
     if (const char* dir = std::getenv("TILESWEEP_CORPUS_DIR")) options.corpusDir = dir;

@@ -49,8 +49,9 @@ struct Property {
 /// Every property of the suite.
 [[nodiscard]] const std::vector<Property>& allProperties();
 
-/// Options from the environment: TILESWEEP_PROPERTY_SEED, TILESWEEP_PROPERTY_CASES and
-/// TILESWEEP_CORPUS_DIR (default: none, so test runs never write into the source tree).
+/// Options from the environment: TILESWEEP_PROPERTY_SEED (else TILESWEEP_PROPERTY_DEFAULT_SEED,
+/// which ctest sets per discovered test), TILESWEEP_PROPERTY_CASES and TILESWEEP_CORPUS_DIR
+/// (default: none, so test runs never write into the source tree).
 [[nodiscard]] RunOptions optionsFromEnvironment();
 
 /// The line written for a failing scene: the scene (hexfloats) with "property", "seed",

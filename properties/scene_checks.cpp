@@ -13,6 +13,8 @@
 #include "oracle/exact/rational_convert.h"
 #include "oracle/substep/substep_oracle.h"
 #include "frame_safety.h"  // checks/
+#include "oracle/exact/exact_sweep.h"
+#include "tilesweep/box_sweep.h"
 
 namespace tilesweep::properties {
 namespace {
@@ -416,6 +418,93 @@ std::string slidingAlongFloorNeverSnags(const Scene<T>& scene) {
     return {};
 }
 
+/// Every value that is bad input somewhere: NaN and both infinities anywhere, zero and -1 as a size.
+/// Each corruption of the scene (four fields) is refused: the library returns InvalidInput with
+/// no contact and no NaN, the scene reader an error naming the field.
+template <class T>
+std::string badInputIsRejected(const Scene<T>& scene) {
+    const T values[] = {std::numeric_limits<T>::quiet_NaN(), std::numeric_limits<T>::infinity(),
+                        -std::numeric_limits<T>::infinity(), T(0), T(-1)};
+    const char* fields[] = {"box[0]", "box[3]", "moves[last][0]", "box[1]"};
+    for (int field = 0; field < 4; ++field)
+        for (const T bad : values) {
+            const bool nonFinite = !std::isfinite(bad);
+            if (!nonFinite && field != 1) continue;  // zero and -1 are only bad as sizes
+            Scene<T> s = scene;
+            switch (field) {
+                case 0: s.box.pos.x = bad; break;
+                case 1: s.box.size.y = bad; break;
+                case 2: s.moves.back().x = bad; break;
+                default: s.box.pos.y = bad; break;
+            }
+            Contact<T> contacts[8];
+            Cell overlaps[8];
+            const SweepResult<T> r = resolveMove<T>({s.map.view(), s.box, s.moves.back()}, {contacts, 8, overlaps, 8});
+            const std::string at = std::string(fields[field]) + " = " + hex(bad) + ": ";
+            if (r.status != Status::InvalidInput) return at + "not refused as InvalidInput";
+            if (r.contactCount != 0 || std::isnan(r.position.x) || std::isnan(r.position.y))
+                return at + "a refused frame reported contacts or NaN";
+            // The scene reader, on the same field written as the format would carry it.
+            std::string line = formatScene(scene);
+            const std::string text = nonFinite ? std::string(std::isnan(bad) ? "\"nan\"" : (bad > 0 ? "\"inf\"" : "\"-inf\""))
+                                               : std::string(bad == 0 ? "0" : "-1");
+            Scene<T> marked = scene;  // find the field's text by writing a marker there
+            const T marker = T(1234567);
+            switch (field) {
+                case 0: marked.box.pos.x = marker; break;
+                case 1: marked.box.size.y = marker; break;
+                case 2: marked.moves.back().x = marker; break;
+                default: marked.box.pos.y = marker; break;
+            }
+            line = formatScene(marked);
+            const std::string markerText = "\"" + std::string(hex(marker)) + "\"";
+            const std::size_t where = line.find(markerText);
+            if (where == std::string::npos) return at + "cannot find the field in the scene line";
+            line.replace(where, markerText.size(), text);
+            const SceneParse<T> parsed = parseScene<T>(line);
+            if (parsed.scene) return at + "the scene reader accepted it";
+            if (parsed.error.find(field == 2 ? "move" : "box") == std::string::npos)
+                return at + "the error does not name the field: " + parsed.error;
+        }
+    return {};
+}
+
+/// sweepBox, the single-tile entry point, agrees with the exact reference's single-tile test on
+/// the first frame's box and move against every solid tile of the map (up to 64): the same
+/// state, contact axis and time (rounded to nearest).
+template <class T>
+std::string sweepBoxMatchesTheReference(const Scene<T>& scene) {
+    const oracle::ExactTileMap map = oracle::toExact(scene.map);
+    const Vec2<T> d = scene.moves.front();
+    const int sx = d.x > 0 ? 1 : (d.x < 0 ? -1 : 0);
+    const int sy = d.y > 0 ? 1 : (d.y < 0 ? -1 : 0);
+    int tested = 0;
+    for (std::int32_t j = 0; j < map.rows && tested < 64; ++j)
+        for (std::int32_t i = 0; i < map.columns && tested < 64; ++i) {
+            if (!map.isSolid(i, j)) continue;
+            ++tested;
+            const T x0 = scene.map.origin.x + static_cast<T>(i) * scene.map.tileSize.x;
+            const T y0 = scene.map.origin.y + static_cast<T>(j) * scene.map.tileSize.y;
+            const T x1 = scene.map.origin.x + static_cast<T>(i + 1) * scene.map.tileSize.x;
+            const T y1 = scene.map.origin.y + static_cast<T>(j + 1) * scene.map.tileSize.y;
+            const bool xExposed = !map.isSolid(i - sx, j);
+            const bool yExposed = !map.isSolid(i, j - sy);
+            const BoxSweepOutput<T> got = sweepBox<T>({scene.box, d, {x0, y0}, {x1, y1}, xExposed, yExposed});
+            const oracle::ExactSweepOutput want = oracle::sweepTileExact(
+                {oracle::toExact(scene.box), oracle::toExact(d), map.tileRect(i, j), xExposed, yExposed});
+            const std::string at = "tile " + cellText({i, j}) + ": ";
+            const BoxSweepState state = want.state == oracle::ExactSweepState::Blocks ? BoxSweepState::Blocks
+                                        : want.state == oracle::ExactSweepState::Misses ? BoxSweepState::Misses
+                                                                                        : BoxSweepState::StartsOverlapping;
+            if (got.state != state) return at + "sweepBox state differs from the reference";
+            if (state != BoxSweepState::Blocks) continue;
+            if (got.axis != want.axis) return at + "contact axis differs";
+            const T time = oracle::fromRational<T>(want.time, oracle::Rounding::NearestEven);
+            if (!sameBits(got.time, time)) return at + "time " + hex(got.time) + " != " + hex(time);
+        }
+    return {};
+}
+
 }  // namespace
 
 template <class T>
@@ -435,6 +524,8 @@ const std::vector<Claim<T>>& allClaims() {
         {"translatingByWholeTilesKeepsDecisions", &translatingByWholeTilesKeepsDecisions<T>},
         {"restingContactIsStable", &restingContactIsStable<T>},
         {"slidingAlongFloorNeverSnags", &slidingAlongFloorNeverSnags<T>},
+        {"badInputIsRejected", &badInputIsRejected<T>},
+        {"sweepBoxMatchesTheReference", &sweepBoxMatchesTheReference<T>},
     };
     return claims;
 }
@@ -558,6 +649,12 @@ std::vector<std::string> classifyScene(const Scene<T>& scene) {
     if (twoStep) tags.push_back("two-step");
     if (seam) tags.push_back("seam");
     if (startOverlap) tags.push_back("start-overlap");
+    if (std::find(scene.map.solid.begin(), scene.map.solid.end(), std::uint8_t{1}) == scene.map.solid.end())
+        tags.push_back("empty-map");
+    const T huge = std::ldexp(T(1), 40);
+    if (std::any_of(scene.moves.begin(), scene.moves.end(),
+                    [huge](Vec2<T> m) { return std::fabs(m.x) >= huge || std::fabs(m.y) >= huge; }))
+        tags.push_back("huge-move");
     const int span = latticeSpan(scene);
     if (span > 60) tags.push_back("lattice-wide");
     if (span > 92) tags.push_back("lattice-192");

@@ -33,7 +33,8 @@ template <class T>
 /// tile first reached at exactly t = 1 with both axes moving), "rounded-down" (the rounding
 /// rule's exception changed a position), "touch-at-0", "two-step", "seam" (several tiles hit at
 /// once on one face), "start-overlap", "lattice-wide" and "lattice-192" (inputs spanning more
-/// than 60 or 92 bits: the resolver's wide integer tiers), "far-origin".
+/// than 60 or 92 bits: the resolver's wide integer tiers), "empty-map" (no solid tile),
+/// "huge-move" (a move of 2^40 or more), "far-origin".
 template <class T>
 [[nodiscard]] std::vector<std::string> classifyScene(const Scene<T>& scene);
 
