@@ -14,6 +14,7 @@
 #include "oracle/substep/substep_oracle.h"
 #include "frame_safety.h"  // checks/
 #include "oracle/exact/exact_sweep.h"
+#include "src/decision_path.h"
 #include "tilesweep/box_sweep.h"
 
 namespace tilesweep::properties {
@@ -613,6 +614,25 @@ int latticeSpan(const Scene<T>& scene) {
     return highest >= lowest ? highest - lowest : 0;
 }
 
+/// The path that decided the scene's frames (src/decision_path.h): "exact" when any frame fell
+/// back to the lattice, else "filtered" when any predicate needed the exact refinement, else "fast".
+template <class T>
+const char* decisionPathOf(const Scene<T>& scene) {
+    using detail::DecisionPath;
+    DecisionPath worst = DecisionPath::Fast;
+    Vec2<T> start = scene.box.pos;
+    std::vector<Contact<T>> contacts(64);
+    std::vector<Cell> overlaps(64);
+    for (const Vec2<T>& move : scene.moves) {
+        const SweepResult<T> r = resolveMove<T>({scene.map.view(), {start, scene.box.size}, move},
+                                                {contacts.data(), 64, overlaps.data(), 64});
+        const DecisionPath path = detail::lastDecisionPath();
+        if (static_cast<int>(path) > static_cast<int>(worst)) worst = path;
+        start = r.position;
+    }
+    return worst == DecisionPath::Fast ? "fast" : (worst == DecisionPath::Filtered ? "filtered" : "exact");
+}
+
 }  // namespace
 
 template <class T>
@@ -659,6 +679,9 @@ std::vector<std::string> classifyScene(const Scene<T>& scene) {
     if (span > 60) tags.push_back("lattice-wide");
     if (span > 92) tags.push_back("lattice-192");
     if (std::fabs(scene.map.origin.x) >= T(1048576) || std::fabs(scene.map.origin.y) >= T(1048576)) tags.push_back("far-origin");
+    const std::string path = decisionPathOf(scene);
+    tags.push_back("path:" + path);
+    if (path != "fast") tags.push_back("fallback");
     return tags;
 }
 

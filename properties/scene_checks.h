@@ -34,7 +34,9 @@ template <class T>
 /// rule's exception changed a position), "touch-at-0", "two-step", "seam" (several tiles hit at
 /// once on one face), "start-overlap", "lattice-wide" and "lattice-192" (inputs spanning more
 /// than 60 or 92 bits: the resolver's wide integer tiers), "empty-map" (no solid tile),
-/// "huge-move" (a move of 2^40 or more), "far-origin".
+/// "huge-move" (a move of 2^40 or more), "far-origin"; "path:fast", "path:filtered" or
+/// "path:exact" (which of the resolver's paths decided the frames: src/decision_path.h), and
+/// "fallback" when it was not the fast one.
 template <class T>
 [[nodiscard]] std::vector<std::string> classifyScene(const Scene<T>& scene);
 

@@ -9,7 +9,8 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 source "$root/scripts/setup.sh"
 cases=${1:-300}
 faults=(${TILESWEEP_FAULTS:-TOUCH_OVERLAPS NO_CORNER_MISS TIE_REVERSED DOUBLE_PREDICATE ROUND_NEAREST BROADPHASE_SHORT FMA
-         OLD_ROUNDING_RULE TIME_TIES_AWAY END_INCLUSIVE NARROW_TIER ORACLE_SKIPS_TOUCH_AT_0})
+         OLD_ROUNDING_RULE TIME_TIES_AWAY END_INCLUSIVE NARROW_TIER ORACLE_SKIPS_TOUCH_AT_0
+         FILTER_BOUND_HALVED FAST_RANGE_TOO_WIDE})
 out=${TILESWEEP_FAULT_DIR:-$root/build-faults}
 mkdir -p "$out"
 echo "| fault | caught by (a shrunk counterexample) | smallest counterexample | other failures | seconds |"
