@@ -21,6 +21,9 @@
 #include "oracle/exact/rational_convert.h"
 #include "oracle/seed/seed_resolve.h"
 #include "oracle/substep/substep_float.h"
+#include "bench/grid_resolve.h"
+#include "bench/twin_resolve.h"
+#include "src/decision_path.h"
 #include "tilesweep/scene.h"
 
 namespace tilesweep::audit {
@@ -57,6 +60,10 @@ std::vector<Implementation> auditImplementations() {
         {"substep4-float", ImplementationKind::SubstepFloat, false, 4},
         {"substep16-float", ImplementationKind::SubstepFloat, false, 16},
         {"substep256-float", ImplementationKind::SubstepFloat, false, 256},
+        {"twin-float", ImplementationKind::Twin, false, 0},
+        {"twin-double", ImplementationKind::Twin, true, 0},
+        {"grid-float", ImplementationKind::Grid, false, 0},
+        {"grid-double", ImplementationKind::Grid, true, 0},
     };
 }
 
@@ -96,6 +103,8 @@ void Coverage::merge(const Coverage& o) {
     cornerPass += o.cornerPass;
     startOverlap += o.startOverlap;
     resting += o.resting;
+    filtered += o.filtered;
+    exactPath += o.exactPath;
 }
 
 const CellStats& AuditResult::cell(const std::string& implementation, const std::string& family) const {
@@ -397,9 +406,59 @@ private:
 
 // ---- running the implementations ----------------------------------------------------------
 
+/// A scene's frames through a resolver with resolveMove's signature (the game-style baselines),
+/// each frame from the last one's position, with room for every list entry.
+template <class T, class Resolve>
+std::vector<FrameResult<T>> runFrames(const Scene<T>& scene, Resolve resolve) {
+    std::vector<FrameResult<T>> frames;
+    Vec2<T> start = scene.box.pos;
+    std::vector<Contact<T>> contacts(16);
+    std::vector<Cell> overlaps(16);
+    for (const Vec2<T>& move : scene.moves) {
+        const SweepInput<T> input{scene.map.view(), {start, scene.box.size}, move};
+        SweepResult<T> r{};
+        for (;;) {
+            r = resolve(input, ResolveOutput<T>{contacts.data(), static_cast<std::int32_t>(contacts.size()),
+                                                overlaps.data(), static_cast<std::int32_t>(overlaps.size())});
+            if (r.contactCount <= static_cast<std::int32_t>(contacts.size()) &&
+                r.startOverlapCount <= static_cast<std::int32_t>(overlaps.size()))
+                break;
+            contacts.resize(static_cast<std::size_t>(std::max<std::int32_t>(r.contactCount, 16)));
+            overlaps.resize(static_cast<std::size_t>(std::max<std::int32_t>(r.startOverlapCount, 16)));
+        }
+        FrameResult<T> f;
+        f.position = r.position;
+        f.contacts.assign(contacts.begin(), contacts.begin() + std::max<std::int32_t>(r.contactCount, 0));
+        f.startOverlaps.assign(overlaps.begin(), overlaps.begin() + std::max<std::int32_t>(r.startOverlapCount, 0));
+        frames.push_back(std::move(f));
+        start = r.position;
+    }
+    return frames;
+}
+
+/// The path that decided the production resolver's frames of a scene: the most exact one used.
+template <class T>
+detail::DecisionPath decisionPathOf(const Scene<T>& scene) {
+    detail::DecisionPath worst = detail::DecisionPath::Fast;
+    runFrames(scene, [&worst](const SweepInput<T>& in, const ResolveOutput<T>& out) {
+        const SweepResult<T> r = resolveMove(in, out);
+        worst = std::max(worst, detail::lastDecisionPath());
+        return r;
+    });
+    return worst;
+}
+
 template <class T>
 std::vector<FrameResult<T>> runImplementation(const Implementation& impl, const Scene<T>& scene) {
     switch (impl.kind) {
+        case ImplementationKind::Twin:
+            return runFrames(scene, [](const SweepInput<T>& in, const ResolveOutput<T>& out) {
+                return bench::resolveMoveTwin(in, out);
+            });
+        case ImplementationKind::Grid:
+            return runFrames(scene, [](const SweepInput<T>& in, const ResolveOutput<T>& out) {
+                return bench::resolveMoveGrid(in, out);
+            });
         case ImplementationKind::Core: return runScene(scene);
         case ImplementationKind::Seed: return oracle::resolveSceneSeed(scene);
         case ImplementationKind::SubstepFloat:
@@ -456,6 +515,9 @@ void auditScene(const std::vector<Implementation>& impls, const Family& family, 
     cov.cornerPass += first.cornerPass ? 1 : 0;
     cov.startOverlap += first.exact.startOverlaps.empty() ? 0 : 1;
     cov.resting += first.restingRow >= 0 ? 1 : 0;
+    const detail::DecisionPath path = decisionPathOf(scene);
+    cov.filtered += path == detail::DecisionPath::Filtered ? 1 : 0;
+    cov.exactPath += path == detail::DecisionPath::Exact ? 1 : 0;
 
     for (std::size_t r = 0; r < impls.size(); ++r) {
         const Implementation& impl = impls[r];

@@ -63,7 +63,13 @@ constexpr std::size_t kMetricCount = 10;
 [[nodiscard]] const char* metricName(Metric m);
 
 /// How an implementation resolves.
-enum class ImplementationKind : std::uint8_t { Core, Seed, SubstepFloat };
+enum class ImplementationKind : std::uint8_t {
+    Core,          ///< tilesweep's production resolver
+    Seed,          ///< the seed article's algorithm
+    SubstepFloat,  ///< N substeps in plain float
+    Twin,          ///< game-style swept AABB walking cells in path order (bench/twin_resolve.h)
+    Grid,          ///< game-style swept AABB scanning the swept bounds (bench/grid_resolve.h)
+};
 
 /// One row of the report.
 struct Implementation {
@@ -115,6 +121,8 @@ struct Coverage {
     std::uint64_t cornerPass = 0;    ///< a path exactly through a tile's corner point
     std::uint64_t startOverlap = 0;  ///< the box starts overlapping a solid tile
     std::uint64_t resting = 0;       ///< the box starts resting on a floor
+    std::uint64_t filtered = 0;      ///< the resolver's fast path needed an exact refinement (some frame)
+    std::uint64_t exactPath = 0;     ///< the resolver fell back to the exact lattice (some frame)
 
     void merge(const Coverage& other);
 };

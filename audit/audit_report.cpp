@@ -396,8 +396,10 @@ std::string markdown(const AuditResult& r) {
          "Counted on the exact first frame, float / double scenes. far-* are the uniform, near-corner, tie and seam "
          "generators (in turn) with the map's origin moved to the magnitude, rounded down to whole tiles; case k of "
          "every far-* family is the same local scene.\n\n"
-         "| family | scenes | hit | two-step | tie | corner clip | corner miss | corner pass | start overlap | resting |\n"
-         "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+         "The last two columns are the production resolver's own: the scenes where its fast path needed an exact "
+         "refinement (filtered) and where it fell back to the exact lattice (exact), of all the scene's frames.\n\n"
+         "| family | scenes | hit | two-step | tie | corner clip | corner miss | corner pass | start overlap | resting | filtered | exact |\n"
+         "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (std::size_t c = 0; c < r.families.size(); ++c) {
         const auto& cv = r.coverage[c];
         auto both = [&](std::uint64_t Coverage::*field) {
@@ -408,7 +410,8 @@ std::string markdown(const AuditResult& r) {
           << both(&Coverage::hit) << " | " << both(&Coverage::twoStep) << " | " << both(&Coverage::tie) << " | "
           << both(&Coverage::cornerClip) << " | " << both(&Coverage::cornerMiss) << " | "
           << both(&Coverage::cornerPass) << " | " << both(&Coverage::startOverlap) << " | "
-          << both(&Coverage::resting) << " |\n";
+          << both(&Coverage::resting) << " | " << both(&Coverage::filtered) << " | " << both(&Coverage::exactPath)
+          << " |\n";
     }
 
     auto section = [&](const std::string& title, const std::string& note,
@@ -528,7 +531,8 @@ json reportJson(const AuditResult& r) {
                 {"two_step", cv.twoStep},      {"tie", cv.tie},
                 {"corner_clip", cv.cornerClip}, {"corner_miss", cv.cornerMiss},
                 {"corner_pass", cv.cornerPass}, {"start_overlap", cv.startOverlap},
-                {"resting", cv.resting}};
+                {"resting", cv.resting},       {"filtered", cv.filtered},
+                {"exact_path", cv.exactPath}};
         }
         j["families"].push_back(fam);
     }

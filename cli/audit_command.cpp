@@ -26,7 +26,8 @@ CLI::App* addAuditCommand(CLI::App& app, AuditOptions& options) {
         ->capture_default_str();
     command->add_option("--jobs", options.jobs, "Worker threads (default: all cores)")->check(CLI::PositiveNumber);
     command->footer(
-        "Implementations: core-float, core-double (tilesweep::runScene), seed-float, seed-double (the seed\n"
+        "Implementations: core-float, core-double (tilesweep::runScene), twin-* and grid-* (game-style\n"
+        "swept AABB, bench/), seed-float, seed-double (the seed\n"
         "article as written), substep{4,16,256}-float (the game-style substep loop). Families: uniform,\n"
         "near-corner, tie, seam, tiny, high-speed, and far-<magnitude> (the same scenes translated by whole\n"
         "tiles; float up to 2^23, double up to 2^52). The figures depend only on --cases and --seed.\n"
