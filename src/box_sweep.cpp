@@ -73,12 +73,13 @@ bool sweepFast(const BoxSweepInput<float>& in, BoxSweepOutput<float>& out) noexc
     const auto axis = [](float pos, float size, float disp) {
         const double d = disp;
         const double p = pos;
-        return detail::FastAxis{p, p + static_cast<double>(size), d, std::fabs(d), d > 0 ? 1 : (d < 0 ? -1 : 0), 0, 1, 0, 1};
+        const double w = size;
+        return detail::FastAxis{p, p + w, d, std::fabs(d), d > 0 ? 1 : (d < 0 ? -1 : 0), 0, 1, 0, 1, w};
     };
     const detail::FastAxis mx = axis(in.box.pos.x, in.box.size.x, in.displacement.x);
     const detail::FastAxis my = axis(in.box.pos.y, in.box.size.y, in.displacement.y);
     bool refined = false;
-    const detail::FastTileTest test =
+    const detail::FastTileTest<> test =
         detail::testTileFast(mx, my, in.tileMin.x, in.tileMax.x, in.tileMin.y, in.tileMax.y, refined);
     switch (test.verdict) {
         case detail::TileVerdict::Misses: out.state = BoxSweepState::Misses; return true;

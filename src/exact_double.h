@@ -17,8 +17,11 @@
 // test keeps every nonzero factor between 2^-149 and 2^122 (products and their errors between
 // 2^-400 and 2^244), far inside both limits.
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+
+#include "fault_injection.h"
 
 namespace tilesweep::detail {
 
@@ -46,6 +49,110 @@ namespace tilesweep::detail {
     const double e = productError(a, b, p);
     const double f = productError(c, d, q);
     return e < f ? -1 : (e > f ? 1 : 0);
+}
+
+/// A real number held exactly as hi + lo, where hi = fl(hi + lo) (the sum rounded to nearest)
+/// and |lo| <= ulp(hi) / 2: what TwoSum makes of a sum or difference of two doubles. Because hi
+/// is the rounded value, comparisons with a double are exact by monotonic rounding (compare).
+struct ExactPair {
+    double hi;
+    double lo;
+};
+
+/// a + b exactly, as a normalized pair (Knuth's TwoSum: six operations, no branch, exact for
+/// any finite doubles whose sum does not overflow).
+[[nodiscard]] inline ExactPair twoSum(double a, double b) noexcept {
+    const double s = a + b;
+    const double bVirtual = s - a;
+    const double aVirtual = s - bVirtual;
+    return {s, (a - aVirtual) + (b - bVirtual)};
+}
+
+/// -1, 0 or 1 as the exact value v compares with the double d. When hi != d, hi = fl(v) lies on
+/// the same side of d as v (monotonic rounding, d representable); when hi == d, lo decides.
+[[nodiscard]] inline int compare(ExactPair v, double d) noexcept {
+    if (v.hi < d) return -1;
+    if (v.hi > d) return 1;
+    return v.lo < 0 ? -1 : (v.lo > 0 ? 1 : 0);
+}
+
+/// The sign of the exact sum of `count` doubles (count <= 16). Shewchuk's Grow-Expansion with
+/// zero elimination (1997, Theorem 10): the running expansion stays nonoverlapping and sorted by
+/// magnitude, so its largest component carries the sign of the sum. Exact whenever no TwoSum
+/// overflows; slow (quadratic), for the rare refinements only.
+[[nodiscard]] inline int signOfSum(const double* terms, int count) noexcept {
+    double e[16];
+    int m = 0;
+    for (int k = 0; k < count; ++k) {
+        double q = terms[k];
+        int kept = 0;
+        for (int i = 0; i < m; ++i) {
+            const ExactPair s = twoSum(q, e[i]);
+            if (s.lo != 0) e[kept++] = s.lo;
+            q = s.hi;
+        }
+        if (q != 0) e[kept++] = q;
+        m = kept;
+    }
+    return m == 0 ? 0 : (e[m - 1] > 0 ? 1 : -1);
+}
+
+/// The semi-static error bound of compareProducts on pairs, relative to |fl(a.hi*s)| +
+/// |fl(b.hi*t)|: (3 + 16u)u with u = 2^-53 (derivation at compareProducts below).
+inline constexpr double kPairProductErrorBound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53;
+
+/// -1, 0 or 1 as A*s compares with B*t, exactly, for exact pairs A, B and doubles s, t >= 0.
+/// Pairs whose low parts are zero go to the product comparison above (exact by monotonic
+/// rounding and TwoProduct). Otherwise a semi-static filter decides (Shewchuk 1997; the CGAL
+/// filtered kernels): with p = fl(a.hi*s), q = fl(b.hi*t) and D = fl(p - q),
+///   |(a.hi*s - b.hi*t) - D| <= u|p| + u|q| + u|D| <= (2u + u^2)(|p| + |q|)
+/// (each rounding to nearest errs by at most u times its result), and the low parts add
+///   |a.lo*s| + |b.lo*t| <= u|a.hi*s| + u|b.hi*t| <= (u + u^2)(|p| + |q|)
+/// (|lo| <= ulp(hi)/2 <= u|hi|): the exact difference lies within (3u + 2u^2)(|p| + |q|) of D.
+/// The bound is computed as fl(c * fl(|p| + |q|)), at least c(1 - u)^2(|p| + |q|), which for
+/// c = (3 + 16u)u exceeds (3u + 2u^2)(|p| + |q|). So |D| above it gives the sign of D, exactly.
+/// Inside it, the sign of the eight-term exact sum (four TwoProducts) settles it, and `refined`
+/// is set. The caller's range keeps every product and every TwoProduct error term far from
+/// overflow and underflow.
+[[nodiscard]] inline int compareProducts(ExactPair a, double s, ExactPair b, double t, bool& refined) noexcept {
+    if (a.lo == 0 && b.lo == 0) return compareProducts(a.hi, s, b.hi, t, refined);
+    const double p = a.hi * s;
+    const double q = b.hi * t;
+    const double d = p - q;
+#if defined(TILESWEEP_FAULT_FILTER_BOUND_HALVED)
+    const double bound = kPairProductErrorBound / 2 * (std::fabs(p) + std::fabs(q));  // deliberate fault
+#else
+    const double bound = kPairProductErrorBound * (std::fabs(p) + std::fabs(q));
+#endif
+    if (d > bound) return 1;
+    if (d < -bound) return -1;
+    refined = true;
+    const double p2 = a.lo * s;
+    const double q2 = b.lo * t;
+    const double terms[8] = {productError(a.hi, s, p), productError(a.lo, s, p2), -productError(b.hi, t, q),
+                             -productError(b.lo, t, q2), p2, -q2, p, -q};
+    return signOfSum(terms, 8);
+}
+
+/// The next double above (up = true) or below a finite nonzero double, by its bits.
+[[nodiscard]] inline double stepDouble(double v, bool up) noexcept {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    const bool away = (v > 0) == up;  // magnitude grows
+    bits = away ? bits + 1 : bits - 1;
+    std::memcpy(&v, &bits, sizeof bits);
+    return v;
+}
+
+/// The spacing of doubles just above |v|, for a normal v: 2^(exponent(v) - 52).
+[[nodiscard]] inline double ulpAbove(double v) noexcept {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    bits = ((bits >> 52) & 0x7ff) - 52;  // the biased exponent of the ulp (v normal, > 2^-970)
+    bits <<= 52;
+    double u = 0;
+    std::memcpy(&u, &bits, sizeof bits);
+    return u;
 }
 
 /// The next float above (up = true) or below a finite float, by its bits; never crosses the

@@ -22,11 +22,29 @@
 //   - final positions are exact doubles, rounded to float with the direction the contract asks.
 // Every deliberate fault of the lattice solver (fault_injection.h) has its twin here, so the
 // fault table proves the suite has teeth on both paths.
+//
+// Double frames (FastFrame<double>) take the same solver with a filter in place of the exact
+// range. The range test (admitDoubleFrame) asks that every nonzero input lie in [2^-250, 2^251),
+// that every tile edge origin + k*tile the walk forms be a double computed exactly (all of them
+// multiples of the lowest set bit of origin and tile, below 2^53 of it), that the origin be
+// within 2^47 tiles of zero, and (checked on construction) that the far box edges x + w be
+// doubles. Then every coordinate the solver forms is a double or an exact pair (ExactPair,
+// exact_double.h): a difference of two doubles by TwoSum. So:
+//   - a pair against a double (a distance against a speed, a coordinate against a tile edge)
+//     compares exactly by monotonic rounding of its high part;
+//   - a time against a time (a pair times a speed against a pair times a speed) is decided by a
+//     semi-static filter with a certified bound (compareProducts on pairs), refined exactly
+//     by expansion arithmetic inside it (Filtered);
+//   - a contact time pair / speed is rounded to double by division and checked against the two
+//     rounding midpoints with a TwoProduct remainder (roundTimeToDouble);
+//   - a final position pair is rounded by the direction of its low part, and the amended rule's
+//     grid-line test is filtered; when the filter cannot decide, the frame goes to the lattice.
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 #include "axis_sweep.h"
 #include "exact_double.h"
@@ -43,7 +61,8 @@ namespace tilesweep::detail {
 /// + 1.01uA (difference), all scaled by 1/tile (1 + 2.01u), then + 2.01uA/tile (the rounded
 /// reciprocal and the product): under 6.05 uA/tile in all. Adding or subtracting the margin
 /// rounds once more, by at most 1.01 uA/tile, and the margin itself is computed 5u low at
-/// worst: 10 covers the 7.07 needed (and half of it does not).
+/// worst: 10 covers the 7.07 needed (and half of it does not). Double frames estimate the
+/// distances t as well (the high part of an exact pair, within u|t|): 1.01u|disp| more, 8.08.
 inline constexpr double kSecondaryRangeErrorUlps = 10;
 
 /// The most bits the fast path's exact doubles may need: a double's 53.
@@ -89,11 +108,100 @@ inline constexpr int kFastSpanBits = 53;
     return span <= kFastSpanBits && top - 126 <= 120;
 }
 
+/// Whether the double fast path holds every value of this double frame (see the top of this
+/// file): nonzero inputs in [2^-250, 2^251), so that no product, TwoProduct error term or
+/// filter bound comes near overflow or underflow; every tile edge origin + k*tile with
+/// 0 <= k <= cells + 2 a multiple of 2^g (g the lowest set bit of origin and tile) below
+/// 2^(g + 53), so that k*tile and the sum are exact doubles; and |origin| < 2^47 tile, so that a
+/// cell estimate from a rounded quotient is off by less than one cell. The far box edges are
+/// checked when the frame is built.
+[[nodiscard]] inline bool admitDoubleFrame(const SweepInput<double>& in) noexcept {
+    const double values[10] = {in.box.pos.x,     in.box.pos.y,     in.box.size.x,   in.box.size.y,
+                               in.displacement.x, in.displacement.y, in.map.origin.x, in.map.origin.y,
+                               in.map.tileSize.x, in.map.tileSize.y};
+    int field[10];
+    int lsb[10];
+    for (int k = 0; k < 10; ++k) {
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, &values[k], sizeof bits);
+        const int f = static_cast<int>((bits >> 52) & 0x7ff);  // |v| in [2^(f-1023), 2^(f-1022))
+        const std::uint64_t fraction = bits & ((std::uint64_t{1} << 52) - 1);
+        if (f == 0 && fraction == 0) {
+            field[k] = -100000;
+            lsb[k] = 100000;
+            continue;
+        }
+        if (f < 1023 - 250 || f > 1023 + 250) return false;
+        field[k] = f - 1023;
+        lsb[k] = f - 1023 - 52 + __builtin_ctzll(fraction | (std::uint64_t{1} << 52));
+    }
+    const std::int32_t cells[2] = {in.map.columns, in.map.rows};
+    for (int a = 0; a < 2; ++a) {
+        const int o = 6 + a;
+        const int t = 8 + a;
+        const int cellBits = 64 - __builtin_clzll(static_cast<std::uint64_t>(cells[a]) + 3);
+        // |origin| + (cells + 2) * tile < 2^(max(eo + 1, et + 1 + cellBits) + 1).
+        const int top = std::max(field[o] + 1, field[t] + 1 + cellBits) + 1;
+        if (top > std::min(lsb[o], lsb[t]) + 53) return false;
+        if (field[o] - field[t] > 46) return false;  // |origin| / tile < 2^(eo + 1 - et) <= 2^47
+    }
+    return true;
+}
+
 /// floor(v) for |v| < 2^62, without a libm call (x86-64's baseline has no rounding instruction).
 [[nodiscard]] inline std::int64_t floorToInt(double v) noexcept {
     auto k = static_cast<std::int64_t>(v);  // toward zero
     if (static_cast<double>(k) > v) --k;
     return k;
+}
+
+// The arithmetic of a coordinate, by type: an exact double (float frames) or an exact pair
+// (double frames). The double versions are the plain operations, so the float path compiles
+// to what it was.
+
+template <class Coord>
+[[nodiscard]] Coord differenceOf(double a, double b) noexcept;
+template <>
+[[nodiscard]] inline double differenceOf<double>(double a, double b) noexcept { return a - b; }
+template <>
+[[nodiscard]] inline ExactPair differenceOf<ExactPair>(double a, double b) noexcept { return twoSum(a, -b); }
+
+template <class Coord>
+[[nodiscard]] Coord sumOf(double a, double b) noexcept;
+template <>
+[[nodiscard]] inline double sumOf<double>(double a, double b) noexcept { return a + b; }
+template <>
+[[nodiscard]] inline ExactPair sumOf<ExactPair>(double a, double b) noexcept { return twoSum(a, b); }
+
+template <class Coord>
+[[nodiscard]] Coord coordOf(double a) noexcept;
+template <>
+[[nodiscard]] inline double coordOf<double>(double a) noexcept { return a; }
+template <>
+[[nodiscard]] inline ExactPair coordOf<ExactPair>(double a) noexcept { return {a, 0}; }
+
+/// -1, 0 or 1 as v compares with d, exactly.
+[[nodiscard]] inline int compare(double v, double d) noexcept { return v < d ? -1 : (v > d ? 1 : 0); }
+/// The sign of v, exactly (a pair's high part is zero only when the pair is).
+[[nodiscard]] inline int signOf(double v) noexcept { return v < 0 ? -1 : (v > 0 ? 1 : 0); }
+[[nodiscard]] inline int signOf(ExactPair v) noexcept { return signOf(v.hi); }
+/// A double near v, for estimates only: within u|v| of it.
+[[nodiscard]] inline double approximate(double v) noexcept { return v; }
+[[nodiscard]] inline double approximate(ExactPair v) noexcept { return v.hi; }
+/// Whether two coordinates are the same value represented the same way (a sufficient test of
+/// equality, for the shortcut in compareTimes).
+[[nodiscard]] inline bool identical(double a, double b) noexcept { return a == b; }
+[[nodiscard]] inline bool identical(ExactPair a, ExactPair b) noexcept { return a.hi == b.hi && a.lo == b.lo; }
+
+/// Whether a*s > b*t for certain (a, b coordinates, s, t >= 0): false may also mean "equal or
+/// could not tell". The walk's early exit; walking on is always harmless.
+[[nodiscard]] inline bool certainlyGreater(double a, double s, double b, double t) noexcept {
+    return a * s > b * t;  // monotonic rounding: a strictly greater rounded product is exact
+}
+[[nodiscard]] inline bool certainlyGreater(ExactPair a, double s, ExactPair b, double t) noexcept {
+    const double p = a.hi * s;
+    const double q = b.hi * t;
+    return p - q > kPairProductErrorBound * (std::fabs(p) + std::fabs(q));  // compareProducts' filter
 }
 
 /// One axis of a fast frame: the box's motion and the grid, as exact doubles.
@@ -107,10 +215,17 @@ struct FastAxis {
     double tile;    ///< tile size
     std::int64_t cells;
     double invTile; ///< 1 / tile, rounded: for estimates only
+    double size;    ///< high - low, exactly
 
     [[nodiscard]] double edge(std::int64_t k) const noexcept { return origin + static_cast<double>(k) * tile; }
-    [[nodiscard]] double entryDistance(double lo, double hi) const noexcept { return dir > 0 ? lo - high : low - hi; }
-    [[nodiscard]] double exitDistance(double lo, double hi) const noexcept { return dir > 0 ? hi - low : high - lo; }
+    template <class Coord = double>
+    [[nodiscard]] Coord entryDistance(double lo, double hi) const noexcept {
+        return dir > 0 ? differenceOf<Coord>(lo, high) : differenceOf<Coord>(low, hi);
+    }
+    template <class Coord = double>
+    [[nodiscard]] Coord exitDistance(double lo, double hi) const noexcept {
+        return dir > 0 ? differenceOf<Coord>(hi, low) : differenceOf<Coord>(high, lo);
+    }
     [[nodiscard]] bool overlapsAtStart(double lo, double hi) const noexcept {
 #if defined(TILESWEEP_FAULT_TOUCH_OVERLAPS)
         return low <= hi && high >= lo;  // deliberate fault: touching counted as overlap
@@ -119,15 +234,18 @@ struct FastAxis {
 #endif
     }
 
-    /// clamp(floor((c - origin) / tile), -1, cells), exactly. The estimate (c - origin) * invTile
-    /// is within 2.01u of the quotient, relatively: off by far less than one where the clamp
-    /// does not decide (|quotient| < 2^25), so one exact comparison with a tile edge, either
-    /// way, settles it.
-    [[nodiscard]] std::int64_t cellOf(double c) const noexcept {
-        std::int64_t k = clampCell((c - origin) * invTile);
-        if (k > -1 && edge(k) > c) {
+    /// clamp(floor((c - origin) / tile), -1, cells), exactly. The estimate is off by less than
+    /// one cell where the clamp does not decide: for an exact double c, (c - origin) * invTile
+    /// is within 2.01u of the quotient, relatively (float frames: the difference is exact); for
+    /// a pair, the difference of its high part and the origin adds u(|c| + |origin|) / tile,
+    /// under 0.2 cells where |quotient| < 2^32 since |origin| < 2^47 tile (admitDoubleFrame).
+    /// One exact comparison with a tile edge, either way, settles it.
+    template <class Coord>
+    [[nodiscard]] std::int64_t cellOf(Coord c) const noexcept {
+        std::int64_t k = clampCell((approximate(c) - origin) * invTile);
+        if (k > -1 && compare(c, edge(k)) < 0) {
             --k;
-        } else if (k < cells && edge(k + 1) <= c) {
+        } else if (k < cells && compare(c, edge(k + 1)) >= 0) {
             ++k;
         }
         return k;
@@ -142,7 +260,7 @@ struct FastAxis {
 
     /// Whether a grid line origin + k*tile (any integer k) lies in [lo, hi): the least k with
     /// origin + k*tile >= lo from a rounded quotient (off by at most one: the quotient is below
-    /// 2^53), settled by exact comparisons.
+    /// 2^53), settled by exact comparisons. Float frames only (every value an exact double).
     [[nodiscard]] bool hasLineIn(double lo, double hi) const noexcept {
         if (!(lo < hi)) return false;
         if (hi - lo >= tile) return true;
@@ -157,23 +275,26 @@ struct FastAxis {
     }
 };
 
-/// A time num / den (den > 0) as exact doubles.
+/// A time num / den (den > 0): num an exact coordinate, den an exact double.
+template <class Coord = double>
 struct FastTime {
-    double num;
+    Coord num;
     double den;
 };
 
 /// The verdict on one tile and, when it blocks, its time of impact (TileTest, axis_sweep.h).
+template <class Coord = double>
 struct FastTileTest {
     TileVerdict verdict;
-    FastTime time;
+    FastTime<Coord> time;
 };
 
-/// testTile (axis_sweep.h) on exact doubles: the same branches, every comparison of two times
-/// made by compareProducts. Only the motion fields of mx and my are read.
-[[nodiscard]] inline FastTileTest testTileFast(const FastAxis& mx, const FastAxis& my, double xlo, double xhi,
+/// testTile (axis_sweep.h) on exact coordinates: the same branches, every comparison of two
+/// times made by compareProducts. Only the motion fields of mx and my are read.
+template <class Coord = double>
+[[nodiscard]] FastTileTest<Coord> testTileFast(const FastAxis& mx, const FastAxis& my, double xlo, double xhi,
                                                double ylo, double yhi, bool& refined) noexcept {
-    FastTileTest miss{TileVerdict::Misses, {0, 1}};
+    FastTileTest<Coord> miss{TileVerdict::Misses, {coordOf<Coord>(0), 1}};
     if (mx.dir == 0 || my.dir == 0) {
         if (mx.dir == 0 && my.dir == 0) {
             if (mx.overlapsAtStart(xlo, xhi) && my.overlapsAtStart(ylo, yhi)) miss.verdict = TileVerdict::StartsOverlapping;
@@ -185,23 +306,27 @@ struct FastTileTest {
         const double lo = xMoves ? xlo : ylo;
         const double hi = xMoves ? xhi : yhi;
         if (!(xMoves ? still.overlapsAtStart(ylo, yhi) : still.overlapsAtStart(xlo, xhi))) return miss;
-        const double entry = moving.entryDistance(lo, hi);
-        if (entry < 0) {
-            if (moving.exitDistance(lo, hi) > 0) miss.verdict = TileVerdict::StartsOverlapping;
+        const Coord entry = moving.entryDistance<Coord>(lo, hi);
+        if (signOf(entry) < 0) {
+            if (signOf(moving.exitDistance<Coord>(lo, hi)) > 0) miss.verdict = TileVerdict::StartsOverlapping;
             return miss;
         }
-        if (entry >= moving.speed) return miss;
+        if (compare(entry, moving.speed) >= 0) return miss;
         return {xMoves ? TileVerdict::BlocksOnX : TileVerdict::BlocksOnY, {entry, moving.speed}};
     }
-    const double ex = mx.entryDistance(xlo, xhi);
-    const double ey = my.entryDistance(ylo, yhi);
-    const double xx = mx.exitDistance(xlo, xhi);
-    const double xy = my.exitDistance(ylo, yhi);
-    if (ex < 0 && ey < 0) {
-        if (xx > 0 && xy > 0) miss.verdict = TileVerdict::StartsOverlapping;
+    const Coord ex = mx.entryDistance<Coord>(xlo, xhi);
+    const Coord ey = my.entryDistance<Coord>(ylo, yhi);
+    const Coord xx = mx.exitDistance<Coord>(xlo, xhi);
+    const Coord xy = my.exitDistance<Coord>(ylo, yhi);
+    if (signOf(ex) < 0 && signOf(ey) < 0) {
+        if (signOf(xx) > 0 && signOf(xy) > 0) miss.verdict = TileVerdict::StartsOverlapping;
         return miss;
     }
-    if (ex >= mx.speed || ey >= my.speed) return miss;  // E >= 1
+#if defined(TILESWEEP_FAULT_END_INCLUSIVE)
+    if (compare(ex, mx.speed) > 0 || compare(ey, my.speed) > 0) return miss;  // deliberate fault: t = 1 blocks
+#else
+    if (compare(ex, mx.speed) >= 0 || compare(ey, my.speed) >= 0) return miss;  // E >= 1
+#endif
 #if !defined(TILESWEEP_FAULT_NO_CORNER_MISS)
     // E < X: each axis enters before the other exits.
     if (compareProducts(ex, my.speed, xy, mx.speed, refined) >= 0) return miss;
@@ -209,8 +334,8 @@ struct FastTileTest {
 #endif
 #if defined(TILESWEEP_FAULT_DOUBLE_PREDICATE)
     // Deliberate fault: the entry comparison in plain double arithmetic.
-    const double pa = ex * my.speed;
-    const double pb = ey * mx.speed;
+    const double pa = approximate(ex) * my.speed;
+    const double pb = approximate(ey) * mx.speed;
     const int order = pa > pb ? 1 : (pa < pb ? -1 : 0);
 #else
     const int order = compareProducts(ex, my.speed, ey, mx.speed, refined);
@@ -223,7 +348,7 @@ struct FastTileTest {
 /// The exact time num / den (0 <= num <= den, exact doubles) rounded to the nearest float,
 /// ties to even; false for a time in float's subnormal range (the lattice rounds those).
 /// `refined` is set when the rounded quotient landed on a float rounding midpoint.
-[[nodiscard]] inline bool roundTimeToFloat(const FastTime& t, bool& refined, float& out) noexcept {
+[[nodiscard]] inline bool roundTimeToFloat(const FastTime<double>& t, bool& refined, float& out) noexcept {
     const double q = t.num / t.den + 0.0;  // -0 (from -0 - +0) reads +0, as the lattice's does
     if (q != 0 && q < 0x1p-126) return false;
     std::uint64_t bits = 0;
@@ -247,15 +372,96 @@ struct FastTileTest {
     } else if (r < e) {
         out = roundToFloat(q, false);
     } else {
+#if defined(TILESWEEP_FAULT_TIME_TIES_AWAY)
+        out = roundToFloat(q, true);  // deliberate fault: an exact halfway time rounded away
+#else
         out = static_cast<float>(q);  // exactly the midpoint: ties to even
+#endif
     }
     return true;
 }
 
-/// The fast path's frame solver: FrameSolver (resolve.cpp) step for step, on exact doubles.
+/// The exact time num / den (num an exact pair, 0 <= num <= den, den a double) rounded to the
+/// nearest double, ties to even; false when it cannot settle it (the lattice then rounds).
+///
+/// A pair with a zero low part is a double, and IEEE division rounds correctly. Otherwise take
+/// q = fl(hi / den) and R = num - q*den = (hi - p) - e + lo exactly, where q*den = p + e
+/// (TwoProduct) and hi - p is exact (Sterbenz: p is within a factor 2 of hi). q is the correct
+/// rounding iff -down < R < up, with up = den*ulp(q)/2 and down the same below q (a quarter
+/// ulp when q is a power of two), both exact; R = up or R = -down is a tie. The filter computes
+/// R~ = fl(fl(d - e) + lo), d = hi - p, within (2u + u^2)(|d| + |e| + |lo|) of R; the bound,
+/// computed as fl(3u fl(fl(|d| + |e|) + |lo|)), exceeds that. Inside it the sign of the exact
+/// five-term sum decides (Filtered). q moves by one ulp at a time (it starts within two).
+[[nodiscard]] inline bool roundTimeToDouble(const FastTime<ExactPair>& t, bool& refined, double& out) noexcept {
+    double q = t.num.hi / t.den + 0.0;  // -0 reads +0
+    if (t.num.lo == 0) {
+        out = q;
+        return true;
+    }
+    for (int step = 0; step < 4; ++step) {
+        const double p = q * t.den;
+        const double e = productError(q, t.den, p);
+        const double d = t.num.hi - p;
+        const double r = (d - e) + t.num.lo;
+        const double bound = 3 * 0x1p-53 * ((std::fabs(d) + std::fabs(e)) + std::fabs(t.num.lo));
+        const double ulp = ulpAbove(q);
+        const double up = 0.5 * ulp * t.den;
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, &q, sizeof bits);
+        const bool powerOfTwo = (bits & ((std::uint64_t{1} << 52) - 1)) == 0;
+        const double down = (powerOfTwo ? 0.25 : 0.5) * ulp * t.den;
+        int above = 0;  // sign of R - up
+        if (r - bound > up) {
+            above = 1;
+        } else if (r + bound < up) {
+            above = -1;
+        } else {
+            refined = true;
+            const double terms[4] = {-up, t.num.lo, -e, d};
+            above = signOfSum(terms, 4);
+        }
+        if (above > 0) {
+            q = stepDouble(q, true);
+            continue;
+        }
+        int below = 0;  // sign of R + down
+        if (r + bound < -down) {
+            below = -1;
+        } else if (r - bound > -down) {
+            below = 1;
+        } else {
+            refined = true;
+            const double terms[4] = {down, t.num.lo, -e, d};
+            below = signOfSum(terms, 4);
+        }
+        if (below < 0) {
+            q = stepDouble(q, false);
+            continue;
+        }
+        const bool odd = (bits & 1) != 0;
+#if defined(TILESWEEP_FAULT_TIME_TIES_AWAY)
+        if (above == 0) q = stepDouble(q, true);  // deliberate fault: an exact halfway time rounded away
+        (void)odd;
+#else
+        if (above == 0 && odd) q = stepDouble(q, true);        // halfway to the even one above
+        if (below == 0 && odd) q = stepDouble(q, false);       // halfway to the even one below
+#endif
+        out = q;
+        return true;
+    }
+    return false;
+}
+
+/// The fast path's frame solver: FrameSolver (resolve.cpp) step for step, on exact doubles
+/// (T = float) or exact pairs under a filter (T = double).
+template <class T>
 class FastFrame {
 public:
-    explicit FastFrame(const SweepInput<float>& in) noexcept : map_(in.map) {
+    /// A coordinate the solver forms from two values: exact in double for float frames, an
+    /// exact pair for double frames.
+    using Coord = std::conditional_t<std::is_same<T, float>::value, double, ExactPair>;
+
+    explicit FastFrame(const SweepInput<T>& in) noexcept : map_(in.map) {
         axis_[0] = makeAxis(in.box.pos.x, in.box.size.x, in.displacement.x, in.map.origin.x, in.map.tileSize.x,
                             in.map.columns);
         axis_[1] = makeAxis(in.box.pos.y, in.box.size.y, in.displacement.y, in.map.origin.y, in.map.tileSize.y,
@@ -265,44 +471,47 @@ public:
     }
 
     /// Solves the frame into `result`; false when it meets a case it hands to the lattice.
-    bool run(const ResolveOutput<float>& out, SweepResult<float>& result) noexcept {
+    bool run(const ResolveOutput<T>& out, SweepResult<T>& result) noexcept {
+        if (!admitted_) return false;
         result.startOverlapCount = listStartOverlaps(out.startOverlaps, out.startOverlapCapacity);
         result.position = {start_[0], start_[1]};
         if (axis_[0].dir == 0 && axis_[1].dir == 0) {
             result.status = Status::Moved;
             return true;
         }
-        double finalPos[2] = {axis_[0].low + axis_[0].disp, axis_[1].low + axis_[1].disp};
+        Coord finalPos[2] = {sumOf<Coord>(axis_[0].low, axis_[0].disp), sumOf<Coord>(axis_[1].low, axis_[1].disp)};
         Hits first{out.contacts, std::max<std::int32_t>(out.contactCapacity, 0)};
         if (axis_[0].dir != 0 && axis_[1].dir != 0) {
             sweepBothAxes(first);
         } else {
             const int a = axis_[0].dir != 0 ? 0 : 1;
-            sweepOneAxis(a, axis_[1 - a].low, axis_[1 - a].high, {0, 1}, first);
+            sweepOneAxis(a, coordOf<Coord>(axis_[1 - a].low), coordOf<Coord>(axis_[1 - a].high),
+                         {coordOf<Coord>(0), 1}, first);
         }
         std::int32_t total = 0;
         if (first.any) {
             if (!finishStep(first)) return false;
             total = first.count;
             for (int a = 0; a < 2; ++a)
-                if (first.axisHit[a]) finalPos[a] = first.touch[a];
+                if (first.axisHit[a]) finalPos[a] = touchLow(a, first.touch[a]);
             const int free = first.axisHit[0] ? 1 : 0;
             if (first.axisHit[0] != first.axisHit[1] && axis_[free].dir != 0) {
                 const int held = 1 - free;
                 const std::int32_t used = std::min(first.count, first.capacity);
                 Hits second{out.contacts + used, first.capacity - used};
-                const double low = first.touch[held];
-                sweepOneAxis(free, low, low + (axis_[held].high - axis_[held].low), first.time, second);
+                sweepOneAxis(free, touchLow(held, first.touch[held]), touchHigh(held, first.touch[held]), first.time,
+                             second);
                 if (second.any) {
                     if (!finishStep(second)) return false;
                     total += second.count;
-                    finalPos[free] = second.touch[free];
+                    finalPos[free] = touchLow(free, second.touch[free]);
                 }
             }
         }
         result.contactCount = total;
         result.status = total > 0 ? Status::Blocked : Status::Moved;
-        result.position = {roundFinal(finalPos[0], 0), roundFinal(finalPos[1], 1)};
+        if (!roundFinal(finalPos[0], 0, result.position.x) || !roundFinal(finalPos[1], 1, result.position.y))
+            return false;
         return true;
     }
 
@@ -310,33 +519,52 @@ public:
     [[nodiscard]] bool refined() const noexcept { return refined_; }
 
 private:
-    /// The hits of one step (StepHits in resolve.cpp).
+    /// The hits of one step (StepHits in resolve.cpp). `touch` is the tile edge the box touches
+    /// on each contact axis: its near edge for a move toward minus infinity, its far edge else.
     struct Hits {
-        Contact<float>* store;
+        Contact<T>* store;
         std::int32_t capacity;
         std::int32_t count = 0;
         bool any = false;
-        FastTime time{0, 1};
+        FastTime<Coord> time{coordOf<Coord>(0), 1};
         bool axisHit[2] = {false, false};
         double touch[2] = {0, 0};
     };
 
-    static FastAxis makeAxis(float pos, float size, float disp, float origin, float tile,
-                             std::int32_t cells) noexcept {
+    FastAxis makeAxis(T pos, T size, T disp, T origin, T tile, std::int32_t cells) noexcept {
         const double p = pos;
         const double d = disp;
         const int dir = d > 0 ? 1 : (d < 0 ? -1 : 0);
         const double t = tile;
-        return {p, p + static_cast<double>(size), d, std::fabs(d), dir, origin, t, cells, 1 / t};
+        const double w = size;
+        const double o = origin;
+        const Coord high = sumOf<Coord>(p, w);
+        if constexpr (std::is_same<Coord, ExactPair>::value) {
+            if (high.lo != 0) admitted_ = false;  // the far edge is not a double: the lattice's
+            return {p, high.hi, d, std::fabs(d), dir, o, t, cells, 1 / t, w};
+        } else {
+            return {p, high, d, std::fabs(d), dir, o, t, cells, 1 / t, w};
+        }
     }
 
-    int compareTimes(const FastTime& a, const FastTime& b) noexcept {
+    /// The box's low edge when it touches the tile edge `e` on `axis`.
+    Coord touchLow(int axis, double e) const noexcept {
+        const FastAxis& g = axis_[axis];
+        return g.dir > 0 ? differenceOf<Coord>(e, g.size) : coordOf<Coord>(e);
+    }
+    /// The box's high edge when it touches the tile edge `e` on `axis`.
+    Coord touchHigh(int axis, double e) const noexcept {
+        const FastAxis& g = axis_[axis];
+        return g.dir > 0 ? coordOf<Coord>(e) : sumOf<Coord>(e, g.size);
+    }
+
+    int compareTimes(const FastTime<Coord>& a, const FastTime<Coord>& b) noexcept {
         // The same fraction (tiles entered across one face line): equal without arithmetic.
-        if (a.num == b.num && a.den == b.den) return 0;
+        if (identical(a.num, b.num) && a.den == b.den) return 0;
         return compareProducts(a.num, b.den, b.num, a.den, refined_);
     }
 
-    void add(Hits& hits, Cell cell, Axis axis, const FastTime& t, double touchPosition) noexcept {
+    void add(Hits& hits, Cell cell, Axis axis, const FastTime<Coord>& t, double touchEdge) noexcept {
         if (hits.any) {
             const int order = compareTimes(t, hits.time);
             if (order > 0) return;
@@ -349,19 +577,23 @@ private:
         hits.time = t;
         const int a = axis == Axis::X ? 0 : 1;
         hits.axisHit[a] = true;
-        hits.touch[a] = touchPosition;
-        if (hits.count < hits.capacity) hits.store[hits.count] = {cell, normalOn(a), 0.0f};
+        hits.touch[a] = touchEdge;
+        if (hits.count < hits.capacity) hits.store[hits.count] = {cell, normalOn(a), T(0)};
         ++hits.count;
     }
 
     /// Sorts a step's stored hits by row, then column, and writes its frame time.
     bool finishStep(Hits& hits) noexcept {
         const std::int32_t stored = std::min(hits.count, hits.capacity);
-        float time = 0;
-        if (!roundTimeToFloat(hits.time, refined_, time)) return false;
+        T time = 0;
+        if constexpr (std::is_same<T, float>::value) {
+            if (!roundTimeToFloat(hits.time, refined_, time)) return false;
+        } else {
+            if (!roundTimeToDouble(hits.time, refined_, time)) return false;
+        }
         for (std::int32_t k = 0; k < stored; ++k) hits.store[k].time = time;
         if (stored > 1)
-            std::sort(hits.store, hits.store + stored, [](const Contact<float>& a, const Contact<float>& b) {
+            std::sort(hits.store, hits.store + stored, [](const Contact<T>& a, const Contact<T>& b) {
                 return a.tile.j != b.tile.j ? a.tile.j < b.tile.j : a.tile.i < b.tile.i;
             });
         return true;
@@ -369,28 +601,75 @@ private:
 
     /// FrameSolver::roundFinal: toward the start, or toward minus infinity on an axis moving
     /// that way when rounding back would carry the far edge over a grid line. `exact` is the
-    /// exact final coordinate; the rounded one is a float between it and the start, so a
-    /// multiple of 2^G below 2^C, and its far edge is exact too.
-    float roundFinal(double exact, int axis) const noexcept {
+    /// exact final coordinate; false when the grid-line test cannot be settled here.
+    bool roundFinal(double exact, int axis, float& out) const noexcept {
+        // Float frames: the rounded value is a float between the exact one and the start, so a
+        // multiple of 2^G below 2^C, and its far edge is exact too.
         exact += 0.0;  // -0 reads +0, as the lattice's zero does
         const float start = start_[axis];
-        if (exact == static_cast<double>(start)) return start;
+        if (exact == static_cast<double>(start)) {
+            out = start;
+            return true;
+        }
 #if defined(TILESWEEP_FAULT_ROUND_NEAREST)
         const float towardStart = static_cast<float>(exact);  // deliberate fault
 #else
         const float towardStart = roundToFloat(exact, exact < static_cast<double>(start));
 #endif
-#if defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE)
-        return towardStart;  // deliberate fault: the contract's rule before the amendment
-#else
+        out = towardStart;
+#if !defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE)  // the fault keeps the rule before the amendment
         const FastAxis& m = axis_[axis];
-        if (!(exact < m.low)) return towardStart;
+        if (!(exact < m.low)) return true;
         const double rounded = towardStart;
-        if (rounded == exact) return towardStart;
-        const double size = m.high - m.low;
-        if (!m.hasLineIn(exact + size, rounded + size)) return towardStart;
-        return roundToFloat(exact, false);
+        if (rounded == exact) return true;
+        if (!m.hasLineIn(exact + m.size, rounded + m.size)) return true;
+        out = roundToFloat(exact, false);
 #endif
+        return true;
+    }
+
+    /// The same on an exact pair (double frames). The pair's high part is the exact value
+    /// rounded to nearest; its low part says which side of it the exact value lies on, so the
+    /// directed roundings are hi or its neighbour. The grid-line test is filtered: the grid
+    /// coordinate of the far edge, z = (exact + size - origin) / tile, is estimated from
+    /// fl(fl(fl(hi + size) - origin) * fl(1 / tile)) within 4.1u(|hi| + size + |origin|) / tile
+    /// + |lo| / tile (two rounded sums, the reciprocal and the product; lo left out), and the
+    /// interval [exact, rounded) + size spans (rounded - exact) / tile <= (|rounded - hi| + |lo|)
+    /// / tile of it. The reach below is 16u and twice those, which also covers its own rounding
+    /// and that of z -+ reach; when the widened interval holds no integer there is no line
+    /// (decided); otherwise the lattice settles it.
+    bool roundFinal(ExactPair exact, int axis, double& out) const noexcept {
+        const double start = start_[axis];
+        const int side = compare(exact, start);
+        if (side == 0) {
+            out = start;
+            return true;
+        }
+        const double hi = exact.hi + 0.0;  // -0 reads +0, as the lattice's zero does
+        const double down = exact.lo < 0 ? stepDouble(hi, false) : hi;  // toward minus infinity
+        const double up = exact.lo > 0 ? stepDouble(hi, true) : hi;
+#if defined(TILESWEEP_FAULT_ROUND_NEAREST)
+        const double towardStart = hi;  // deliberate fault
+        (void)up;
+#else
+        const double towardStart = side > 0 ? down : up;
+#endif
+        out = towardStart;
+#if !defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE)  // the fault keeps the rule before the amendment
+        const FastAxis& m = axis_[axis];
+        if (side > 0 || exact.lo == 0) return true;  // not toward minus infinity, or exact
+        // Some k with exact + size <= origin + k*tile < towardStart + size?
+        constexpr double u = 0x1p-53;
+        const double z = ((hi + m.size) - m.origin) * m.invTile;
+        const double reach = 16 * u * ((std::fabs(hi) + m.size) + std::fabs(m.origin)) * m.invTile +
+                             2 * (std::fabs(towardStart - hi) + std::fabs(exact.lo)) * m.invTile;
+        if (!(std::fabs(z) < 0x1p40)) return false;
+        const double from = z - reach;
+        const double to = z + reach;
+        const std::int64_t k = floorToInt(from);
+        if (static_cast<double>(k) == from || floorToInt(to) != k) return false;  // may hold a line
+#endif
+        return true;
     }
 
     std::int32_t listStartOverlaps(Cell* store, std::int32_t capacity) const noexcept {
@@ -426,14 +705,15 @@ private:
         return std::min<std::int64_t>(k, g.cells - 1);
     }
 
-    double touchPosition(int axis, std::int64_t k) const noexcept {
+    /// The tile edge the box touches when it hits cell k on `axis`.
+    double touchEdge(int axis, std::int64_t k) const noexcept {
         const FastAxis& g = axis_[axis];
-        return g.dir > 0 ? g.edge(k) - (g.high - g.low) : g.edge(k + 1);
+        return g.dir > 0 ? g.edge(k) : g.edge(k + 1);
     }
 
     void sweepBothAxes(Hits& hits) noexcept {
-        // The primary axis: products of two floats, exact in double. (Either choice is correct;
-        // this one only keeps the walk short.)
+        // The primary axis: any choice is correct; this one only keeps the walk short (for float
+        // frames the products are exact, for double frames nearly so).
         const int p = axis_[0].speed * axis_[1].tile >= axis_[1].speed * axis_[0].tile ? 0 : 1;
         const int s = 1 - p;
         const FastAxis& mp = axis_[p];
@@ -451,14 +731,14 @@ private:
         for (std::int64_t k = firstCellAhead(p); k >= 0 && k < mp.cells; k += mp.dir) {
             const double lo = mp.edge(k);
             const double hi = mp.edge(k + 1);
-            const double entry = mp.entryDistance(lo, hi);
-            if (entry >= mp.speed) break;  // entered at t >= 1
-            // Entered after the hits found so far: a rounded product strictly greater is an
-            // exactly greater one (monotonic rounding); on a rounded tie walking on is harmless.
-            if (hits.any && entry * hits.time.den > hits.time.num * mp.speed) break;
-            const double exit = mp.exitDistance(lo, hi);
-            const double t0 = entry < 0 ? 0.0 : entry;
-            const double t1 = exit < mp.speed ? exit : mp.speed;
+            const Coord entry = mp.entryDistance<Coord>(lo, hi);
+            if (compare(entry, mp.speed) >= 0) break;  // entered at t >= 1
+            // Entered after the hits found so far, for certain; on a near tie walking on is harmless.
+            if (hits.any && certainlyGreater(entry, hits.time.den, hits.time.num, mp.speed)) break;
+            const double entryNear = approximate(entry);
+            const double exitNear = approximate(mp.exitDistance<Coord>(lo, hi));
+            const double t0 = entryNear < 0 ? 0.0 : entryNear;
+            const double t1 = exitNear < mp.speed ? exitNear : mp.speed;
             // The secondary span while the box is in this primary cell, estimated, then widened
             // by the bound so that it holds the exact range (extra cells are tested and rejected).
             const double lowAt = (ms.low + slope * (forward ? t0 : t1) - ms.origin) * ms.invTile;
@@ -480,7 +760,8 @@ private:
     void testAndRecord(std::int64_t i, std::int64_t j, Hits& hits) noexcept {
         const FastAxis& mx = axis_[0];
         const FastAxis& my = axis_[1];
-        const FastTileTest test = testTileFast(mx, my, mx.edge(i), mx.edge(i + 1), my.edge(j), my.edge(j + 1), refined_);
+        const FastTileTest<Coord> test =
+            testTileFast<Coord>(mx, my, mx.edge(i), mx.edge(i + 1), my.edge(j), my.edge(j + 1), refined_);
         Axis axis = Axis::Y;
         switch (test.verdict) {
             case TileVerdict::Misses:
@@ -496,28 +777,28 @@ private:
         }
         const int a = axis == Axis::X ? 0 : 1;
         add(hits, {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)}, axis, test.time,
-            touchPosition(a, a == 0 ? i : j));
+            touchEdge(a, a == 0 ? i : j));
     }
 
-    /// FrameSolver::sweepOneAxis on exact doubles.
-    void sweepOneAxis(int axis, double heldLow, double heldHigh, const FastTime& from, Hits& hits) noexcept {
+    /// FrameSolver::sweepOneAxis on exact coordinates.
+    void sweepOneAxis(int axis, Coord heldLow, Coord heldHigh, const FastTime<Coord>& from, Hits& hits) noexcept {
         const FastAxis& ga = axis_[axis];
         const FastAxis& go = axis_[1 - axis];
         const std::int64_t j0 = std::max<std::int64_t>(go.cellOf(heldLow), 0);
         const std::int64_t j1 = std::min<std::int64_t>(go.cellOf(heldHigh), go.cells - 1);
         if (j0 > j1) return;
         for (std::int64_t k = firstCellAhead(axis); k >= 0 && k < ga.cells; k += ga.dir) {
-            const double entry = ga.entryDistance(ga.edge(k), ga.edge(k + 1));
-            if (entry >= ga.speed) return;  // entered at t >= 1
-            const FastTime at{entry, ga.speed};
+            const Coord entry = ga.entryDistance<Coord>(ga.edge(k), ga.edge(k + 1));
+            if (compare(entry, ga.speed) >= 0) return;  // entered at t >= 1
+            const FastTime<Coord> at{entry, ga.speed};
             if (compareTimes(at, from) < 0) continue;  // overlapping already at `from`
             for (std::int64_t j = j0; j <= j1; ++j) {
                 const std::int64_t ci = axis == 0 ? k : j;
                 const std::int64_t cj = axis == 0 ? j : k;
                 if (!map_.isSolid(ci, cj)) continue;
-                if (!(heldLow < go.edge(j + 1) && heldHigh > go.edge(j))) continue;
+                if (!(compare(heldLow, go.edge(j + 1)) < 0 && compare(heldHigh, go.edge(j)) > 0)) continue;
                 add(hits, {static_cast<std::int32_t>(ci), static_cast<std::int32_t>(cj)},
-                    axis == 0 ? Axis::X : Axis::Y, at, touchPosition(axis, k));
+                    axis == 0 ? Axis::X : Axis::Y, at, touchEdge(axis, k));
             }
             if (hits.any) return;
         }
@@ -528,10 +809,11 @@ private:
         return axis == 0 ? Normal{against, 0} : Normal{0, against};
     }
 
-    const TileMapView<float>& map_;
+    const TileMapView<T>& map_;
     FastAxis axis_[2];
-    float start_[2];
+    T start_[2];
     bool refined_ = false;
+    bool admitted_ = true;
 };
 
 }  // namespace tilesweep::detail

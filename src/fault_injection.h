@@ -13,15 +13,18 @@
 //   BROADPHASE_SHORT   the broadphase's secondary range one cell short   (resolve.cpp)
 //   OLD_ROUNDING_RULE  positions always rounded toward the start: the contract before its
 //                      amendment, which can leave the far edge inside a missed corner (resolve.cpp)
-//   TIME_TIES_AWAY     a frame time exactly halfway between two values rounded away, not to even (lattice.h)
-//   END_INCLUSIVE      a tile reached at exactly t = 1, both axes moving, counted as a hit (axis_sweep.h)
+//   TIME_TIES_AWAY     a frame time exactly halfway between two values rounded away, not to even (lattice.h,
+//                      fast_frame.h)
+//   END_INCLUSIVE      a tile reached at exactly t = 1, both axes moving, counted as a hit (axis_sweep.h,
+//                      fast_frame.h)
 //   NARROW_TIER        frames that need 128 to 191 bits solved on 128-bit integers (lattice.h)
 //   FMA                -ffp-contract=fast instead of off           (cmake/warnings.cmake)
 //   ORACLE_SKIPS_TOUCH_AT_0  in the exact reference only: a tile touched at t = 0 never blocks
 //                      (oracle/exact/exact_sweep.cpp), for the reference's own cross-check
-//   FILTER_BOUND_HALVED  the fast path's certified error bound (the secondary range of its
-//                      walk, kSecondaryRangeErrorUlps) halved, below what its derivation needs
-//                                                                  (fast_frame.h)
+//   FILTER_BOUND_HALVED  the fast path's certified error bounds halved, below what their
+//                      derivations need: the secondary range of its walk
+//                      (kSecondaryRangeErrorUlps, fast_frame.h) and the double frames' time
+//                      comparison filter (kPairProductErrorBound, exact_double.h)
 //   FAST_RANGE_TOO_WIDE  the range test admitting a float frame to the fast path one binade
 //                      too generous (spans of 54 bits, which a double cannot hold) (fast_frame.h)
 

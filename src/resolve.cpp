@@ -429,15 +429,20 @@ SweepResult<T> resolveMove(const SweepInput<T>& input, const ResolveOutput<T>& o
         lastPath = detail::DecisionPath::Exact;
         return invalid;
     }
+    // The fast path, when the range test admits the frame (fast_frame.h): float frames on exact
+    // doubles, double frames on exact pairs under a certified filter.
+    bool admitted = false;
     if constexpr (std::is_same<T, float>::value) {
-        // The fast path, when the range test shows it holds every value exactly (fast_frame.h).
-        if (detail::admitFloatFrame(input)) {
-            detail::FastFrame frame(input);
-            SweepResult<T> result;
-            if (frame.run(output, result)) {
-                lastPath = frame.refined() ? detail::DecisionPath::Filtered : detail::DecisionPath::Fast;
-                return result;
-            }
+        admitted = detail::admitFloatFrame(input);
+    } else {
+        admitted = detail::admitDoubleFrame(input);
+    }
+    if (admitted) {
+        detail::FastFrame<T> frame(input);
+        SweepResult<T> result;
+        if (frame.run(output, result)) {
+            lastPath = frame.refined() ? detail::DecisionPath::Filtered : detail::DecisionPath::Fast;
+            return result;
         }
     }
     lastPath = detail::DecisionPath::Exact;
