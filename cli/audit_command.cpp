@@ -4,13 +4,20 @@
 // production row (core-float, core-double) is not zero: that is a bug in the core.
 #include "audit_command.h"
 
+#include <unistd.h>
+
 #include <chrono>
+#include <filesystem>
 #include <cstdio>
 #include <exception>
 #include <iostream>
 #include <string>
 
 #include "audit/audit.h"
+#if TILESWEEP_HAVE_CHECK
+#include "check_command.h"
+#include "conformance_report.h"
+#endif
 
 namespace tilesweep::cli {
 
@@ -25,6 +32,29 @@ CLI::App* addAuditCommand(CLI::App& app, AuditOptions& options) {
         ->type_name("DIR")
         ->capture_default_str();
     command->add_option("--jobs", options.jobs, "Worker threads (default: all cores)")->check(CLI::PositiveNumber);
+    command->add_option("--resolver-cmd", options.resolverCmds,
+                        "Conformance mode: hold this outside resolver (repeatable) to every claim about\n"
+                        "results, instead of the tolerance audit; writes --report")
+        ->type_name("CMD");
+    command->add_option("--resolver-name", options.resolverNames, "A label per --resolver-cmd, in order");
+    command->add_option("--report", options.report, "Conformance mode: the Markdown report")->capture_default_str();
+    command->add_option("--pictures", options.pictures, "Conformance mode: where counterexample pictures go")
+        ->capture_default_str();
+    command->add_option("--seconds", options.secondsPerResolver, "Conformance mode: check budget per resolver")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
+    command->add_option("--property-cases", options.propertyCases, "Conformance mode: cases per property per round")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    command->add_option("--claims", options.claims, "Conformance mode: all, or safety (no bit-for-bit claims)")
+        ->check(CLI::IsMember(std::vector<std::string>{"all", "safety"}))
+        ->capture_default_str();
+    command->add_option("--scalar", options.scalar, "Conformance mode: the resolvers' scalar type")
+        ->check(CLI::IsMember(std::vector<std::string>{"float", "double"}))
+        ->capture_default_str();
+    command->add_option("--resolver-timeout", options.resolverTimeout, "Conformance mode: seconds per batch")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     command->footer(
         "Implementations: core-float, core-double (tilesweep::runScene), twin-* and grid-* (game-style\n"
         "swept AABB, bench/), seed-float, seed-double (the seed\n"
@@ -37,7 +67,56 @@ CLI::App* addAuditCommand(CLI::App& app, AuditOptions& options) {
     return command;
 }
 
+#if TILESWEEP_HAVE_CHECK
+namespace {
+
+/// Conformance mode: one check per outside resolver, every run kept going for the whole budget
+/// so that failure rates mean something, and one report.
+int runConformance(const AuditOptions& options) {
+    std::vector<ConformanceEntry> entries;
+    bool allHeld = true;
+    for (std::size_t k = 0; k < options.resolverCmds.size(); ++k) {
+        ConformanceEntry entry;
+        entry.label = k < options.resolverNames.size() ? options.resolverNames[k] : options.resolverCmds[k];
+        CheckOptions& check = entry.options;
+        check.resolverCmd = options.resolverCmds[k];
+        check.resolverTimeout = options.resolverTimeout;
+        check.claims = options.claims;
+        check.scalar = options.scalar;
+        check.cases = options.propertyCases;
+        check.seconds = options.secondsPerResolver;
+        check.seed = options.seed;
+        check.jobs = options.jobs;
+        check.keepGoing = true;
+        check.quiet = true;
+        check.corpusDir = (std::filesystem::temp_directory_path() /
+                           ("tilesweep-conformance-" + std::to_string(getpid()) + "-" + std::to_string(k)))
+                              .string();
+        std::fprintf(stderr, "tilesweep audit: checking %s (%s) for %.0f s\n", entry.label.c_str(),
+                     check.resolverCmd.c_str(), check.seconds);
+        entry.run = runChecks(check);
+        int failed = 0;
+        for (const CheckRow& r : entry.run.rows) failed += r.failures > 0 ? 1 : 0;
+        std::printf("%-24s %3zu properties, %3d failed\n", entry.label.c_str(), entry.run.rows.size(), failed);
+        allHeld = allHeld && failed == 0;
+        entries.push_back(std::move(entry));
+    }
+    writeConformanceReport(entries, options.report, options.pictures);
+    for (const ConformanceEntry& e : entries) {
+        std::error_code ignored;
+        std::filesystem::remove_all(e.options.corpusDir, ignored);
+    }
+    std::printf("report: %s\n", options.report.c_str());
+    return allHeld ? 0 : 1;
+}
+
+}  // namespace
+#endif
+
 int runAuditCommand(const AuditOptions& options) {
+#if TILESWEEP_HAVE_CHECK
+    if (!options.resolverCmds.empty()) return runConformance(options);
+#endif
     audit::AuditConfig config;
     config.cases = options.cases;
     config.seed = options.seed;

@@ -1,8 +1,13 @@
 // SPDX-License-Identifier: MIT
 // `tilesweep check`: the property suite as the main job. Runs every property (or the ones
-// named) on all cores, shows progress while it runs, and prints a table: property, cases,
-// failures, coverage of each class, time. On a failure the shrunk scene is written to the
-// regression corpus with its picture, and the exit status is 1.
+// named) on all cores, shows progress while it runs, and prints a table: property, verdict,
+// cases, failures, cases per second, coverage of each class, time. On a failure the shrunk
+// scene is written to the regression corpus with its picture, and the exit status is 1.
+//
+// With --resolver-cmd the claims about results run against an outside process instead
+// (properties/scene_runner.h): each worker starts the command once and keeps it, a crash or a
+// hang fails the scene it was given and the process is restarted, and RapidCheck shrinks a
+// failure as usual, asking the process again at every step.
 //
 // RapidCheck keeps its state in process-wide statics, so the parallelism is processes: the
 // parent forks one worker per job before it starts any thread; each worker runs its share of
@@ -13,16 +18,22 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
-#include <map>
-#include <nlohmann/json.hpp>
+#include <memory>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "conformance_report.h"
 #include "property_suite.h"
+#include "scene_runner.h"
 
 namespace tilesweep::cli {
 namespace {
@@ -34,56 +45,79 @@ using properties::PropertyOutcome;
 const std::vector<std::string> kTableTags = {"hit", "miss", "tie", "touch-at-0", "two-step", "seam", "far-origin",
                                               "family:corner-pass"};
 
-std::vector<const Property*> selectProperties(const std::string& filter) {
+std::vector<const Property*> selectProperties(const CheckOptions& options) {
+    const bool outside = !options.resolverCmd.empty();
+    const bool safetyOnly = options.claims == "safety";
+    const std::string scalar = options.scalar.empty() && outside ? "float" : options.scalar;
     std::vector<const Property*> selected;
-    for (const Property& p : properties::allProperties())
-        if (filter.empty() || p.name.find(filter) != std::string::npos) selected.push_back(&p);
+    for (const Property& p : properties::allProperties()) {
+        if (!options.property.empty() && p.name.find(options.property) == std::string::npos) continue;
+        if (!scalar.empty() && p.scalar != scalar) continue;
+        if (outside && !properties::appliesToOutside(p.scope, safetyOnly)) continue;
+        if (!outside && safetyOnly && p.scope == properties::ClaimScope::BitForBit) continue;
+        selected.push_back(&p);
+    }
     return selected;
 }
 
-/// A worker: runs properties index % jobs == worker, round after round with a new seed each
-/// round, until the deadline (at least one round), and reports each run on `out`.
-[[noreturn]] void runWorker(const std::vector<const Property*>& work, int worker, int jobs,
-                            const CheckOptions& options, int out) {
+std::string corpusDirOf(const CheckOptions& options) {
+    if (!options.corpusDir.empty()) return options.corpusDir;
+    return options.resolverCmd.empty() ? "properties/corpus" : "resolver-corpus";
+}
+
+/// A worker's rounds: properties index % jobs == worker, round after round with a new seed each
+/// round, until the deadline (at least one round), each run reported on `out`.
+void runRounds(const std::vector<const Property*>& work, int worker, int jobs, const CheckOptions& options, int out) {
+    // The outside resolver, one process per worker, shared by the float and double runners.
+    std::shared_ptr<properties::ResolverProcess> process;
+    std::unique_ptr<properties::OutsideSceneRunner<float>> floatRunner;
+    std::unique_ptr<properties::OutsideSceneRunner<double>> doubleRunner;
+    std::unique_ptr<properties::ScopedSceneRunner<float>> useFloat;
+    std::unique_ptr<properties::ScopedSceneRunner<double>> useDouble;
+    if (!options.resolverCmd.empty()) {
+        process = std::make_shared<properties::ResolverProcess>(options.resolverCmd, options.resolverTimeout);
+        floatRunner = std::make_unique<properties::OutsideSceneRunner<float>>(process);
+        doubleRunner = std::make_unique<properties::OutsideSceneRunner<double>>(process);
+        useFloat = std::make_unique<properties::ScopedSceneRunner<float>>(*floatRunner);
+        useDouble = std::make_unique<properties::ScopedSceneRunner<double>>(*doubleRunner);
+    }
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(options.seconds);
     for (int round = 0;; ++round) {
         bool anyFailed = false;
         for (std::size_t k = 0; k < work.size(); ++k) {
             if (static_cast<int>(k % static_cast<std::size_t>(jobs)) != worker) continue;
+            if (round > 0 && std::chrono::steady_clock::now() >= deadline) break;
             properties::RunOptions run;
             run.seed = options.seed + static_cast<std::uint64_t>(round);
             run.cases = options.cases;
-            run.corpusDir = options.corpusDir;
+            run.corpusDir = corpusDirOf(options);
             const PropertyOutcome o = work[k]->run(run);
             anyFailed = anyFailed || !o.passed;
-            const nlohmann::json report = {{"index", k},        {"passed", o.passed},   {"cases", o.cases},
-                                           {"tags", o.tagCounts}, {"message", o.message}, {"corpus", o.corpusFile},
-                                           {"picture", o.pictureFile}, {"seconds", o.seconds}, {"seed", run.seed}};
-            const std::string line = report.dump() + "\n";
+            const nlohmann::json report = {{"index", k},          {"passed", o.passed},     {"cases", o.cases},
+                                           {"tags", o.tagCounts},   {"message", o.message},   {"corpus", o.corpusFile},
+                                           {"picture", o.pictureFile}, {"seconds", o.seconds}, {"seed", run.seed},
+                                           {"scene", o.sceneLine},  {"failure", o.failure}};
+            const std::string line = report.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
             if (write(out, line.data(), line.size()) < 0) _exit(3);
         }
-        if (anyFailed || std::chrono::steady_clock::now() >= deadline) break;
+        if ((anyFailed && !options.keepGoing) || std::chrono::steady_clock::now() >= deadline) break;
     }
+}
+
+[[noreturn]] void runWorker(const std::vector<const Property*>& work, int worker, int jobs, const CheckOptions& options,
+                            int out) {
+    runRounds(work, worker, jobs, options, out);  // its destructors stop the outside process
     close(out);
     _exit(0);
 }
 
-struct Row {
-    int runs = 0;
-    int cases = 0;
-    int failures = 0;
-    double seconds = 0;
-    std::map<std::string, int> tags;
-    std::vector<std::string> messages;
-};
-
-void printTable(const std::vector<const Property*>& work, const std::vector<Row>& rows) {
-    std::printf("\n%-52s %9s %5s", "property", "cases", "fail");
+void printTable(const CheckRun& run) {
+    std::printf("\n%-52s %-7s %9s %5s %9s", "property", "verdict", "cases", "fail", "cases/s");
     for (const std::string& tag : kTableTags) std::printf(" %8.8s", tag.c_str());
     std::printf(" %8s\n", "time s");
-    for (std::size_t k = 0; k < work.size(); ++k) {
-        const Row& r = rows[k];
-        std::printf("%-52s %9d %5d", work[k]->name.c_str(), r.cases, r.failures);
+    for (const CheckRow& r : run.rows) {
+        std::printf("%-52s %-7s %9d %5d %9.0f", r.property.c_str(), r.failures == 0 ? "ok" : "FAILED", r.cases,
+                    r.failures, r.seconds > 0 ? r.cases / r.seconds : 0.0);
         for (const std::string& tag : kTableTags) {
             const auto it = r.tags.find(tag);
             const double share = r.cases > 0 && it != r.tags.end() ? 100.0 * it->second / r.cases : 0.0;
@@ -104,8 +138,27 @@ CLI::App* addCheckCommand(CLI::App& app, CheckOptions& options) {
     command->add_option("--seed", options.seed, "RapidCheck seed of the first round")->capture_default_str();
     command->add_option("--property", options.property, "Run only properties whose name contains this");
     command->add_option("--jobs", options.jobs, "Worker processes (default: all cores)")->check(CLI::PositiveNumber);
-    command->add_option("--corpus", options.corpusDir, "Where a failing case's regression file and picture go")
+    command->add_option("--corpus", options.corpusDir,
+                        "Where a failing case's regression file and picture go (default: properties/corpus;\n"
+                        "resolver-corpus with --resolver-cmd)");
+    command->add_option("--resolver-cmd", options.resolverCmd,
+                        "Check an outside resolver: a shell command that reads scene lines on stdin and writes\n"
+                        "one result line per scene, as `tilesweep resolve` does")
+        ->type_name("CMD");
+    command->add_option("--resolver-timeout", options.resolverTimeout,
+                        "Seconds a batch of scenes may take before the outside resolver counts as hung")
+        ->check(CLI::PositiveNumber)
         ->capture_default_str();
+    command->add_option("--claims", options.claims, "all, or safety: leave out the bit-for-bit claims")
+        ->check(CLI::IsMember(std::vector<std::string>{"all", "safety"}))
+        ->capture_default_str();
+    command->add_option("--scalar", options.scalar,
+                        "Only the properties in this scalar type (default: both; float with --resolver-cmd)")
+        ->check(CLI::IsMember(std::vector<std::string>{"float", "double"}));
+    command->add_option("--report", options.report, "Also write a conformance report (Markdown) to this file")
+        ->type_name("FILE.md");
+    command->add_flag("--keep-going", options.keepGoing,
+                      "Keep running rounds after a failure, to measure failure rates over the whole budget");
     command->footer(
         "Each property runs --cases cases per round; rounds repeat with seed+1, seed+2, ... until\n"
         "--seconds have passed (one round at least). A property fails when a case falsifies it or\n"
@@ -113,39 +166,48 @@ CLI::App* addCheckCommand(CLI::App& app, CheckOptions& options) {
         "scene is written to --corpus as <property>-<hash>.jsonl (every number a hexfloat, with the\n"
         "property and seed) with its picture beside it; corpus_test replays every such file.\n"
         "\n"
+        "With --resolver-cmd CMD, the claims about results (not the ones about tilesweep's internals)\n"
+        "run against CMD, started once per worker with sh -c. A crash, a hang past --resolver-timeout,\n"
+        "a malformed line or the wrong number of lines fails that scene, and CMD is restarted. The\n"
+        "corpus file then also holds \"resolver_cmd\", \"resolver_answer\" and \"exact_answer\";\n"
+        "`tilesweep replay --resolver-cmd CMD FILE...` replays it.\n"
+        "\n"
         "Exit status: 0 every property held; 1 some property failed; 2 bad arguments.");
     return command;
 }
 
-int runCheckCommand(const CheckOptions& options) {
-    const std::vector<const Property*> work = selectProperties(options.property);
-    if (work.empty()) {
-        std::cerr << "tilesweep check: no property matches '" << options.property << "'\n";
-        return 2;
-    }
+CheckRun runChecks(const CheckOptions& options) {
+    const std::vector<const Property*> work = selectProperties(options);
+    if (work.empty()) throw std::invalid_argument("no property matches '" + options.property + "'");
     int jobs = options.jobs > 0 ? options.jobs : static_cast<int>(std::thread::hardware_concurrency());
     if (jobs < 1) jobs = 1;
     if (jobs > static_cast<int>(work.size())) jobs = static_cast<int>(work.size());
-    std::printf("tilesweep check: %zu properties, %d cases each per round, seed %llu, %d job%s, %.0f s budget\n",
-                work.size(), options.cases, static_cast<unsigned long long>(options.seed), jobs, jobs == 1 ? "" : "s",
-                options.seconds);
-    std::fflush(stdout);
+    CheckRun run;
+    run.jobs = jobs;
+    for (const Property* p : work) {
+        CheckRow row;
+        row.property = p->name;
+        row.claim = p->claim;
+        run.rows.push_back(row);
+    }
+    if (!options.quiet) {
+        std::printf("tilesweep check: %zu properties, %d cases each per round, seed %llu, %d job%s, %.0f s budget%s%s\n",
+                    work.size(), options.cases, static_cast<unsigned long long>(options.seed), jobs,
+                    jobs == 1 ? "" : "s", options.seconds, options.resolverCmd.empty() ? "" : ", resolver: ",
+                    options.resolverCmd.c_str());
+        std::fflush(stdout);
+    }
 
     std::vector<int> pipes;
     std::vector<pid_t> children;
     for (int w = 0; w < jobs; ++w) {
         int fds[2];
-        if (pipe(fds) != 0) {
-            std::perror("tilesweep check: pipe");
-            return 2;
-        }
+        if (pipe(fds) != 0) throw std::runtime_error("pipe failed");
         const pid_t pid = fork();
-        if (pid < 0) {
-            std::perror("tilesweep check: fork");
-            return 2;
-        }
+        if (pid < 0) throw std::runtime_error("fork failed");
         if (pid == 0) {
             close(fds[0]);
+            for (int fd : pipes) close(fd);
             runWorker(work, w, jobs, options, fds[1]);
         }
         close(fds[1]);
@@ -153,7 +215,6 @@ int runCheckCommand(const CheckOptions& options) {
         children.push_back(pid);
     }
 
-    std::vector<Row> rows(work.size());
     std::vector<std::string> pending(pipes.size());
     const auto started = std::chrono::steady_clock::now();
     int runsDone = 0;
@@ -179,7 +240,7 @@ int runCheckCommand(const CheckOptions& options) {
             while ((end = pending[w].find('\n')) != std::string::npos) {
                 const nlohmann::json r = nlohmann::json::parse(pending[w].substr(0, end));
                 pending[w].erase(0, end + 1);
-                Row& row = rows[r["index"].get<std::size_t>()];
+                CheckRow& row = run.rows[r["index"].get<std::size_t>()];
                 ++row.runs;
                 ++runsDone;
                 row.cases += r["cases"].get<int>();
@@ -187,39 +248,77 @@ int runCheckCommand(const CheckOptions& options) {
                 for (const auto& [tag, count] : r["tags"].items()) row.tags[tag] += count.get<int>();
                 const bool passed = r["passed"].get<bool>();
                 if (!passed) {
+                    if (row.failures == 0) row.secondsToFirstFailure = r["seconds"].get<double>();
                     ++row.failures;
+                    const std::string corpus = r["corpus"].get<std::string>();
                     row.messages.push_back(r["message"].get<std::string>() +
-                                           (r["corpus"].get<std::string>().empty()
-                                                ? std::string()
-                                                : "\n  regression file: " + r["corpus"].get<std::string>() +
-                                                      "\n  picture: " + r["picture"].get<std::string>()));
+                                           (corpus.empty() ? std::string()
+                                                           : "\n  regression file: " + corpus +
+                                                                 "\n  picture: " + r["picture"].get<std::string>()));
+                    const std::string scene = r["scene"].get<std::string>();
+                    if (!scene.empty() && (row.smallestScene.empty() || scene.size() < row.smallestScene.size())) {
+                        row.smallestScene = scene;
+                        row.smallestFailure = r["failure"].get<std::string>();
+                        row.smallestCorpus = corpus;
+                        row.smallestPicture = r["picture"].get<std::string>();
+                    }
+                    if (row.smallestScene.empty() && row.smallestFailure.empty())
+                        row.smallestFailure = r["message"].get<std::string>();  // a coverage shortfall
                 }
-                const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-                std::printf("[%6.1f s] %-52s %s  %d cases  (run %d)\n", elapsed,
-                            work[r["index"].get<std::size_t>()]->name.c_str(), passed ? "ok    " : "FAILED",
-                            r["cases"].get<int>(), runsDone);
-                std::fflush(stdout);
+                if (!options.quiet) {
+                    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+                    std::printf("[%6.1f s] %-52s %s  %d cases  (run %d)\n", elapsed, row.property.c_str(),
+                                passed ? "ok    " : "FAILED", r["cases"].get<int>(), runsDone);
+                    std::fflush(stdout);
+                }
             }
         }
     }
-    bool workerFailed = false;
     for (pid_t pid : children) {
         int status = 0;
         waitpid(pid, &status, 0);
-        workerFailed = workerFailed || !WIFEXITED(status) || WEXITSTATUS(status) != 0;
+        run.workerFailed = run.workerFailed || !WIFEXITED(status) || WEXITSTATUS(status) != 0;
     }
+    run.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return run;
+}
 
-    printTable(work, rows);
+int runCheckCommand(const CheckOptions& options) {
+    CheckRun run;
+    try {
+        run = runChecks(options);
+    } catch (const std::invalid_argument& error) {
+        std::cerr << "tilesweep check: " << error.what() << '\n';
+        return 2;
+    }
+    printTable(run);
     int failures = 0;
-    for (std::size_t k = 0; k < work.size(); ++k)
-        for (const std::string& m : rows[k].messages) {
+    int failedProperties = 0;
+    for (const CheckRow& row : run.rows) {
+        failedProperties += row.failures > 0 ? 1 : 0;
+        for (const std::string& m : row.messages) {
             ++failures;
-            std::printf("\nFAILED %s:\n  %s\n", work[k]->name.c_str(), m.c_str());
+            std::printf("\nFAILED %s:\n  %s\n", row.property.c_str(), m.c_str());
         }
-    if (workerFailed) std::printf("\na worker process died; its properties are incomplete\n");
-    const bool ok = failures == 0 && !workerFailed;
-    std::printf("\n%d passed, %d failed\n", static_cast<int>(work.size()) - (ok ? 0 : std::max(failures, 1)),
-                ok ? 0 : std::max(failures, 1));
+    }
+    if (run.workerFailed) std::printf("\na worker process died; its properties are incomplete\n");
+    int cases = 0;
+    for (const CheckRow& row : run.rows) cases += row.cases;
+    std::printf("\n%d cases in %.1f s on %d job%s: %.0f cases/s\n", cases, run.wallSeconds, run.jobs,
+                run.jobs == 1 ? "" : "s", run.wallSeconds > 0 ? cases / run.wallSeconds : 0.0);
+    if (!options.report.empty()) {
+        ConformanceEntry entry;
+        entry.label = options.resolverCmd.empty() ? "tilesweep (built-in)" : options.resolverCmd;
+        entry.options = options;
+        entry.run = run;
+        const std::string dir = std::filesystem::path(options.report).parent_path().string();
+        writeConformanceReport({entry}, options.report, (dir.empty() ? std::string(".") : dir) + "/conformance");
+        std::printf("report: %s\n", options.report.c_str());
+    }
+    const bool ok = failures == 0 && !run.workerFailed;
+    const int total = static_cast<int>(run.rows.size());
+    std::printf("\n%d passed, %d failed\n", total - (ok ? 0 : std::max(failedProperties, 1)),
+                ok ? 0 : std::max(failedProperties, 1));
     return ok ? 0 : 1;
 }
 

@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-// `tilesweep check`: the property suite from the command line (check_command.cpp).
+// `tilesweep check`: the property suite from the command line (check_command.cpp), against
+// tilesweep's own resolver or, with --resolver-cmd, an outside process that speaks
+// `tilesweep resolve`'s protocol.
 
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
+#include <map>
 #include <string>
+#include <vector>
 
 namespace tilesweep::cli {
 
@@ -17,11 +21,48 @@ struct CheckOptions {
     std::uint64_t seed = 20261122;    ///< seed of the first round
     std::string property;             ///< substring filter on property names; empty: all
     int jobs = 0;                     ///< worker processes; 0: all cores
-    std::string corpusDir = "properties/corpus";  ///< where failing cases are written
+    std::string corpusDir;            ///< where failing cases are written; empty: the default
+                                      ///< (properties/corpus, or resolver-corpus for an outside resolver)
+    std::string resolverCmd;          ///< outside resolver (sh -c); empty: tilesweep's own
+    double resolverTimeout = 10;      ///< seconds one batch may take before the process counts as hung
+    std::string claims = "all";       ///< "all" or "safety" (leaves out the bit-for-bit claims)
+    std::string scalar;               ///< "float" or "double"; empty: both (built-in), float (outside)
+    std::string report;               ///< a conformance report (Markdown) to write; empty: none
+    bool keepGoing = false;           ///< keep running rounds after a failure (failure rates)
+    bool quiet = false;               ///< no per-run progress lines
+};
+
+/// What one property did over all its runs.
+struct CheckRow {
+    std::string property;
+    std::string claim;
+    int runs = 0;
+    int cases = 0;      ///< cases that passed
+    int failures = 0;   ///< runs that ended in a (shrunk) counterexample or a coverage shortfall
+    double seconds = 0;
+    double secondsToFirstFailure = 0;  ///< run time of the first failing run (generation + shrinking)
+    std::map<std::string, int> tags;
+    std::vector<std::string> messages;
+    std::string smallestScene;    ///< the shortest shrunk counterexample seen (scene line)
+    std::string smallestFailure;  ///< the claim's message on it
+    std::string smallestCorpus;   ///< its regression file
+    std::string smallestPicture;  ///< its picture
+};
+
+/// A whole check: one row per property, in suite order.
+struct CheckRun {
+    std::vector<CheckRow> rows;
+    bool workerFailed = false;
+    int jobs = 1;
+    double wallSeconds = 0;
 };
 
 /// Declares the subcommand and its options.
 CLI::App* addCheckCommand(CLI::App& app, CheckOptions& options);
+
+/// Runs the properties the options select; prints progress unless `options.quiet`. Throws
+/// std::invalid_argument when no property matches.
+[[nodiscard]] CheckRun runChecks(const CheckOptions& options);
 
 /// Runs it; returns the exit status.
 int runCheckCommand(const CheckOptions& options);

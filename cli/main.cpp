@@ -13,6 +13,7 @@
 #include <functional>
 #include <iostream>
 #include <limits>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -21,6 +22,8 @@
 #include "tilesweep/render.h"
 #if TILESWEEP_HAVE_CHECK
 #include "check_command.h"
+#include "replay_command.h"
+#include "scene_runner.h"
 #endif
 #if TILESWEEP_HAVE_AUDIT
 #include "audit_command.h"
@@ -51,6 +54,8 @@ struct ResolveOptions {
     std::string scalar = "float";
     std::string resolver = "core";
     std::string file = "-";
+    std::string resolverCmd;       // an outside resolver to pass every scene through
+    double resolverTimeout = 10;   // seconds per scene before it counts as hung
 };
 
 /// One output line for one scene line: the frames, or an error naming the field at fault.
@@ -96,6 +101,15 @@ CLI::App* addResolveCommand(CLI::App& app, ResolveOptions& options) {
                         "type), exact (rational reference), substep:N, substep-float:N, seed (the article's)")
         ->check(CLI::Validator(tilesweep::cli::checkResolverName, "NAME", "resolver"))
         ->capture_default_str();
+#if TILESWEEP_HAVE_CHECK
+    command->add_option("--resolver-cmd", options.resolverCmd,
+                        "Pass every scene through an outside resolver (a shell command speaking this\n"
+                        "protocol) and print its answers, checked and re-printed in this format")
+        ->type_name("CMD");
+    command->add_option("--resolver-timeout", options.resolverTimeout, "Seconds per scene for --resolver-cmd")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+#endif
     command->add_option("FILE", options.file, "The scene file; '-' or none reads standard input")
         ->type_name("PATH")
         ->capture_default_str();
@@ -136,9 +150,22 @@ int runResolveCommand(const ResolveOptions& options) {
     // --resolver float / double name the production resolver in that scalar, whatever --scalar says.
     const std::string forced = tilesweep::cli::scalarForcedBy(options.resolver);
     const std::string scalar = forced.empty() ? options.scalar : forced;
-    const int status = scalar == "double"
-                           ? resolveLines<double>(in, std::cout, findResolver<double>(options.resolver))
-                           : resolveLines<float>(in, std::cout, findResolver<float>(options.resolver));
+    Resolver<float> floatResolver = findResolver<float>(options.resolver);
+    Resolver<double> doubleResolver = findResolver<double>(options.resolver);
+#if TILESWEEP_HAVE_CHECK
+    // --resolver-cmd: the outside process answers; its lines are read back exactly and printed
+    // again, so a malformed answer becomes an error line naming what is wrong.
+    std::shared_ptr<tilesweep::properties::ResolverProcess> process;
+    if (!options.resolverCmd.empty()) {
+        process = std::make_shared<tilesweep::properties::ResolverProcess>(options.resolverCmd, options.resolverTimeout);
+        auto floatOutside = std::make_shared<tilesweep::properties::OutsideSceneRunner<float>>(process);
+        auto doubleOutside = std::make_shared<tilesweep::properties::OutsideSceneRunner<double>>(process);
+        floatResolver = [floatOutside](const tilesweep::Scene<float>& s) { return floatOutside->runAll({&s}).front(); };
+        doubleResolver = [doubleOutside](const tilesweep::Scene<double>& s) { return doubleOutside->runAll({&s}).front(); };
+    }
+#endif
+    const int status = scalar == "double" ? resolveLines<double>(in, std::cout, doubleResolver)
+                                          : resolveLines<float>(in, std::cout, floatResolver);
     if (in.bad()) {
         std::cerr << "tilesweep resolve: error while reading '" << options.file << "'\n";
         return kExitUsage;
@@ -287,6 +314,8 @@ int main(int argc, char** argv) {
 #if TILESWEEP_HAVE_CHECK
     tilesweep::cli::CheckOptions checkOptions;
     CLI::App* checkCommand = tilesweep::cli::addCheckCommand(app, checkOptions);
+    tilesweep::cli::ReplayOptions replayOptions;
+    CLI::App* replayCommand = tilesweep::cli::addReplayCommand(app, replayOptions);
 #endif
 #if TILESWEEP_HAVE_AUDIT
     tilesweep::cli::AuditOptions auditOptions;
@@ -306,6 +335,7 @@ int main(int argc, char** argv) {
         if (renderCommand->parsed()) return runRenderCommand(renderOptions);
 #if TILESWEEP_HAVE_CHECK
         if (checkCommand->parsed()) return tilesweep::cli::runCheckCommand(checkOptions);
+        if (replayCommand->parsed()) return tilesweep::cli::runReplayCommand(replayOptions);
 #endif
 #if TILESWEEP_HAVE_AUDIT
         if (auditCommand->parsed()) return tilesweep::cli::runAuditCommand(auditOptions);

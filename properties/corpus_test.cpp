@@ -29,7 +29,7 @@ void replay(const std::string& line) {
     const SceneParse<T> parsed = parseScene<T>(line);
     ASSERT_TRUE(parsed.scene.has_value()) << parsed.error;
     for (const Claim<T>& claim : allClaims<T>()) {
-        const std::string message = claim.check(*parsed.scene);
+        const std::string message = checkClaim(claim, *parsed.scene);
         EXPECT_TRUE(message.empty()) << claim.name << ": " << message;
     }
 }

@@ -12,7 +12,9 @@
 #include <nlohmann/json.hpp>
 
 #include "generators.h"
+#include "oracle/exact/exact_resolve.h"
 #include "scene_checks.h"
+#include "scene_runner.h"
 #include "tilesweep/render.h"
 
 namespace tilesweep::properties {
@@ -57,7 +59,7 @@ PropertyOutcome runClaim(const std::string& propertyName, const Claim<T>& claim,
             if (tag == "rounded-down") tags += std::string(" rounded-down@") + familyName(g.family);
         }
         RC_TAG(tags);
-        const std::string message = claim.check(g.scene);
+        const std::string message = checkClaim(claim, g.scene);
         if (!message.empty()) {
             // RapidCheck shrinks by keeping failing cases, so the last failure seen is the
             // minimal one it reports.
@@ -104,17 +106,42 @@ PropertyOutcome runClaim(const std::string& propertyName, const Claim<T>& claim,
         outcome.message = lastMessage + "\n" + (failed ? familyName(lastFailure.family) + std::string(" scene: ") +
                                                              formatScene(lastFailure.scene)
                                                        : std::string());
+        if (failed) {
+            outcome.sceneLine = formatScene(lastFailure.scene);
+            outcome.failure = lastMessage;
+        }
         if (failed && !options.corpusDir.empty()) {
             const std::string sceneLine = formatScene(lastFailure.scene);
             char hash[17];
             std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(fnv1a(sceneLine)));
             const std::filesystem::path file =
                 std::filesystem::path(options.corpusDir) / (propertyName + "-" + std::string(hash, 8) + ".jsonl");
-            writeAtomically(file, corpusLine(sceneLine, propertyName, options.seed, scalarName<T>(), lastMessage) + "\n");
+            // An outside resolver's failure carries its command and its answer beside the exact
+            // one; the picture shows what it did, or the exact frames when it gave no answer.
+            std::string extra;
+            std::vector<FrameResult<T>> pictured;
+            if (SceneRunner<T>* outside = currentSceneRunner<T>()) {
+                nlohmann::ordered_json fields;
+                fields["resolver_cmd"] = outside->name();
+                const std::string answer = outside->answerText(lastFailure.scene);
+                const nlohmann::ordered_json parsedAnswer = nlohmann::ordered_json::parse(answer, nullptr, false);
+                fields["resolver_answer"] = parsedAnswer.is_discarded() ? nlohmann::ordered_json(answer) : parsedAnswer;
+                const std::vector<FrameResult<T>> exact = oracle::resolveSceneExactRounded(lastFailure.scene);
+                fields["exact_answer"] = nlohmann::ordered_json::parse(formatFrames(exact));
+                extra = fields.dump();
+                try {
+                    pictured = resolveUnderTest(lastFailure.scene);
+                } catch (const std::exception&) {
+                    pictured = exact;
+                }
+            } else {
+                pictured = runScene(lastFailure.scene);
+            }
+            writeAtomically(file, corpusLine(sceneLine, propertyName, options.seed, scalarName<T>(), lastMessage, extra) + "\n");
             outcome.corpusFile = file.string();
             std::filesystem::path picture = file;
             picture.replace_extension(".svg");
-            writeAtomically(picture, renderSceneSvg(lastFailure.scene, runScene(lastFailure.scene)));
+            writeAtomically(picture, renderSceneSvg(lastFailure.scene, pictured));
             outcome.pictureFile = picture.string();
         }
     } else {
@@ -129,7 +156,8 @@ void addClaim(std::vector<Property>& out, const std::string& propertyName, const
               Family family, std::vector<CoverageFloor> floors) {
     const Claim<T>* claim = findClaim<T>(claimName);
     const std::string name = propertyName + "_" + scalarName<T>();
-    out.push_back({name, floors, [name, claim, family, floors](const RunOptions& o) {
+    out.push_back({name, claimName, claim->scope, scalarName<T>(), floors,
+                   [name, claim, family, floors](const RunOptions& o) {
                        return runClaim<T>(name, *claim, family, floors, o);
                    }});
 }
@@ -210,12 +238,13 @@ RunOptions optionsFromEnvironment() {
 }
 
 std::string corpusLine(const std::string& sceneLine, const std::string& property, std::uint64_t seed,
-                       const std::string& scalar, const std::string& failure) {
+                       const std::string& scalar, const std::string& failure, const std::string& extra) {
     nlohmann::ordered_json line = nlohmann::ordered_json::parse(sceneLine);
     line["property"] = property;
     line["seed"] = seed;
     line["scalar"] = scalar;
     line["failure"] = failure;
+    if (!extra.empty()) line.update(nlohmann::ordered_json::parse(extra));
     return line.dump();
 }
 

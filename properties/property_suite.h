@@ -13,6 +13,8 @@
 #include <utility>
 #include <vector>
 
+#include "scene_checks.h"
+
 namespace tilesweep::properties {
 
 /// How to run a property.
@@ -30,6 +32,8 @@ struct PropertyOutcome {
     std::string message;                    ///< why it failed (counterexample, or coverage)
     std::string corpusFile;                 ///< the regression file written, if any
     std::string pictureFile;                ///< its picture (SVG), if any
+    std::string sceneLine;                  ///< the minimal failing scene (hexfloats), if any
+    std::string failure;                    ///< the claim's message on it, if any
     double seconds = 0;
 };
 
@@ -42,6 +46,9 @@ struct CoverageFloor {
 /// One property: a claim, in one scalar type, over one scene family.
 struct Property {
     std::string name;    ///< claim name and scalar, e.g. "matchesExactReferenceBitForBit_float"
+    std::string claim;   ///< the claim it checks (scene_checks.h), e.g. "matchesExactReferenceBitForBit"
+    ClaimScope scope = ClaimScope::Internal;  ///< the claim's scope: which resolvers it applies to
+    std::string scalar;  ///< "float" or "double"
     std::vector<CoverageFloor> floors;
     std::function<PropertyOutcome(const RunOptions&)> run;
 };
@@ -55,8 +62,11 @@ struct Property {
 [[nodiscard]] RunOptions optionsFromEnvironment();
 
 /// The line written for a failing scene: the scene (hexfloats) with "property", "seed",
-/// "scalar" and "failure" fields, which the scene reader ignores.
+/// "scalar" and "failure" fields, which the scene reader ignores. `extra`, a JSON object's
+/// text when not empty, adds its members (an outside resolver's "resolver_cmd",
+/// "resolver_answer" and "exact_answer").
 [[nodiscard]] std::string corpusLine(const std::string& sceneLine, const std::string& property,
-                                     std::uint64_t seed, const std::string& scalar, const std::string& failure);
+                                     std::uint64_t seed, const std::string& scalar, const std::string& failure,
+                                     const std::string& extra = {});
 
 }  // namespace tilesweep::properties

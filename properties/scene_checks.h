@@ -6,6 +6,7 @@
 // RapidCheck properties, the regression corpus replay and `tilesweep check` all call these, so a
 // shrunk counterexample is replayed against every claim, for ever.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -13,12 +14,34 @@
 
 namespace tilesweep::properties {
 
-/// One claim, for scenes in T.
+/// What a claim is about, which says whether an outside resolver is held to it
+/// (`tilesweep check --resolver-cmd`, scene_runner.h).
+enum class ClaimScope : std::uint8_t {
+    Safety,     ///< about results, under no particular rounding: any sound resolver holds it
+    BitForBit,  ///< about results, bit for bit against the exact reference and the contract's rounding
+    Internal,   ///< about tilesweep's internals, its C++ API or the oracles: built-in only
+};
+
+/// One claim, for scenes in T. The claims about results run the scene through
+/// resolveUnderTest (scene_runner.h): tilesweep's resolver, or the outside one installed.
 template <class T>
 struct Claim {
     const char* name;                         ///< the claim, camelCase (the property's name)
     std::string (*check)(const Scene<T>&);    ///< empty when it holds
+    ClaimScope scope = ClaimScope::Internal;
 };
+
+/// Whether a claim applies to an outside resolver: every claim about results, or, with
+/// `safetyOnly`, those that do not ask for the contract's rounding bit for bit.
+[[nodiscard]] inline bool appliesToOutside(ClaimScope scope, bool safetyOnly) noexcept {
+    return scope == ClaimScope::Safety || (scope == ClaimScope::BitForBit && !safetyOnly);
+}
+
+/// The claim's verdict on a scene: empty when it holds; otherwise what went wrong, including
+/// "resolver failed: ..." when the resolver under test could not answer (ResolverFailure).
+/// Never throws.
+template <class T>
+[[nodiscard]] std::string checkClaim(const Claim<T>& claim, const Scene<T>& scene);
 
 /// Every claim, in the order `tilesweep check` lists them.
 template <class T>
@@ -44,6 +67,8 @@ extern template const std::vector<Claim<float>>& allClaims<float>();
 extern template const std::vector<Claim<double>>& allClaims<double>();
 extern template const Claim<float>* findClaim<float>(const std::string&);
 extern template const Claim<double>* findClaim<double>(const std::string&);
+extern template std::string checkClaim<float>(const Claim<float>&, const Scene<float>&);
+extern template std::string checkClaim<double>(const Claim<double>&, const Scene<double>&);
 extern template std::vector<std::string> classifyScene<float>(const Scene<float>&);
 extern template std::vector<std::string> classifyScene<double>(const Scene<double>&);
 

@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+// The inexact game-style twin (bench/twin_resolve.h) behind the resolver protocol: scene lines
+// in on standard input, one result line per scene out, flushed per line (CONTRACT.md,
+// "tilesweep resolve"). What `tilesweep check --resolver-cmd` and `tilesweep audit
+// --resolver-cmd` hold to the contract as "the move-and-slide a competent game developer writes".
+//
+//     tilesweep_twin_adapter [--scalar float|double] < scenes.jsonl
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "bench/twin_resolve.h"
+#include "tilesweep/scene.h"
+
+namespace {
+
+/// Every frame of a scene through the twin, each starting where the last ended (runScene's
+/// loop, with the twin in place of resolveMove).
+template <class T>
+std::vector<tilesweep::FrameResult<T>> runTwin(const tilesweep::Scene<T>& scene) {
+    std::vector<tilesweep::FrameResult<T>> frames;
+    tilesweep::Box<T> box = scene.box;
+    std::vector<tilesweep::Contact<T>> contacts(16);
+    std::vector<tilesweep::Cell> overlaps(16);
+    for (const tilesweep::Vec2<T>& move : scene.moves) {
+        tilesweep::SweepResult<T> r;
+        for (;;) {
+            r = tilesweep::bench::resolveMoveTwin<T>(
+                {scene.map.view(), box, move},
+                {contacts.data(), static_cast<std::int32_t>(contacts.size()), overlaps.data(),
+                 static_cast<std::int32_t>(overlaps.size())});
+            if (static_cast<std::size_t>(r.contactCount) <= contacts.size() &&
+                static_cast<std::size_t>(r.startOverlapCount) <= overlaps.size())
+                break;
+            contacts.resize(std::max(contacts.size(), static_cast<std::size_t>(r.contactCount)));
+            overlaps.resize(std::max(overlaps.size(), static_cast<std::size_t>(r.startOverlapCount)));
+        }
+        tilesweep::FrameResult<T> frame;
+        frame.position = r.position;
+        frame.contacts.assign(contacts.begin(), contacts.begin() + r.contactCount);
+        frame.startOverlaps.assign(overlaps.begin(), overlaps.begin() + r.startOverlapCount);
+        frames.push_back(std::move(frame));
+        box.pos = r.position;
+    }
+    return frames;
+}
+
+template <class T>
+int serve() {
+    std::string line;
+    while (std::getline(std::cin, line)) {
+        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+        const tilesweep::SceneParse<T> parsed = tilesweep::parseScene<T>(line);
+        try {
+            std::cout << (parsed.scene ? tilesweep::formatFrames(runTwin(*parsed.scene)) : tilesweep::formatError(parsed.error));
+        } catch (const std::exception& e) {  // a NaN position cannot be printed as JSON
+            std::cout << tilesweep::formatError(std::string("twin: ") + e.what());
+        }
+        std::cout << '\n' << std::flush;
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::ios::sync_with_stdio(false);
+    const bool useDouble = argc == 3 && std::strcmp(argv[1], "--scalar") == 0 && std::strcmp(argv[2], "double") == 0;
+    if (argc != 1 && !(argc == 3 && std::strcmp(argv[1], "--scalar") == 0)) {
+        std::fprintf(stderr, "usage: %s [--scalar float|double] < scenes.jsonl\n", argv[0]);
+        return 2;
+    }
+    return useDouble ? serve<double>() : serve<float>();
+}

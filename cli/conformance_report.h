@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+// The conformance report (docs/conformance.md): for each resolver checked, every property's
+// verdict, cases run, failure rate and smallest counterexample with its picture. Written by
+// `tilesweep audit --resolver-cmd ...` (several resolvers) and `tilesweep check --report`.
+
+#include <string>
+#include <vector>
+
+#include "check_command.h"
+
+namespace tilesweep::cli {
+
+/// One resolver's check, as the report shows it.
+struct ConformanceEntry {
+    std::string label;     ///< a short name ("tilesweep", "twin", "box2d")
+    CheckOptions options;  ///< what was run (command, claims, scalar, cases, seed, budget)
+    CheckRun run;
+};
+
+/// Writes the Markdown report to `file` and each smallest counterexample's picture into
+/// `pictureDir` (as <label>-<property>.svg, linked relative to the report). Throws
+/// std::runtime_error when a file cannot be written.
+void writeConformanceReport(const std::vector<ConformanceEntry>& entries, const std::string& file,
+                            const std::string& pictureDir);
+
+}  // namespace tilesweep::cli

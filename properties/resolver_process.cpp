@@ -1,0 +1,240 @@
+// SPDX-License-Identifier: MIT
+#include "resolver_process.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <thread>
+#include <utility>
+
+namespace tilesweep::properties {
+namespace {
+
+/// How much of the process's standard error a failure message quotes (its tail), in bytes.
+constexpr std::size_t kErrorTailBytes = 600;
+/// How long a process that closed its output gets to exit before it is killed, in milliseconds.
+constexpr int kExitGraceMs = 200;
+
+void closeFd(int& fd) noexcept {
+    if (fd >= 0) close(fd);
+    fd = -1;
+}
+
+void setNonBlocking(int fd) noexcept { fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK); }
+
+std::string describeStatus(int status) {
+    if (WIFEXITED(status)) return "exited with status " + std::to_string(WEXITSTATUS(status));
+    if (WIFSIGNALED(status)) {
+        const int s = WTERMSIG(status);
+        const char* name = strsignal(s);
+        return "killed by signal " + std::to_string(s) + (name ? std::string(" (") + name + ")" : std::string());
+    }
+    return "stopped";
+}
+
+}  // namespace
+
+ResolverProcess::ResolverProcess(std::string command, double timeoutSeconds)
+    : command_(std::move(command)), timeoutSeconds_(timeoutSeconds) {
+    // A resolver that dies while we write to it must be a failure to report, not our death.
+    signal(SIGPIPE, SIG_IGN);
+}
+
+ResolverProcess::~ResolverProcess() {
+    // Polite first: end of input lets a well-behaved resolver exit by itself.
+    closeFd(in_);
+    if (pid_ > 0) {
+        for (int waited = 0; waited < kExitGraceMs; waited += 5) {
+            int status = 0;
+            if (waitpid(pid_, &status, WNOHANG) == pid_) {
+                pid_ = -1;
+                break;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+    }
+    stop();
+}
+
+bool ResolverProcess::start(std::string& why) {
+    int inPipe[2], outPipe[2], errPipe[2];
+    if (pipe2(inPipe, O_CLOEXEC) != 0) {
+        why = std::string("pipe: ") + std::strerror(errno);
+        return false;
+    }
+    if (pipe2(outPipe, O_CLOEXEC) != 0 || pipe2(errPipe, O_CLOEXEC) != 0) {
+        why = std::string("pipe: ") + std::strerror(errno);
+        close(inPipe[0]);
+        close(inPipe[1]);
+        return false;
+    }
+    const pid_t pid = fork();
+    if (pid < 0) {
+        why = std::string("fork: ") + std::strerror(errno);
+        for (int fd : {inPipe[0], inPipe[1], outPipe[0], outPipe[1], errPipe[0], errPipe[1]}) close(fd);
+        return false;
+    }
+    if (pid == 0) {
+        // Its own process group, so that stop() ends the shell and whatever the shell started.
+        setpgid(0, 0);
+        dup2(inPipe[0], 0);
+        dup2(outPipe[1], 1);
+        dup2(errPipe[1], 2);
+        execl("/bin/sh", "sh", "-c", command_.c_str(), static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    setpgid(pid, pid);  // also here: whichever of the two runs first
+    close(inPipe[0]);
+    close(outPipe[1]);
+    close(errPipe[1]);
+    pid_ = pid;
+    in_ = inPipe[1];
+    out_ = outPipe[0];
+    err_ = errPipe[0];
+    setNonBlocking(in_);
+    setNonBlocking(out_);
+    setNonBlocking(err_);
+    pending_.clear();
+    errorTail_.clear();
+    ++starts_;
+    return true;
+}
+
+void ResolverProcess::stop() noexcept {
+    if (pid_ > 0) {
+        kill(-pid_, SIGKILL);
+        kill(pid_, SIGKILL);
+        int status = 0;
+        waitpid(pid_, &status, 0);
+    }
+    pid_ = -1;
+    closeFd(in_);
+    closeFd(out_);
+    closeFd(err_);
+    pending_.clear();
+}
+
+std::string ResolverProcess::exitDescription() {
+    int status = 0;
+    std::string what = "closed its output";
+    for (int waited = 0; pid_ > 0 && waited <= kExitGraceMs; waited += 5) {
+        if (waitpid(pid_, &status, WNOHANG) == pid_) {
+            what = describeStatus(status);
+            pid_ = -1;
+            break;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    // Whatever it still wrote to standard error explains the exit best.
+    char buffer[4096];
+    for (ssize_t n; err_ >= 0 && (n = read(err_, buffer, sizeof buffer)) > 0;) errorTail_.append(buffer, static_cast<std::size_t>(n));
+    if (errorTail_.size() > kErrorTailBytes) errorTail_.erase(0, errorTail_.size() - kErrorTailBytes);
+    if (!errorTail_.empty()) what += "; its standard error ends: " + errorTail_;
+    while (!what.empty() && (what.back() == '\n' || what.back() == '\r')) what.pop_back();
+    return what;
+}
+
+std::size_t ResolverProcess::exchangeFrom(const std::vector<std::string>& lines, std::size_t from,
+                                          std::vector<ResolverReply>& replies) {
+    std::string text;
+    for (std::size_t k = from; k < lines.size(); ++k) (text += lines[k]) += '\n';
+    std::size_t written = 0;
+    std::size_t next = from;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutSeconds_);
+    char buffer[65536];
+    while (next < lines.size()) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+        pollfd fds[3];
+        nfds_t count = 0;
+        const int writing = in_ >= 0 && written < text.size() ? static_cast<int>(count++) : -1;
+        if (writing >= 0) fds[writing] = {in_, POLLOUT, 0};
+        const int reading = static_cast<int>(count++);
+        fds[reading] = {out_, POLLIN, 0};
+        const int errors = err_ >= 0 ? static_cast<int>(count++) : -1;
+        if (errors >= 0) fds[errors] = {err_, POLLIN, 0};
+        const int ready = left.count() > 0 ? poll(fds, count, static_cast<int>(left.count())) : 0;
+        if (ready < 0 && errno == EINTR) continue;
+        if (ready <= 0) {
+            replies[next].failure = "no answer within " + std::to_string(timeoutSeconds_) +
+                                    " s (--resolver-timeout): the resolver hangs on this scene";
+            return next;
+        }
+        if (writing >= 0 && fds[writing].revents != 0) {
+            const std::size_t chunk = std::min<std::size_t>(text.size() - written, 65536);
+            const ssize_t n = write(in_, text.data() + written, chunk);
+            if (n > 0)
+                written += static_cast<std::size_t>(n);
+            else if (n < 0 && errno != EAGAIN && errno != EINTR)
+                closeFd(in_);  // it stopped reading; what it already answered still counts
+        }
+        if (errors >= 0 && fds[errors].revents != 0) {
+            const ssize_t n = read(err_, buffer, sizeof buffer);
+            if (n > 0) {
+                errorTail_.append(buffer, static_cast<std::size_t>(n));
+                if (errorTail_.size() > kErrorTailBytes) errorTail_.erase(0, errorTail_.size() - kErrorTailBytes);
+            } else if (n == 0) {
+                closeFd(err_);
+            }
+        }
+        if (fds[reading].revents != 0) {
+            const ssize_t n = read(out_, buffer, sizeof buffer);
+            if (n < 0 && (errno == EAGAIN || errno == EINTR)) continue;
+            if (n <= 0) {
+                replies[next].failure = "the resolver " + exitDescription() + ", after answering " +
+                                        std::to_string(next - from) + " of the " + std::to_string(lines.size() - from) +
+                                        " scenes sent";
+                return next;
+            }
+            pending_.append(buffer, static_cast<std::size_t>(n));
+            std::size_t end;
+            while (next < lines.size() && (end = pending_.find('\n')) != std::string::npos) {
+                replies[next].line = pending_.substr(0, end);
+                if (!replies[next].line.empty() && replies[next].line.back() == '\r') replies[next].line.pop_back();
+                pending_.erase(0, end + 1);
+                ++next;
+            }
+        }
+    }
+    // Every scene has its line. More output now means the lines are not one per scene.
+    if (pending_.empty()) {
+        pollfd p{out_, POLLIN, 0};
+        if (poll(&p, 1, 0) > 0 && (p.revents & POLLIN)) {
+            const ssize_t n = read(out_, buffer, sizeof buffer);
+            if (n > 0) pending_.append(buffer, static_cast<std::size_t>(n));
+        }
+    }
+    if (!pending_.empty()) {
+        replies.back().failure = "the resolver printed more lines than it was sent scenes (extra: '" +
+                                 pending_.substr(0, 80) + "')";
+        return lines.size() - 1;
+    }
+    return lines.size();
+}
+
+std::vector<ResolverReply> ResolverProcess::exchange(const std::vector<std::string>& lines) {
+    std::vector<ResolverReply> replies(lines.size());
+    std::size_t from = 0;
+    while (from < lines.size()) {
+        if (pid_ > 0 && !pending_.empty()) stop();  // out of step since the last batch: start afresh
+        if (pid_ <= 0) {
+            std::string why;
+            if (!start(why)) {
+                for (std::size_t k = from; k < lines.size(); ++k) replies[k].failure = "cannot start the resolver: " + why;
+                return replies;
+            }
+        }
+        const std::size_t failed = exchangeFrom(lines, from, replies);
+        if (failed >= lines.size()) break;
+        stop();  // crashed, hung or out of step: the next scene gets a fresh process
+        from = failed + 1;
+    }
+    return replies;
+}
+
+}  // namespace tilesweep::properties
