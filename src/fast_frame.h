@@ -68,8 +68,19 @@ inline constexpr double kSecondaryRangeErrorUlps = 10;
 /// The most bits the fast path's exact doubles may need: a double's 53.
 inline constexpr int kFastSpanBits = 53;
 
+/// The parts of isValid (validate.cpp) that the range tests below do not imply: sizes and tile
+/// sizes > 0, map dimensions sane, cells present. (A NaN or an infinity fails the range tests:
+/// its exponent field is all ones.) So a frame the fast path admits is a valid one.
+template <class T>
+[[nodiscard]] inline bool hasValidShape(const SweepInput<T>& in) noexcept {
+    const TileMapView<T>& map = in.map;
+    const std::int64_t cells = static_cast<std::int64_t>(map.columns) * map.rows;
+    return in.box.size.x > 0 && in.box.size.y > 0 && map.tileSize.x > 0 && map.tileSize.y > 0 && map.columns >= 0 &&
+           map.rows >= 0 && cells <= kMaxCells && (cells == 0 || map.solid != nullptr);
+}
+
 /// Whether the fast path holds every value of this float frame exactly (see the top of this
-/// file): all nonzero inputs normal, C + 2 - G <= 53, and no coordinate near the top of
+/// file), which must be valid (hasValidShape): all nonzero inputs normal, C + 2 - G <= 53, and no coordinate near the top of
 /// float's range. A few integer operations on the inputs' exponent fields.
 [[nodiscard]] inline bool admitFloatFrame(const SweepInput<float>& in) noexcept {
     const float values[10] = {in.box.pos.x,     in.box.pos.y,     in.box.size.x,   in.box.size.y,
@@ -87,7 +98,7 @@ inline constexpr int kFastSpanBits = 53;
         field[k] = zero ? -1000 : f;  // biased exponent: |v| in [2^(f-127), 2^(f-126))
         if (!zero) lowest = std::min(lowest, f);
     }
-    if (subnormal) return false;
+    if (subnormal || !hasValidShape(in)) return false;
     if (in.map.columns >= (1 << 24) || in.map.rows >= (1 << 24)) return false;
     // G = lowest - 127 - 23 (the ulp of the smallest input); magnitudes below 2^(f - 126).
     int boxTop = -1000;  // |box input| < 2^(boxTop - 126)
@@ -109,7 +120,7 @@ inline constexpr int kFastSpanBits = 53;
 }
 
 /// Whether the double fast path holds every value of this double frame (see the top of this
-/// file): nonzero inputs in [2^-250, 2^251), so that no product, TwoProduct error term or
+/// file), which must be valid (hasValidShape): nonzero inputs in [2^-250, 2^251), so that no product, TwoProduct error term or
 /// filter bound comes near overflow or underflow; every tile edge origin + k*tile with
 /// 0 <= k <= cells + 2 a multiple of 2^g (g the lowest set bit of origin and tile) below
 /// 2^(g + 53), so that k*tile and the sum are exact doubles; and |origin| < 2^47 tile, so that a
@@ -135,6 +146,7 @@ inline constexpr int kFastSpanBits = 53;
         field[k] = f - 1023;
         lsb[k] = f - 1023 - 52 + __builtin_ctzll(fraction | (std::uint64_t{1} << 52));
     }
+    if (!hasValidShape(in)) return false;
     const std::int32_t cells[2] = {in.map.columns, in.map.rows};
     for (int a = 0; a < 2; ++a) {
         const int o = 6 + a;
@@ -672,18 +684,29 @@ private:
         return true;
     }
 
+    /// Solid cells the box overlaps (open) at the start, by row then column. The candidate
+    /// range comes from the cell estimates (low - origin) * invTile, widened by 8u of their
+    /// magnitude: low and high are exact doubles, so the estimate is within 2.01u (float frames:
+    /// the difference is exact) or 3.01u (double frames: one more rounding) of the quotient,
+    /// relatively. No exact settle: a solid byte in the range is the only thing that costs an
+    /// exact test, the open overlap of the tile with the box on each axis.
     std::int32_t listStartOverlaps(Cell* store, std::int32_t capacity) const noexcept {
+        std::int64_t from[2];
+        std::int64_t to[2];
+        for (int a = 0; a < 2; ++a) {
+            const FastAxis& g = axis_[a];
+            const double low = (g.low - g.origin) * g.invTile;
+            const double high = (g.high - g.origin) * g.invTile;
+            from[a] = std::max<std::int64_t>(g.clampCell(low - 0x1p-50 * std::fabs(low)), 0);
+            to[a] = std::min<std::int64_t>(g.clampCell(high + 0x1p-50 * std::fabs(high)), g.cells - 1);
+        }
         const FastAxis& gx = axis_[0];
         const FastAxis& gy = axis_[1];
-        const std::int64_t i0 = std::max<std::int64_t>(gx.cellOf(gx.low), 0);
-        const std::int64_t i1 = std::min<std::int64_t>(gx.cellOf(gx.high), gx.cells - 1);
-        const std::int64_t j0 = std::max<std::int64_t>(gy.cellOf(gy.low), 0);
-        const std::int64_t j1 = std::min<std::int64_t>(gy.cellOf(gy.high), gy.cells - 1);
         std::int32_t count = 0;
-        for (std::int64_t j = j0; j <= j1; ++j) {
+        for (std::int64_t j = from[1]; j <= to[1]; ++j) {
             const std::uint8_t* row = map_.solid + j * map_.columns;
             bool rowChecked = false;
-            for (std::int64_t i = i0; i <= i1; ++i) {
+            for (std::int64_t i = from[0]; i <= to[0]; ++i) {
                 if (row[i] == 0) continue;  // the byte first
                 if (!rowChecked) {
                     if (!gy.overlapsAtStart(gy.edge(j), gy.edge(j + 1))) break;

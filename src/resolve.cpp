@@ -421,16 +421,9 @@ SweepResult<T> solveOnLattice(const SweepInput<T>& in, const ResolveOutput<T>& o
 
 template <class T>
 SweepResult<T> resolveMove(const SweepInput<T>& input, const ResolveOutput<T>& output) noexcept {
-    if (!isValid(input)) {
-        SweepResult<T> invalid;
-        invalid.status = Status::InvalidInput;
-        invalid.position = input.box.pos;
-        if (!std::isfinite(invalid.position.x) || !std::isfinite(invalid.position.y)) invalid.position = {0, 0};
-        lastPath = detail::DecisionPath::Exact;
-        return invalid;
-    }
     // The fast path, when the range test admits the frame (fast_frame.h): float frames on exact
-    // doubles, double frames on exact pairs under a certified filter.
+    // doubles, double frames on exact pairs under a certified filter. The range test implies
+    // the frame is valid, so isValid only runs for the frames it turns away.
     bool admitted = false;
     if constexpr (std::is_same<T, float>::value) {
         admitted = detail::admitFloatFrame(input);
@@ -444,6 +437,13 @@ SweepResult<T> resolveMove(const SweepInput<T>& input, const ResolveOutput<T>& o
             lastPath = frame.refined() ? detail::DecisionPath::Filtered : detail::DecisionPath::Fast;
             return result;
         }
+    } else if (!isValid(input)) {
+        SweepResult<T> invalid;
+        invalid.status = Status::InvalidInput;
+        invalid.position = input.box.pos;
+        if (!std::isfinite(invalid.position.x) || !std::isfinite(invalid.position.y)) invalid.position = {0, 0};
+        lastPath = detail::DecisionPath::Exact;
+        return invalid;
     }
     lastPath = detail::DecisionPath::Exact;
     return solveOnLattice(input, output);
