@@ -501,9 +501,12 @@ rc::Gen<GeneratedScene<T>> genFineBitsScene() {
                              {static_cast<T>(size), static_cast<T>(size)}};
             clearUnder(g, ox, ox, tile, box);
             // One axis moves on the tile grid, the other by a value of full precision whose
-            // finest bit lies 64 to 120 bits below the origin's.
+            // finest bit lies 50 to 120 bits below the origin's: from just inside double's 53
+            // bits (where the resolver's float fast path must still be exact, or refuse the
+            // frame) to past the 128- and 192-bit integer tiers.
             const T coarse = static_cast<T>(*rc::gen::inRange(-64, 65) * tile / 8 * *rc::gen::element(1.0, 1.0, 1024.0));
-            const int below = *rc::gen::element(isFloat ? 41 : 11, isFloat ? 55 : 25, isFloat ? 75 : 45, isFloat ? 96 : 67);
+            const int below = isFloat ? *rc::gen::element(26, 27, 28, 29, 30, 31, 41, 55, 75, 96)
+                                      : *rc::gen::element(11, 25, 45, 67);
             const T fine = static_cast<T>(std::ldexp(1.0 + std::ldexp(1.0, 1 - digits), e - below) *
                                           *rc::gen::element(1.0, -1.0));
             scene = makeScene(g, ox, ox, tile, box, {{coarse, fine}});
