@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <chrono>
 #include <cstring>
 #include <thread>
@@ -135,8 +136,6 @@ std::string ResolverProcess::exitDescription() {
     char buffer[4096];
     for (ssize_t n; err_ >= 0 && (n = read(err_, buffer, sizeof buffer)) > 0;) errorTail_.append(buffer, static_cast<std::size_t>(n));
     if (errorTail_.size() > kErrorTailBytes) errorTail_.erase(0, errorTail_.size() - kErrorTailBytes);
-    if (!errorTail_.empty()) what += "; its standard error ends: " + errorTail_;
-    while (!what.empty() && (what.back() == '\n' || what.back() == '\r')) what.pop_back();
     return what;
 }
 
@@ -161,8 +160,10 @@ std::size_t ResolverProcess::exchangeFrom(const std::vector<std::string>& lines,
         const int ready = left.count() > 0 ? poll(fds, count, static_cast<int>(left.count())) : 0;
         if (ready < 0 && errno == EINTR) continue;
         if (ready <= 0) {
-            replies[next].failure = "no answer within " + std::to_string(timeoutSeconds_) +
-                                    " s (--resolver-timeout): the resolver hangs on this scene";
+            char seconds[32];
+            std::snprintf(seconds, sizeof seconds, "%g", timeoutSeconds_);
+            replies[next].failure = std::string("no answer within ") + seconds +
+                                    " s (--resolver-timeout): the resolver hangs on this scene" + errorTail();
             return next;
         }
         if (writing >= 0 && fds[writing].revents != 0) {
@@ -186,9 +187,9 @@ std::size_t ResolverProcess::exchangeFrom(const std::vector<std::string>& lines,
             const ssize_t n = read(out_, buffer, sizeof buffer);
             if (n < 0 && (errno == EAGAIN || errno == EINTR)) continue;
             if (n <= 0) {
-                replies[next].failure = "the resolver " + exitDescription() + ", after answering " +
+                replies[next].failure = "the resolver " + exitDescription() + " after answering " +
                                         std::to_string(next - from) + " of the " + std::to_string(lines.size() - from) +
-                                        " scenes sent";
+                                        " scenes sent" + errorTail();
                 return next;
             }
             pending_.append(buffer, static_cast<std::size_t>(n));
@@ -217,8 +218,20 @@ std::size_t ResolverProcess::exchangeFrom(const std::vector<std::string>& lines,
     return lines.size();
 }
 
+std::string ResolverProcess::errorTail() const {
+    std::string tail = errorTail_;
+    while (!tail.empty() && (tail.back() == '\n' || tail.back() == '\r')) tail.pop_back();
+    return tail.empty() ? std::string() : "; its standard error ends: " + tail;
+}
+
 std::vector<ResolverReply> ResolverProcess::exchange(const std::vector<std::string>& lines) {
     std::vector<ResolverReply> replies(lines.size());
+    // Output that came after the last batch was judged means the process is out of step (it
+    // printed more than one line for some scene): start afresh rather than misread it.
+    if (pid_ > 0) {
+        pollfd p{out_, POLLIN, 0};
+        if (poll(&p, 1, 0) > 0) stop();
+    }
     std::size_t from = 0;
     while (from < lines.size()) {
         if (pid_ > 0 && !pending_.empty()) stop();  // out of step since the last batch: start afresh

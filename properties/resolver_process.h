@@ -54,6 +54,7 @@ private:
     /// the first line not answered (== lines.size() when all were), with its failure set.
     std::size_t exchangeFrom(const std::vector<std::string>& lines, std::size_t from, std::vector<ResolverReply>& replies);
     std::string exitDescription();
+    [[nodiscard]] std::string errorTail() const;  ///< "; its standard error ends: ..." or empty
 
     std::string command_;
     double timeoutSeconds_;
