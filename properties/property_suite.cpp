@@ -185,6 +185,8 @@ void addAll(std::vector<Property>& out) {
                 {{"rounded-down", 0.05}, {"hit", 0.2}});
     addClaim<T>(out, "neverGetsIntoAWall", "neverGetsIntoAWall", Family::FarEdge, {{"rounded-down", 0.05}});
     // Events the other families do not aim at: each has its floor.
+    addClaim<T>(out, "decidesTiesInsideTheFilterBand", "matchesExactReferenceBitForBit", Family::FilterBand,
+                {{"tie", 0.5}, {"fallback", 0.5}});
     addClaim<T>(out, "decidesFineBitsExactly", "matchesExactReferenceBitForBit", Family::FineBits,
                 {{"time-tie", 0.05}, {"reaches-at-end", 0.05}, {"lattice-wide", 0.05}, {"lattice-192", 0.03}});
     addClaim<T>(out, "farEdgesNeverEndInsideATile", "neverEndsInsideATileItDidNotStartIn", Family::FarEdge,
