@@ -10,7 +10,7 @@ source "$root/scripts/setup.sh"
 cases=${1:-300}
 faults=(${TILESWEEP_FAULTS:-TOUCH_OVERLAPS NO_CORNER_MISS TIE_REVERSED DOUBLE_PREDICATE ROUND_NEAREST BROADPHASE_SHORT FMA
          OLD_ROUNDING_RULE TIME_TIES_AWAY END_INCLUSIVE NARROW_TIER ORACLE_SKIPS_TOUCH_AT_0
-         FILTER_BOUND_HALVED FAST_RANGE_TOO_WIDE})
+         FILTER_BOUND_HALVED FAST_RANGE_TOO_WIDE FAST_RANGE_FAR_TOO_WIDE})
 out=${TILESWEEP_FAULT_DIR:-$root/build-faults}
 mkdir -p "$out"
 echo "| fault | caught by (a shrunk counterexample) | smallest counterexample | other failures | seconds |"

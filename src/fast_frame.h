@@ -116,6 +116,9 @@ template <class T>
 #if defined(TILESWEEP_FAULT_FAST_RANGE_TOO_WIDE)
     --span;  // deliberate fault: the range test one binade too generous
 #endif
+#if defined(TILESWEEP_FAULT_FAST_RANGE_FAR_TOO_WIDE)
+    span -= 6;  // deliberate fault: six binades too generous, past the test's slack
+#endif
     return span <= kFastSpanBits && top - 126 <= 120;
 }
 

@@ -27,12 +27,14 @@
 //                      comparison filter (kPairProductErrorBound, exact_double.h)
 //   FAST_RANGE_TOO_WIDE  the range test admitting a float frame to the fast path one binade
 //                      too generous (spans of 54 bits, which a double cannot hold) (fast_frame.h)
+//   FAST_RANGE_FAR_TOO_WIDE  the same six binades too generous: the range test bounds every
+//                      coordinate with a few bits of slack, so one binade alone rarely shows
 
 #if defined(TILESWEEP_FAULT_TOUCH_OVERLAPS) || defined(TILESWEEP_FAULT_NO_CORNER_MISS) ||   \
     defined(TILESWEEP_FAULT_TIE_REVERSED) || defined(TILESWEEP_FAULT_DOUBLE_PREDICATE) || \
     defined(TILESWEEP_FAULT_ROUND_NEAREST) || defined(TILESWEEP_FAULT_BROADPHASE_SHORT) || defined(TILESWEEP_FAULT_FMA) || \
     defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE) || defined(TILESWEEP_FAULT_TIME_TIES_AWAY) || \
     defined(TILESWEEP_FAULT_END_INCLUSIVE) || defined(TILESWEEP_FAULT_NARROW_TIER) || defined(TILESWEEP_FAULT_FILTER_BOUND_HALVED) || \
-    defined(TILESWEEP_FAULT_FAST_RANGE_TOO_WIDE)
+    defined(TILESWEEP_FAULT_FAST_RANGE_TOO_WIDE) || defined(TILESWEEP_FAULT_FAST_RANGE_FAR_TOO_WIDE)
 #define TILESWEEP_FAULT_INJECTED 1
 #endif
