@@ -147,8 +147,11 @@ void clearUnder(Grid<T>& g, double ox, double oy, double tile, Box<T> box) {
     const double y0 = (static_cast<double>(box.pos.y) - oy) / tile;
     const double x1 = x0 + static_cast<double>(box.size.x) / tile;
     const double y1 = y0 + static_cast<double>(box.size.y) / tile;
-    for (int j = static_cast<int>(std::floor(y0)) - 1; j <= static_cast<int>(std::floor(y1)); ++j)
-        for (int i = static_cast<int>(std::floor(x0)) - 1; i <= static_cast<int>(std::floor(x1)); ++i)
+    // Cell indices clamped to just outside the grid first: a box far beyond the map (the extreme
+    // family) would overflow an int.
+    const auto cell = [](double v, int cells) { return static_cast<int>(std::max(-2.0, std::min(v, cells + 1.0))); };
+    for (int j = cell(std::floor(y0) - 1, g.rows); j <= cell(std::floor(y1), g.rows); ++j)
+        for (int i = cell(std::floor(x0) - 1, g.columns); i <= cell(std::floor(x1), g.columns); ++i)
             if (i + 1 > x0 && i < x1 && j + 1 > y0 && j < y1) g.set(i, j, false);
 }
 
