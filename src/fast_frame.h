@@ -666,6 +666,7 @@ private:
 #if defined(TILESWEEP_FAULT_ROUND_NEAREST)
         const double towardStart = hi;  // deliberate fault
         (void)up;
+        (void)down;
 #else
         const double towardStart = side > 0 ? down : up;
 #endif
