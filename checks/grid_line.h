@@ -47,20 +47,21 @@ template <class T>
     // The estimate: positions in tiles from the origin, with a margin far above the rounding
     // error of a few long double operations (2^-63 relative each) on terms this size.
     using W = long double;
+    const auto wide = [](T v) { return static_cast<W>(v); };
     W lowSum = 0;
     W highSum = 0;
-    W largest = std::fabs(static_cast<W>(origin));
+    W largest = std::fabs(wide(origin));
     for (const T v : low) {
-        lowSum += v;
-        largest = std::max(largest, std::fabs(static_cast<W>(v)));
+        lowSum += wide(v);
+        largest = std::max(largest, std::fabs(wide(v)));
     }
     for (const T v : high) {
-        highSum += v;
-        largest = std::max(largest, std::fabs(static_cast<W>(v)));
+        highSum += wide(v);
+        largest = std::max(largest, std::fabs(wide(v)));
     }
-    const W from = (lowSum - origin) / tile;
-    const W to = (highSum - origin) / tile;
-    const W margin = std::ldexp(largest / tile + std::fabs(from) + std::fabs(to) + 1, -56);
+    const W from = (lowSum - wide(origin)) / wide(tile);
+    const W to = (highSum - wide(origin)) / wide(tile);
+    const W margin = std::ldexp(largest / wide(tile) + std::fabs(from) + std::fabs(to) + 1, -56);
     if (std::fabs(from) < std::ldexp(W(1), 60) && std::ceil(from - margin) > to + margin) return false;
 
     detail::Split lows[4];

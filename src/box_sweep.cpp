@@ -74,16 +74,17 @@ bool admitFloatPair(const BoxSweepInput<float>& in) noexcept {
 /// roundTimeToFloat; false when the time needs the lattice's rounding.
 bool sweepFast(const BoxSweepInput<float>& in, BoxSweepOutput<float>& out) noexcept {
     const auto axis = [](float pos, float size, float disp) {
-        const double d = disp;
-        const double p = pos;
-        const double w = size;
+        const auto d = static_cast<double>(disp);
+        const auto p = static_cast<double>(pos);
+        const auto w = static_cast<double>(size);
         return detail::FastAxis{p, p + w, d, std::fabs(d), d > 0 ? 1 : (d < 0 ? -1 : 0), 0, 1, 0, 1, w};
     };
     const detail::FastAxis mx = axis(in.box.pos.x, in.box.size.x, in.displacement.x);
     const detail::FastAxis my = axis(in.box.pos.y, in.box.size.y, in.displacement.y);
     bool refined = false;
     const detail::FastTileTest<> test =
-        detail::testTileFast(mx, my, in.tileMin.x, in.tileMax.x, in.tileMin.y, in.tileMax.y, refined);
+        detail::testTileFast(mx, my, static_cast<double>(in.tileMin.x), static_cast<double>(in.tileMax.x),
+                             static_cast<double>(in.tileMin.y), static_cast<double>(in.tileMax.y), refined);
     switch (test.verdict) {
         case detail::TileVerdict::Misses: out.state = BoxSweepState::Misses; return true;
         case detail::TileVerdict::StartsOverlapping: out.state = BoxSweepState::StartsOverlapping; return true;

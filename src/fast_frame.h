@@ -547,12 +547,12 @@ private:
     };
 
     FastAxis makeAxis(T pos, T size, T disp, T origin, T tile, std::int32_t cells) noexcept {
-        const double p = pos;
-        const double d = disp;
+        const auto p = static_cast<double>(pos);
+        const auto d = static_cast<double>(disp);
         const int dir = d > 0 ? 1 : (d < 0 ? -1 : 0);
-        const double t = tile;
-        const double w = size;
-        const double o = origin;
+        const auto t = static_cast<double>(tile);
+        const auto w = static_cast<double>(size);
+        const auto o = static_cast<double>(origin);
         const Coord high = sumOf<Coord>(p, w);
         if constexpr (std::is_same<Coord, ExactPair>::value) {
             if (high.lo != 0) admitted_ = false;  // the far edge is not a double: the lattice's
@@ -635,7 +635,7 @@ private:
 #if !defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE)  // the fault keeps the rule before the amendment
         const FastAxis& m = axis_[axis];
         if (!(exact < m.low)) return true;
-        const double rounded = towardStart;
+        const auto rounded = static_cast<double>(towardStart);
         if (rounded == exact) return true;
         if (!m.hasLineIn(exact + m.size, rounded + m.size)) return true;
         out = roundToFloat(exact, false);
