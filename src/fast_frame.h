@@ -46,6 +46,7 @@
 #include <cstring>
 #include <type_traits>
 
+#include "bit_ops.h"
 #include "axis_sweep.h"
 #include "exact_double.h"
 #include "fault_injection.h"
@@ -103,8 +104,8 @@ template <class T>
     // G = lowest - 127 - 23 (the ulp of the smallest input); magnitudes below 2^(f - 126).
     int boxTop = -1000;  // |box input| < 2^(boxTop - 126)
     for (int k = 0; k < 6; ++k) boxTop = std::max(boxTop, field[k]);
-    const int cellBits[2] = {32 - __builtin_clz(static_cast<std::uint32_t>(in.map.columns) + 2),
-                             32 - __builtin_clz(static_cast<std::uint32_t>(in.map.rows) + 2)};
+    const int cellBits[2] = {32 - countLeadingZeros32(static_cast<std::uint32_t>(in.map.columns) + 2),
+                             32 - countLeadingZeros32(static_cast<std::uint32_t>(in.map.rows) + 2)};
     // |origin + k*tile| < 2^(fo - 126) + 2^(ft - 126 + cellBits) <= 2^(edgeTop - 126)
     int edgeTop = -1000;
     for (int a = 0; a < 2; ++a) edgeTop = std::max(edgeTop, std::max(field[6 + a], field[8 + a] + cellBits[a]) + 1);
@@ -147,14 +148,14 @@ template <class T>
         }
         if (f < 1023 - 250 || f > 1023 + 250) return false;
         field[k] = f - 1023;
-        lsb[k] = f - 1023 - 52 + __builtin_ctzll(fraction | (std::uint64_t{1} << 52));
+        lsb[k] = f - 1023 - 52 + countTrailingZeros64(fraction | (std::uint64_t{1} << 52));
     }
     if (!hasValidShape(in)) return false;
     const std::int32_t cells[2] = {in.map.columns, in.map.rows};
     for (int a = 0; a < 2; ++a) {
         const int o = 6 + a;
         const int t = 8 + a;
-        const int cellBits = 64 - __builtin_clzll(static_cast<std::uint64_t>(cells[a]) + 3);
+        const int cellBits = 64 - countLeadingZeros64(static_cast<std::uint64_t>(cells[a]) + 3);
         // |origin| + (cells + 2) * tile < 2^(max(eo + 1, et + 1 + cellBits) + 1).
         const int top = std::max(field[o] + 1, field[t] + 1 + cellBits) + 1;
         if (top > std::min(lsb[o], lsb[t]) + 53) return false;

@@ -21,6 +21,7 @@
 #include <limits>
 #include <type_traits>
 
+#include "bit_ops.h"
 #include "fault_injection.h"
 #include "wide_int.h"
 
@@ -51,7 +52,7 @@ template <class T>
         exponent = biased - bias - (p - 1);
     }
     if (fraction == 0) return {0, 0};
-    const int zeros = __builtin_ctzll(fraction);
+    const int zeros = countTrailingZeros64(fraction);
     const auto m = static_cast<std::int64_t>(fraction >> zeros);
     return {negative ? -m : m, exponent + zeros};
 }
@@ -61,7 +62,7 @@ template <class T>
     if (d.mantissa == 0) return std::numeric_limits<int>::min() / 2;  // clz(0) is undefined
     const std::uint64_t mag = d.mantissa < 0 ? 0 - static_cast<std::uint64_t>(d.mantissa)
                                              : static_cast<std::uint64_t>(d.mantissa);
-    return d.exponent + 64 - __builtin_clzll(mag);
+    return d.exponent + 64 - countLeadingZeros64(mag);
 }
 
 /// The lattice integer of a dyadic, d * 2^-latticeExponent (exact: latticeExponent is at most
@@ -88,7 +89,7 @@ template <class T>
     if (mantissa == 0) return mode == MagnitudeRounding::AwayFromZero && sticky
                                   ? std::numeric_limits<T>::denorm_min()
                                   : T(0);
-    const int top = 63 - __builtin_clzll(mantissa);
+    const int top = 63 - countLeadingZeros64(mantissa);
     int keepFrom = top - (p - 1);  // bit index of the result's least significant bit
     if (keepFrom + exponent < lowestExponent) keepFrom = lowestExponent - exponent;
     std::uint64_t kept = 0;
@@ -218,7 +219,7 @@ struct LatticeShape {
 }
 
 /// Bit length of a non-negative count (0 for 0).
-[[nodiscard]] inline int bitLength(std::uint64_t n) noexcept { return n == 0 ? 0 : 64 - __builtin_clzll(n); }
+[[nodiscard]] inline int bitLength(std::uint64_t n) noexcept { return n == 0 ? 0 : 64 - countLeadingZeros64(n); }
 
 }  // namespace tilesweep::detail
 

@@ -12,6 +12,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "bit_ops.h"
+
 namespace tilesweep::detail {
 
 __extension__ typedef unsigned __int128 Uint128;
@@ -136,7 +138,7 @@ struct WideInt {
     /// Index of the highest set bit of a positive value; -1 for zero.
     [[nodiscard]] int highestBit() const noexcept {
         for (int k = N - 1; k >= 0; --k)
-            if (limb[k] != 0) return 64 * k + 63 - __builtin_clzll(limb[k]);
+            if (limb[k] != 0) return 64 * k + 63 - countLeadingZeros64(limb[k]);
         return -1;
     }
 
@@ -222,8 +224,8 @@ struct Int128 {
         const auto u = static_cast<Uint128>(v);
         const auto hi = static_cast<std::uint64_t>(u >> 64);
         const auto lo = static_cast<std::uint64_t>(u);
-        if (hi != 0) return 127 - __builtin_clzll(hi);
-        return lo != 0 ? 63 - __builtin_clzll(lo) : -1;
+        if (hi != 0) return 127 - countLeadingZeros64(hi);
+        return lo != 0 ? 63 - countLeadingZeros64(lo) : -1;
     }
     [[nodiscard]] Int128 shiftedLeft(int bits) const noexcept { return {static_cast<Int128Native>(static_cast<Uint128>(v) << bits)}; }
     [[nodiscard]] std::uint64_t bitsFrom(int from, bool& lowerBitsSet) const noexcept {
