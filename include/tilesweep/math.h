@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 
 // Value types of tilesweep.
 //
@@ -54,6 +55,16 @@ template <class T>
 [[nodiscard]] constexpr bool operator==(Vec2<T> a, Vec2<T> b) noexcept { return a.x == b.x && a.y == b.y; }
 template <class T>
 [[nodiscard]] constexpr bool operator!=(Vec2<T> a, Vec2<T> b) noexcept { return !(a == b); }
+
+/// v scaled by s, each component rounded once (velocity * dt). The scalar may be any arithmetic
+/// type (a `double dt` with a float vector): it is converted to T first, so the result stays a
+/// Vec2<T> and no template argument is needed at the call site.
+template <class T, class S, class = std::enable_if_t<std::is_arithmetic<S>::value>>
+[[nodiscard]] constexpr Vec2<T> operator*(Vec2<T> v, S s) noexcept {
+    return {v.x * static_cast<T>(s), v.y * static_cast<T>(s)};
+}
+template <class T, class S, class = std::enable_if_t<std::is_arithmetic<S>::value>>
+[[nodiscard]] constexpr Vec2<T> operator*(S s, Vec2<T> v) noexcept { return v * s; }
 
 /// The component of v on axis a.
 template <class T>

@@ -18,16 +18,17 @@
 // face it hits or less than an ulp short, and never moves past the exact motion but by less
 // than an ulp on such an axis.
 //
-// Usage, one frame per game tick:
+// Usage, one frame per game tick (tilesweep/mover.h wraps this for a game loop: a prepared map,
+// float and double overloads, on-ground and wall flags, contact lists never cut short):
 //
 //     tilesweep::TileMapView<float> map{{0, 0}, {16, 16}, columns, rows, cells};
 //     // once per map: validateTileMap(map) == MapError::None
 //     tilesweep::Contact<float> contacts[16];
 //     tilesweep::Cell overlaps[16];
 //     tilesweep::ResolveOutput<float> out{contacts, 16, overlaps, 16};
-//     auto result = tilesweep::resolveMove({map, player, velocity * dt}, out);
+//     auto result = tilesweep::resolveMove<float>({map, player, velocity * dt}, out);
 //     if (result.status != tilesweep::Status::InvalidInput) player.pos = result.position;
-//     for (int k = 0; k < result.contactCount && k < 16; ++k)
+//     for (int k = 0; k < result.contactCount && k < 16; ++k)  // beyond 16: some, unspecified
 //         if (contacts[k].normal.y == -1) onGround = true;
 
 namespace tilesweep {

@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstdint>
+
+#include "tilesweep/math.h"
+#include "tilesweep/resolve.h"
+#include "tilesweep/tile_map.h"
+
+// The game-loop API: a map prepared once, then one call per mover per frame.
+//
+// It is the same resolver as resolveMove (resolve.h), bit for bit: same position, same
+// contacts in the same order. What it adds is what a game loop asks every frame: plain float
+// and double overloads (no template arguments at call sites), a result that says what happened
+// at a glance (blocked axes, on ground / on a wall / on a ceiling), and contact storage that is
+// never left half-filled: a frame's contacts are stored all, or (when the buffer is too small)
+// none, and a buffer of maxContacts(box size, tile size) entries is never too small. y grows
+// downward, so landing on a floor is the normal (0, -1).
+//
+// Usage (examples/platformer/platformer.cpp runs this loop):
+//
+//     auto map = tilesweep::prepareMap(view);          // once per map: validates it
+//     if (!map.isValid()) fail(describe(map.error()));
+//     // every frame, every mover:
+//     velocity.y += gravity * dt;
+//     auto r = tilesweep::moveAndSlide(map, {player, velocity * dt});
+//     player.pos = r.position;
+//     if (r.onGround) velocity.y = 0;
+//     if (r.onWall) velocity.x = 0;
+
+namespace tilesweep {
+
+/// A tile map validated once by prepareMap and reused by every frame. It borrows the cells of
+/// the view it was prepared from: they must outlive it (cells may change between frames; the
+/// dimensions, origin and tile size may not).
+template <class T>
+class PreparedMap {
+public:
+    /// An empty, invalid map (error() is NegativeDimensions); use prepareMap.
+    PreparedMap() noexcept = default;
+
+    /// The map as resolveMove takes it.
+    [[nodiscard]] const TileMapView<T>& view() const noexcept { return view_; }
+    /// Why the map was refused, or MapError::None.
+    [[nodiscard]] MapError error() const noexcept { return error_; }
+    /// True when the map passed validateTileMap: moves through it can be resolved.
+    [[nodiscard]] bool isValid() const noexcept { return error_ == MapError::None; }
+    /// 1 / tile size, rounded: only for estimating cell ranges (always widened before use).
+    [[nodiscard]] Vec2<double> inverseTileSize() const noexcept { return inverseTileSize_; }
+
+private:
+    friend PreparedMap<float> prepareMap(const TileMapView<float>& map) noexcept;
+    friend PreparedMap<double> prepareMap(const TileMapView<double>& map) noexcept;
+
+    TileMapView<T> view_{};
+    MapError error_ = MapError::NegativeDimensions;
+    Vec2<double> inverseTileSize_{0, 0};
+};
+
+/// Validates `map` once (validateTileMap: O(columns + rows)) and keeps it for every frame.
+[[nodiscard]] PreparedMap<float> prepareMap(const TileMapView<float>& map) noexcept;
+/// Validates `map` once (validateTileMap: O(columns + rows)) and keeps it for every frame.
+[[nodiscard]] PreparedMap<double> prepareMap(const TileMapView<double>& map) noexcept;
+
+/// One mover's frame: its box at the start and the motion it wants over the frame.
+template <class T>
+struct MoveInput {
+    Box<T> box;           ///< position and size (> 0) at the start of the frame, finite
+    Vec2<T> displacement; ///< motion over the whole frame (velocity * dt), finite; zero is valid
+};
+
+/// How a move ended.
+enum class MoveStatus : std::uint8_t {
+    Moved,         ///< nothing was hit: the box moved the whole way
+    Blocked,       ///< at least one tile was hit: see the flags and contactCount
+    InvalidInput,  ///< non-finite value, size <= 0, or a map that failed prepareMap: nothing moved
+    ContactBufferTooSmall,  ///< a box wider than kInlineContacts allows and a buffer below
+                            ///< maxContacts: nothing moved, contactCount = maxContacts needed
+};
+
+/// What happened to one mover in one frame. The flags come from the normals of every contact of
+/// the frame, whether or not the caller asked for the contacts themselves.
+template <class T>
+struct MoveResult {
+    Vec2<T> position{};          ///< where the box ends; its start position unless Moved/Blocked
+    MoveStatus status = MoveStatus::InvalidInput;
+    bool blockedX = false;       ///< a tile stopped the motion on x (same as onWall)
+    bool blockedY = false;       ///< a tile stopped the motion on y (onGround or onCeiling)
+    bool onGround = false;       ///< a floor was hit: a contact with normal (0, -1)
+    bool onCeiling = false;      ///< a ceiling was hit: a contact with normal (0, 1)
+    bool onWall = false;         ///< a wall was hit: a contact with normal (1, 0) or (-1, 0)
+    std::int8_t wallNormalX = 0; ///< the wall's normal on x: 1 (wall on the left), -1 (right), 0
+    std::int32_t contactCount = 0;       ///< tiles hit this frame; all stored iff <= capacity
+    std::int32_t startOverlapCount = 0;  ///< solid tiles the box overlapped at the start (it may
+                                         ///< leave them; they never block)
+};
+
+/// Contacts the game-loop calls resolve on the stack when the caller's buffer is smaller than
+/// maxContacts: every box whose maxContacts is at most this (any box up to 30 tiles on a side)
+/// gets exact flags with no buffer at all.
+inline constexpr std::int32_t kInlineContacts = 64;
+
+/// The most contacts one frame can record for a box of this size in tiles of this size:
+/// (floor(w/tw) + 2) + (floor(h/th) + 2), saturated at INT32_MAX; 0 for a size that is not
+/// finite and > 0 (such a move is invalid and records none). A contact buffer this large is
+/// never too small. Why (CONTRACT.md, "One frame through a map"): a frame has at most two
+/// steps. The tiles hit in a step with contact axis x all enter at the step's time s on x, so
+/// they lie in the one column across the box's leading x face, in rows that overlap the box's
+/// open y extent just after s: an open interval of h/th cells meets at most ceil(h/th) + 1 open
+/// rows. Likewise the y-axis tiles of a step lie in one row, at most ceil(w/tw) + 1 of them. If
+/// the first step zeroes both axes there is no second step; if it zeroes only x (only x-axis
+/// tiles, <= ceil(h/th) + 1), the second step moves on y alone, so every tile it hits has contact
+/// axis y (<= ceil(w/tw) + 1); the same with the axes swapped. So a frame records at most
+/// ceil(w/tw) + ceil(h/th) + 2 contacts. The bound uses floor(fl(w/tw)) + 2 >= ceil(w/tw) + 1,
+/// true for the rounded quotient because rounding is monotonic and integers are representable.
+/// tests/mover_test.cpp holds the resolver to it (a property over random scenes).
+[[nodiscard]] std::int32_t maxContacts(Vec2<float> boxSize, Vec2<float> tileSize) noexcept;
+/// The same bound in double.
+[[nodiscard]] std::int32_t maxContacts(Vec2<double> boxSize, Vec2<double> tileSize) noexcept;
+
+/// Resolves one mover's frame (the same position and contacts as resolveMove). When `contacts`
+/// holds at least contactCount entries, they are stored in resolveMove's order (step by step,
+/// then by row, then column); otherwise none are stored. Never throws; invalid input gives
+/// MoveStatus::InvalidInput with the start position.
+[[nodiscard]] MoveResult<float> moveAndSlide(const PreparedMap<float>& map, const MoveInput<float>& input,
+                                             Contact<float>* contacts = nullptr,
+                                             std::int32_t contactCapacity = 0) noexcept;
+/// The same in double.
+[[nodiscard]] MoveResult<double> moveAndSlide(const PreparedMap<double>& map,
+                                              const MoveInput<double>& input,
+                                              Contact<double>* contacts = nullptr,
+                                              std::int32_t contactCapacity = 0) noexcept;
+
+}  // namespace tilesweep

@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+// The cheap exit of the game-loop calls: a move whose swept bounds meet no solid cell.
+//
+// Such a move hits nothing and starts inside nothing, so resolveMove returns Moved, no lists,
+// and on each axis the exact end x + d rounded by CONTRACT.md's rule. This file decides that
+// with a byte scan over a widened range of cells and computes the rounded end, for the cases
+// where it can do so exactly; anything else (a solid byte in range, or a rounding it does not
+// settle) returns false and the caller runs the full resolver. Results are bit-identical to
+// resolveMove's (tests/mover_test.cpp compares them over random scenes).
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "tilesweep/math.h"
+#include "tilesweep/tile_map.h"
+
+namespace tilesweep::detail {
+
+/// The exact end x + d rounded as resolveMove rounds a free axis, when that is settled here:
+/// d == 0 keeps x's bits (a -0 stays -0); an exact sum is the end itself (rounding toward the
+/// start and the grid-line exception both leave a representable end alone); an inexact sum
+/// moving toward +infinity rounds down (TwoSum gives the sign of the error of s = fl(x + d)
+/// exactly). An inexact sum toward -infinity may fall under the grid-line exception
+/// (CONTRACT.md, "Positions"), and a zero end has a sign to settle: both return false.
+template <class T>
+[[nodiscard]] inline bool roundFreeCoordinate(T x, T d, T& q) noexcept {
+    if (d == 0) {
+        q = x;
+        return true;
+    }
+    const T s = x + d;
+    if (!std::isfinite(s) || s == 0) return false;
+    const T dVirtual = s - x;  // Knuth's TwoSum: error = (x + d) - s exactly (-ffp-contract=off)
+    const T xVirtual = s - dVirtual;
+    const T error = (x - xVirtual) + (d - dVirtual);
+    if (error == 0) {
+        q = s;
+        return true;
+    }
+    if (d < 0) return false;
+    q = error > 0 ? s : std::nextafter(s, -std::numeric_limits<T>::infinity());
+    return true;
+}
+
+/// A range of cell indices on one axis, first <= last.
+struct CellRange {
+    std::int64_t first;
+    std::int64_t last;
+};
+
+/// The cells [first, last] of one axis that a closed interval [lo, hi] can touch, widened by
+/// one cell on each side and clamped to [0, count). Returns 1 with `range` set, 0 when the
+/// interval lies off the map (no cell), and -1 (not settled here: resolve fully) when
+/// `magnitude`, the sum of the input magnitudes, is too large against the tile for the
+/// estimate. Error: lo and hi come from at most two roundings of values below `magnitude`, and
+/// the subtraction of the origin and the product by the rounded inverse add a few more relative
+/// 2^-53; all told under 2^-50 * magnitude / tile cells, which 2^-48 * magnitude < tile / 4 keeps
+/// far below a quarter cell, and the widening by one covers it and the closed ends.
+[[nodiscard]] inline int cellRangeOf(double lo, double hi, double origin, double tile, double inverseTile,
+                                     double magnitude, std::int32_t count, CellRange& range) noexcept {
+    if (!(magnitude * 0x1p-48 < tile * 0.25)) return -1;  // not settled here
+    const double a = std::floor((lo - origin) * inverseTile) - 1;
+    const double b = std::floor((hi - origin) * inverseTile) + 1;
+    if (b < 0 || a >= static_cast<double>(count)) return 0;  // off the map: no cell
+    range.first = a < 0 ? 0 : static_cast<std::int64_t>(a);
+    range.last = b >= static_cast<double>(count) ? count - 1 : static_cast<std::int64_t>(b);
+    return 1;
+}
+
+/// True when a row-major block of cells holds no solid byte (an OR over each row: vectorised).
+[[nodiscard]] inline bool blockIsEmpty(const std::uint8_t* solid, std::int32_t columns, const CellRange& x,
+                                       const CellRange& y) noexcept {
+    const std::int64_t width = x.last - x.first + 1;
+    for (std::int64_t j = y.first; j <= y.last; ++j) {
+        const std::uint8_t* row = solid + j * columns + x.first;
+        unsigned any = 0;
+        for (std::int64_t i = 0; i < width; ++i) any |= row[i];
+        if (any != 0) return false;
+    }
+    return true;
+}
+
+/// If the move of `box` by `d` through `map` meets no solid cell and its end is settled here,
+/// stores the end in `position` and returns true; otherwise false (resolve it fully).
+/// The inputs must be finite with sizes > 0 and the map valid (the caller checks).
+template <class T>
+[[nodiscard]] inline bool tryFreeMove(const TileMapView<T>& map, Vec2<double> inverseTile, const Box<T>& box,
+                                      Vec2<T> d, Vec2<T>& position) noexcept {
+    Vec2<T> end{};
+    if (!roundFreeCoordinate(box.pos.x, d.x, end.x) || !roundFreeCoordinate(box.pos.y, d.y, end.y))
+        return false;
+    if (map.columns == 0 || map.rows == 0) {
+        position = end;
+        return true;
+    }
+    const double x = static_cast<double>(box.pos.x);
+    const double y = static_cast<double>(box.pos.y);
+    const double dx = static_cast<double>(d.x);
+    const double dy = static_cast<double>(d.y);
+    const double w = static_cast<double>(box.size.x);
+    const double h = static_cast<double>(box.size.y);
+    const double ox = static_cast<double>(map.origin.x);
+    const double oy = static_cast<double>(map.origin.y);
+    const double magX = std::fabs(x) + std::fabs(dx) + w + std::fabs(ox);
+    const double magY = std::fabs(y) + std::fabs(dy) + h + std::fabs(oy);
+    CellRange cx{};
+    CellRange cy{};
+    const int inX = cellRangeOf(dx < 0 ? x + dx : x, dx > 0 ? x + dx + w : x + w, ox,
+                                static_cast<double>(map.tileSize.x), inverseTile.x, magX, map.columns, cx);
+    if (inX < 0) return false;
+    const int inY = cellRangeOf(dy < 0 ? y + dy : y, dy > 0 ? y + dy + h : y + h, oy,
+                                static_cast<double>(map.tileSize.y), inverseTile.y, magY, map.rows, cy);
+    if (inY < 0) return false;
+    if (inX == 1 && inY == 1 && !blockIsEmpty(map.solid, map.columns, cx, cy)) return false;
+    position = end;
+    return true;
+}
+
+}  // namespace tilesweep::detail

@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: MIT
+#include "tilesweep/mover.h"
+
+#include <cmath>
+#include <limits>
+
+#include "free_move.h"
+
+// The game-loop calls: prepareMap, maxContacts and moveAndSlide, over resolveMove.
+
+namespace tilesweep {
+namespace {
+
+template <class T>
+bool isFinite(Vec2<T> v) noexcept { return std::isfinite(v.x) && std::isfinite(v.y); }
+
+template <class T>
+bool isPositive(Vec2<T> v) noexcept { return isFinite(v) && v.x > 0 && v.y > 0; }
+
+template <class T>
+void prepare(const TileMapView<T>& map, MapError& error, Vec2<double>& inverse, TileMapView<T>& view) noexcept {
+    error = validateTileMap(map);
+    view = map;
+    if (error == MapError::None)
+        inverse = {1.0 / static_cast<double>(map.tileSize.x), 1.0 / static_cast<double>(map.tileSize.y)};
+}
+
+/// floor(fl(size / tile)) + 2 on one axis, in int64, saturated far above INT32_MAX.
+template <class T>
+std::int64_t cellsAlong(T size, T tile) noexcept {
+    const double q = std::floor(static_cast<double>(size) / static_cast<double>(tile));
+    // Division in double of float inputs is the float quotient's bound or larger: both round
+    // monotonically, so floor(fl_double(w/t)) >= floor(w/t) holds either way.
+    if (!(q < 0x1p40)) return std::int64_t{1} << 40;
+    return static_cast<std::int64_t>(q) + 2;
+}
+
+template <class T>
+std::int32_t maxContactsOf(Vec2<T> box, Vec2<T> tile) noexcept {
+    if (!isPositive(box) || !isPositive(tile)) return 0;
+    const std::int64_t n = cellsAlong(box.x, tile.x) + cellsAlong(box.y, tile.y);
+    return n > std::numeric_limits<std::int32_t>::max() ? std::numeric_limits<std::int32_t>::max()
+                                                        : static_cast<std::int32_t>(n);
+}
+
+template <class T>
+MoveResult<T> refuse(const MoveInput<T>& input, MoveStatus status) noexcept {
+    MoveResult<T> r;
+    r.position = input.box.pos;
+    r.status = status;
+    return r;
+}
+
+template <class T>
+MoveResult<T> moveAndSlideOf(const PreparedMap<T>& map, const MoveInput<T>& input, Contact<T>* contacts,
+                             std::int32_t capacity) noexcept {
+    if (!map.isValid() || !isFinite(input.box.pos) || !isPositive(input.box.size) ||
+        !isFinite(input.displacement))
+        return refuse(input, MoveStatus::InvalidInput);
+    MoveResult<T> r;
+    if (detail::tryFreeMove(map.view(), map.inverseTileSize(), input.box, input.displacement, r.position)) {
+        r.status = MoveStatus::Moved;
+        return r;
+    }
+    const std::int32_t bound = maxContactsOf(input.box.size, map.view().tileSize);
+    Contact<T> local[kInlineContacts];
+    Contact<T>* buffer = contacts;
+    std::int32_t bufferCapacity = capacity;
+    if (contacts == nullptr || capacity < bound) {
+        if (bound > kInlineContacts) {
+            MoveResult<T> tooSmall = refuse(input, MoveStatus::ContactBufferTooSmall);
+            tooSmall.contactCount = bound;
+            return tooSmall;
+        }
+        buffer = local;
+        bufferCapacity = kInlineContacts;
+    }
+    const SweepResult<T> s =
+        resolveMove(SweepInput<T>{map.view(), input.box, input.displacement}, ResolveOutput<T>{buffer, bufferCapacity});
+    if (s.status == Status::InvalidInput) return refuse(input, MoveStatus::InvalidInput);
+    r.position = s.position;
+    r.status = s.status == Status::Blocked ? MoveStatus::Blocked : MoveStatus::Moved;
+    r.contactCount = s.contactCount;
+    r.startOverlapCount = s.startOverlapCount;
+    // maxContacts proves contactCount <= bound <= bufferCapacity; the min keeps a broken proof
+    // from reading past the buffer (tests/mover_test.cpp would catch it first).
+    const std::int32_t stored = s.contactCount < bufferCapacity ? s.contactCount : bufferCapacity;
+    for (std::int32_t k = 0; k < stored; ++k) {
+        const Normal n = buffer[k].normal;
+        if (n.x != 0) {
+            r.blockedX = true;
+            r.onWall = true;
+            r.wallNormalX = n.x;
+        }
+        if (n.y != 0) r.blockedY = true;
+        if (n.y < 0) r.onGround = true;
+        if (n.y > 0) r.onCeiling = true;
+    }
+    if (buffer == local && contacts != nullptr && s.contactCount <= capacity)
+        for (std::int32_t k = 0; k < s.contactCount; ++k) contacts[k] = local[k];
+    return r;
+}
+
+}  // namespace
+
+PreparedMap<float> prepareMap(const TileMapView<float>& map) noexcept {
+    PreparedMap<float> p;
+    prepare(map, p.error_, p.inverseTileSize_, p.view_);
+    return p;
+}
+
+PreparedMap<double> prepareMap(const TileMapView<double>& map) noexcept {
+    PreparedMap<double> p;
+    prepare(map, p.error_, p.inverseTileSize_, p.view_);
+    return p;
+}
+
+std::int32_t maxContacts(Vec2<float> boxSize, Vec2<float> tileSize) noexcept {
+    return maxContactsOf(boxSize, tileSize);
+}
+
+std::int32_t maxContacts(Vec2<double> boxSize, Vec2<double> tileSize) noexcept {
+    return maxContactsOf(boxSize, tileSize);
+}
+
+MoveResult<float> moveAndSlide(const PreparedMap<float>& map, const MoveInput<float>& input,
+                               Contact<float>* contacts, std::int32_t contactCapacity) noexcept {
+    return moveAndSlideOf(map, input, contacts, contactCapacity);
+}
+
+MoveResult<double> moveAndSlide(const PreparedMap<double>& map, const MoveInput<double>& input,
+                                Contact<double>* contacts, std::int32_t contactCapacity) noexcept {
+    return moveAndSlideOf(map, input, contacts, contactCapacity);
+}
+
+}  // namespace tilesweep

@@ -1,0 +1,202 @@
+// SPDX-License-Identifier: MIT
+// The game-loop API (tilesweep/mover.h): hand-worked frames, and properties over random scenes
+// that hold moveAndSlide to resolveMove bit for bit and the resolver to maxContacts.
+// TILESWEEP_PROPERTY_CASES sets the cases per property (default 3000); the seed is fixed.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "mover_scenes.h"
+#include "tilesweep/mover.h"
+#include "tilesweep/resolve.h"
+
+namespace tilesweep {
+namespace {
+
+template <class T>
+class Mover : public ::testing::Test {};
+using Scalars = ::testing::Types<float, double>;
+TYPED_TEST_SUITE(Mover, Scalars);
+
+// A 12x16 box falling 5 from y = 14 (bottom 30) onto the floor at y = 32: hits at 2/5, stops
+// at y = 16, normal (0, -1): on the ground, blocked on y only.
+TYPED_TEST(Mover, landingSetsOnGround) {
+    using T = TypeParam;
+    test::Level<T> level({"....", "....", "####"});
+    const PreparedMap<T> map = prepareMap(level.view());
+    ASSERT_TRUE(map.isValid());
+    const MoveResult<T> r = moveAndSlide(map, {{{4, 14}, {12, 16}}, {0, 5}});
+    EXPECT_EQ(r.status, MoveStatus::Blocked);
+    EXPECT_EQ(r.position.y, T(16));
+    EXPECT_TRUE(r.onGround);
+    EXPECT_TRUE(r.blockedY);
+    EXPECT_FALSE(r.onWall);
+    EXPECT_FALSE(r.blockedX);
+    EXPECT_FALSE(r.onCeiling);
+    EXPECT_EQ(r.contactCount, 1);
+}
+
+// Walking right into tile (2, 0) = [32, 48] from x = 10 (right edge 30) by 8: touches at 32,
+// normal (-1, 0): a wall on the right.
+TYPED_TEST(Mover, wallSetsOnWallWithItsSide) {
+    using T = TypeParam;
+    test::Level<T> level({"..#.", "....", "...."});
+    const PreparedMap<T> map = prepareMap(level.view());
+    Contact<T> contacts[8];
+    const MoveResult<T> r = moveAndSlide(map, {{{10, 2}, {20, 10}}, {8, 0}}, contacts, 8);
+    EXPECT_EQ(r.position.x, T(12));
+    EXPECT_TRUE(r.onWall);
+    EXPECT_TRUE(r.blockedX);
+    EXPECT_EQ(r.wallNormalX, -1);
+    ASSERT_EQ(r.contactCount, 1);
+    EXPECT_EQ(contacts[0].tile, (Cell{2, 0}));
+}
+
+// Jumping up into the ceiling row 0 (bottom at 16) from y = 20 by -10: normal (0, 1).
+TYPED_TEST(Mover, ceilingSetsOnCeiling) {
+    using T = TypeParam;
+    test::Level<T> level({"####", "....", "...."});
+    const PreparedMap<T> map = prepareMap(level.view());
+    const MoveResult<T> r = moveAndSlide(map, {{{4, 20}, {8, 8}}, {0, -10}});
+    EXPECT_EQ(r.position.y, T(16));
+    EXPECT_TRUE(r.onCeiling);
+    EXPECT_FALSE(r.onGround);
+}
+
+// velocity * dt with a double dt compiles with a float vector, and with a float dt.
+TEST(Mover, scalarProductTakesAnyArithmeticScalar) {
+    const Vec2<float> v{3, -2};
+    const double dt = 0.5;
+    const Vec2<float> a = v * dt;
+    const Vec2<float> b = 0.5f * v;
+    const Vec2<double> c = Vec2<double>{1, 2} * 2;
+    EXPECT_EQ(a, (Vec2<float>{1.5f, -1}));
+    EXPECT_EQ(b, (Vec2<float>{1.5f, -1}));
+    EXPECT_EQ(c, (Vec2<double>{2, 4}));
+}
+
+TYPED_TEST(Mover, badInputIsRefusedNotResolved) {
+    using T = TypeParam;
+    test::Level<T> level({"....", "####"});
+    const PreparedMap<T> map = prepareMap(level.view());
+    const T nan = std::numeric_limits<T>::quiet_NaN();
+    EXPECT_EQ(moveAndSlide(map, {{{0, 0}, {4, 4}}, {nan, 0}}).status, MoveStatus::InvalidInput);
+    EXPECT_EQ(moveAndSlide(map, {{{0, 0}, {0, 4}}, {1, 0}}).status, MoveStatus::InvalidInput);
+    const MoveResult<T> r = moveAndSlide(map, {{{1, 2}, {-1, 4}}, {1, 0}});
+    EXPECT_EQ(r.position, (Vec2<T>{1, 2}));
+    TileMapView<T> bad = level.view();
+    bad.tileSize = {0, 16};
+    const PreparedMap<T> refused = prepareMap(bad);
+    EXPECT_FALSE(refused.isValid());
+    EXPECT_EQ(refused.error(), MapError::NonPositiveTileSize);
+    EXPECT_EQ(moveAndSlide(refused, {{{0, 0}, {4, 4}}, {1, 0}}).status, MoveStatus::InvalidInput);
+    EXPECT_EQ(moveAndSlide(PreparedMap<T>{}, {{{0, 0}, {4, 4}}, {1, 0}}).status, MoveStatus::InvalidInput);
+}
+
+// A box 100 tiles wide has maxContacts 104 + 3 > kInlineContacts: with no buffer the frame is
+// refused, with one of maxContacts entries it lands on all 101 floor tiles it spans.
+TYPED_TEST(Mover, wideBoxNeedsABufferOfMaxContacts) {
+    using T = TypeParam;
+    std::vector<std::string> rows{std::string(120, '.'), std::string(120, '#')};
+    test::Level<T> level(rows);
+    const PreparedMap<T> map = prepareMap(level.view());
+    const MoveInput<T> in{{{8, 0}, {1600, 8}}, {0, 16}};
+    const std::int32_t bound = maxContacts(in.box.size, level.view().tileSize);
+    EXPECT_EQ(bound, 102 + 2);
+    const MoveResult<T> refused = moveAndSlide(map, in);
+    EXPECT_EQ(refused.status, MoveStatus::ContactBufferTooSmall);
+    EXPECT_EQ(refused.contactCount, bound);
+    EXPECT_EQ(refused.position, in.box.pos);
+    std::vector<Contact<T>> contacts(static_cast<std::size_t>(bound));
+    const MoveResult<T> r = moveAndSlide(map, in, contacts.data(), bound);
+    EXPECT_EQ(r.status, MoveStatus::Blocked);
+    EXPECT_EQ(r.contactCount, 101);
+    EXPECT_TRUE(r.onGround);
+    EXPECT_EQ(r.position.y, T(8));
+}
+
+TEST(Mover, maxContactsOfInvalidSizesIsZero) {
+    EXPECT_EQ(maxContacts(Vec2<float>{0, 1}, Vec2<float>{16, 16}), 0);
+    EXPECT_EQ(maxContacts(Vec2<double>{1, 1}, Vec2<double>{std::nan(""), 16}), 0);
+    EXPECT_EQ(maxContacts(Vec2<float>{16, 16}, Vec2<float>{16, 16}), 6);
+    EXPECT_EQ(maxContacts(Vec2<double>{1e300, 1}, Vec2<double>{1e-300, 1}),
+              std::numeric_limits<std::int32_t>::max());
+}
+
+// ---- Properties over random scenes (tests/mover_scenes.h) ----
+
+template <class T>
+void expectSameAsResolveMove(const test::RandomScene<T>& scene, std::uint64_t caseIndex) {
+    const PreparedMap<T> map = prepareMap(scene.view());
+    ASSERT_TRUE(map.isValid());
+    std::vector<Contact<T>> expected(4096);
+    const SweepResult<T> s = resolveMove<T>({scene.view(), scene.box, scene.move},
+                                            {expected.data(), 4096, nullptr, 0});
+    const std::int32_t bound = maxContacts(scene.box.size, scene.view().tileSize);
+    const std::string where = "case " + std::to_string(caseIndex) + ": " + scene.describe();
+    // The documented bound: a buffer of maxContacts never truncates.
+    ASSERT_LE(s.contactCount, bound) << where;
+
+    std::vector<Contact<T>> got(static_cast<std::size_t>(bound) + 1);
+    const MoveResult<T> r = moveAndSlide(map, {scene.box, scene.move}, got.data(), bound);
+    ASSERT_NE(r.status, MoveStatus::InvalidInput) << where;
+    EXPECT_EQ(std::memcmp(&r.position, &s.position, sizeof r.position), 0)
+        << where << " moveAndSlide " << r.position.x << "," << r.position.y << " resolveMove " << s.position.x
+        << "," << s.position.y;
+    EXPECT_EQ(r.status == MoveStatus::Blocked, s.status == Status::Blocked) << where;
+    ASSERT_EQ(r.contactCount, s.contactCount) << where;
+    EXPECT_EQ(r.startOverlapCount, s.startOverlapCount) << where;
+    bool ground = false, ceiling = false, wall = false;
+    for (std::int32_t k = 0; k < s.contactCount; ++k) {
+        const auto& a = got[static_cast<std::size_t>(k)];
+        const auto& b = expected[static_cast<std::size_t>(k)];
+        EXPECT_TRUE(a.tile == b.tile && a.normal == b.normal && std::memcmp(&a.time, &b.time, sizeof a.time) == 0)
+            << where << " contact " << k;
+        ground = ground || b.normal.y == -1;
+        ceiling = ceiling || b.normal.y == 1;
+        wall = wall || b.normal.x != 0;
+    }
+    EXPECT_EQ(r.onGround, ground) << where;
+    EXPECT_EQ(r.onCeiling, ceiling) << where;
+    EXPECT_EQ(r.onWall, wall) << where;
+    EXPECT_EQ(r.blockedX, wall) << where;
+    EXPECT_EQ(r.blockedY, ground || ceiling) << where;
+
+    // With no buffer, and with a buffer one short of the count: same flags, nothing stored in
+    // the short one (never half-filled).
+    const MoveResult<T> bare = moveAndSlide(map, {scene.box, scene.move});
+    if (bound <= kInlineContacts) {
+        EXPECT_EQ(std::memcmp(&bare.position, &r.position, sizeof r.position), 0) << where;
+        EXPECT_EQ(bare.onGround, r.onGround) << where;
+        EXPECT_EQ(bare.onWall, r.onWall) << where;
+        EXPECT_EQ(bare.contactCount, r.contactCount) << where;
+    } else {
+        EXPECT_EQ(bare.status, MoveStatus::ContactBufferTooSmall) << where;
+    }
+    if (s.contactCount > 0 && bound <= kInlineContacts) {
+        std::vector<Contact<T>> shortBuffer(static_cast<std::size_t>(s.contactCount));
+        for (auto& c : shortBuffer) c.tile = {-7, -7};
+        const MoveResult<T> cut = moveAndSlide(map, {scene.box, scene.move}, shortBuffer.data(), s.contactCount - 1);
+        EXPECT_EQ(cut.contactCount, s.contactCount) << where;
+        for (const auto& c : shortBuffer) EXPECT_EQ(c.tile, (Cell{-7, -7})) << where << " half-filled";
+    }
+}
+
+TYPED_TEST(Mover, matchesResolveMoveBitForBitAndNeverExceedsMaxContacts) {
+    using T = TypeParam;
+    std::mt19937_64 rng(0x5eed12);
+    const std::uint64_t cases = test::propertyCases(3000);
+    for (std::uint64_t k = 0; k < cases && !::testing::Test::HasFailure(); ++k) {
+        const test::RandomScene<T> scene = test::randomScene<T>(rng);
+        expectSameAsResolveMove(scene, k);
+    }
+}
+
+}  // namespace
+}  // namespace tilesweep
