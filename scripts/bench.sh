@@ -14,7 +14,8 @@
 # Benchmark's --benchmark_filter), --min-time SECONDS (--benchmark_min_time), --no-build (use
 # the binary already in the build directory), --out-dir DIR (default docs/bench; for trial runs
 # that must not replace the committed figures), and anything after `--` goes to the benchmark
-# binary unchanged. The build directory is ${TILESWEEP_BUILD_DIR:-build-release}, relative to
+# binary unchanged. The build directory is ${TILESWEEP_BUILD_DIR:-build/release} (the release
+# preset), relative to
 # the repository root when not absolute; extra configure arguments can be given in
 # BENCH_CMAKE_ARGS. Timings are CPU time per item; keep the machine otherwise idle if you can
 # (the load average before and after the run is recorded in the report).
@@ -48,17 +49,15 @@ if ! [[ "$repetitions" =~ ^[1-9][0-9]*$ ]]; then
     exit 2
 fi
 
-build_dir=${TILESWEEP_BUILD_DIR:-build-release}
+build_dir=${TILESWEEP_BUILD_DIR:-build/release}
 [[ "$build_dir" = /* ]] || build_dir=$root/$build_dir
 binary=$build_dir/bench/tilesweep_bench
 
 if ((build)); then
-    # The benchmarks need the oracles (the exact reference, the seed and substep baselines);
-    # the tests and the property suite are not needed here and are left out to save time.
+    # The release preset: the library, the oracles (the exact reference, the seed and substep
+    # baselines) and the benchmarks; no tests.
     # shellcheck disable=SC2086  # BENCH_CMAKE_ARGS is a list of words on purpose
-    TILESWEEP_BUILD_DIR=$build_dir TILESWEEP_BUILD_TYPE=Release bash "$root/scripts/build.sh" \
-        -DCMAKE_BUILD_TYPE=Release -DTILESWEEP_BUILD_ORACLE=ON -DTILESWEEP_BUILD_BENCH=ON \
-        -DTILESWEEP_BUILD_TESTS=OFF -DTILESWEEP_BUILD_PROPERTIES=OFF ${BENCH_CMAKE_ARGS:-}
+    TILESWEEP_PRESET=release TILESWEEP_BUILD_DIR=$build_dir bash "$root/scripts/build.sh" ${BENCH_CMAKE_ARGS:-}
 fi
 if [ ! -x "$binary" ]; then
     echo "bench.sh: $binary not found (build first, or drop --no-build)" >&2

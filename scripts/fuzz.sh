@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets of fuzz/ with clang, AddressSanitizer and UBSan (a separate build
-# in build-fuzz/, or $TILESWEEP_FUZZ_BUILD_DIR), runs each for SECONDS_PER_TARGET seconds, prints
+# Builds the libFuzzer targets of fuzz/ with clang, AddressSanitizer and UBSan (the fuzz preset,
+# in build/fuzz/, or $TILESWEEP_FUZZ_BUILD_DIR), runs each for SECONDS_PER_TARGET seconds, prints
 # executions per second and corpus size, then replays the seed corpus, the saved regressions and
 # the grown corpus through the sanitized replay drivers.
 #
 #   bash scripts/fuzz.sh [SECONDS_PER_TARGET [TARGET...]]    # default: 60 s, every target
 #   bash scripts/fuzz.sh 0                                   # build and replay only
+#   bash scripts/fuzz.sh --tests 'unit|property' 30          # first the ctest suite built by clang
 #
+# --tests LABELS builds the whole fuzz preset (tests, properties, oracles) and runs
+# `ctest -L LABELS` in it before fuzzing: the default configuration compiled by clang, under the
+# sanitizers (TILESWEEP_PROPERTY_CASES cases a property, 300 unless set).
 # A failing input is written to fuzz/regressions/<target>/ (a regression test from then on) and
 # makes the script exit 1. The grown corpus stays in <build>/corpus/<target>/ between runs.
 # TILESWEEP_FUZZ_NO_BUILD=1 skips configure and build (to run targets side by side);
@@ -14,11 +18,16 @@
 # (say "-fno-sanitize=builtin -mlzcnt -O0", to look past a known finding while it is fixed).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+tests=""
+if [ "${1:-}" = --tests ]; then
+    tests=${2:?--tests needs ctest labels (a regular expression)}
+    shift 2
+fi
 seconds=${1:-60}
 shift || true
 targets=("$@")
 ((${#targets[@]})) || targets=(scene_reader resolver)
-build=${TILESWEEP_FUZZ_BUILD_DIR:-$root/build-fuzz}
+build=${TILESWEEP_FUZZ_BUILD_DIR:-$root/build/fuzz}
 
 # clang and its sanitizer and libFuzzer runtimes, from Debian's packages, when missing, with
 # what every build needs (scripts/setup.sh).
@@ -26,14 +35,20 @@ TILESWEEP_EXTRA_PACKAGES="clang libclang-rt-14-dev" source "$root/scripts/setup.
 
 if [ "${TILESWEEP_FUZZ_NO_BUILD:-0}" != 1 ]; then
     # Warnings are errors under clang too, as in the g++ builds.
-    CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-        -DTILESWEEP_BUILD_FUZZ=ON -DTILESWEEP_SANITIZE=ON \
-        -DTILESWEEP_BUILD_TESTS=OFF -DTILESWEEP_BUILD_PROPERTIES=OFF -DTILESWEEP_BUILD_ORACLE=OFF \
-        -DTILESWEEP_BUILD_BENCH=OFF -DTILESWEEP_BUILD_CLI=OFF -DTILESWEEP_BUILD_AUDIT=OFF \
-        -DTILESWEEP_FUZZ_FLAGS="${TILESWEEP_FUZZ_FLAGS:-}" >/dev/null
-    binaries=()
-    for target in "${targets[@]}"; do binaries+=("fuzz_$target" "fuzz_${target}_replay"); done
-    cmake --build "$build" --target "${binaries[@]}"
+    (cd "$root" && cmake --preset fuzz -B "$build" -DTILESWEEP_FUZZ_FLAGS="${TILESWEEP_FUZZ_FLAGS:-}" >/dev/null)
+    if [ -n "$tests" ]; then
+        cmake --build "$build" --parallel "$(nproc)"
+    else
+        binaries=()
+        for target in "${targets[@]}"; do binaries+=("fuzz_$target" "fuzz_${target}_replay"); done
+        cmake --build "$build" --parallel "$(nproc)" --target "${binaries[@]}"
+    fi
+fi
+
+if [ -n "$tests" ]; then
+    echo "== ctest -L '$tests' (clang, ASan + UBSan)"
+    TILESWEEP_PROPERTY_CASES=${TILESWEEP_PROPERTY_CASES:-300} \
+        ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)" -L "$tests"
 fi
 
 # Input size bounds: a scene line of a few KiB covers every field several times over; a resolver

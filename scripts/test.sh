@@ -1,15 +1,21 @@
 #!/usr/bin/env bash
 # Builds tilesweep (installing what is missing) and runs every test through ctest.
-# TILESWEEP_SANITIZE=ON builds and runs them under AddressSanitizer + UBSan in build-asan/.
+#
+#   bash scripts/test.sh                      # preset dev, build/dev/
+#   bash scripts/test.sh -L unit              # arguments go to ctest (here: the unit tests only)
+#   TILESWEEP_PRESET=asan-portable bash scripts/test.sh
+#
+# TILESWEEP_PRESET picks the preset of CMakePresets.json (dev, asan, portable, asan-portable,
+# fuzz); TILESWEEP_SANITIZE=ON is short for the asan preset. Labels: unit, property, oracle,
+# corpus, soak, fuzz-replay, cli.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-if [ "${TILESWEEP_SANITIZE:-OFF}" = ON ]; then
-    export TILESWEEP_BUILD_DIR=${TILESWEEP_BUILD_DIR:-$root/build-asan}
-    bash "$root/scripts/build.sh" -DTILESWEEP_SANITIZE=ON -DTILESWEEP_BUILD_BENCH=OFF
-else
-    bash "$root/scripts/build.sh"
+if [ "${TILESWEEP_SANITIZE:-OFF}" = ON ] && [ -z "${TILESWEEP_PRESET:-}" ]; then
+    export TILESWEEP_PRESET=asan
 fi
-cd "${TILESWEEP_BUILD_DIR:-$root/build}"
+export TILESWEEP_PRESET=${TILESWEEP_PRESET:-dev}
+bash "$root/scripts/build.sh"
+build=${TILESWEEP_BUILD_DIR:-$root/build/$TILESWEEP_PRESET}
 # Every property at two seeds (properties/CMakeLists.txt), 4000 cases each: about 25 s on 2 cores.
 export TILESWEEP_PROPERTY_CASES=${TILESWEEP_PROPERTY_CASES:-4000}
-ctest --output-on-failure --parallel "$(nproc)"
+ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)" "$@"
