@@ -23,7 +23,7 @@
 #include "oracle/exact/exact_geometry.h"
 #include "oracle/exact/exact_resolve.h"
 #include "oracle/exact/rational_convert.h"
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 namespace {
 

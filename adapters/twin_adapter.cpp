@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "bench/twin_resolve.h"
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 namespace {
 

@@ -24,7 +24,7 @@
 #include "bench/grid_resolve.h"
 #include "bench/twin_resolve.h"
 #include "src/decision_path.h"
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 namespace tilesweep::audit {
 

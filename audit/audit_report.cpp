@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "audit/audit.h"
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 namespace tilesweep::audit {
 namespace {

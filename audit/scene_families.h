@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 // The scenario families of the audit: plain std::mt19937_64 generators, one scene per
 // (seed, family, case index, scalar), so that any case is regenerated from those four numbers

@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 #include "tilesweep/sweep.h"
 
 // Pre-generated frames for the side-by-side benchmarks of tilesweep, the inexact twin and the

@@ -24,7 +24,7 @@
 #include "oracle/exact/exact_resolve.h"
 #include "oracle/seed/seed_resolve.h"
 #include "oracle/substep/substep_float.h"
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 #include "tilesweep/sweep.h"
 #include "frame_scenarios.h"
 #include "grid_resolve.h"

@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-#include "tilesweep/render.h"
+#include "tilesweep/scene/render.h"
 #if TILESWEEP_HAVE_CHECK
 #include "check_command.h"
 #include "replay_command.h"
@@ -29,7 +29,7 @@
 #include "audit_command.h"
 #endif
 #include "resolvers.h"
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 #ifndef TILESWEEP_VERSION
 #error "TILESWEEP_VERSION must be defined by the build (cli/CMakeLists.txt does)"

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 namespace tilesweep::cli {
 

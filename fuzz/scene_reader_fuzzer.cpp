@@ -14,7 +14,7 @@
 
 #include "frame_safety.h"  // checks/
 #include "fuzz_check.h"
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 namespace {
 

@@ -20,7 +20,7 @@
 #include <random>
 #include <vector>
 
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 namespace tilesweep::properties {
 

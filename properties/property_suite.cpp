@@ -15,7 +15,7 @@
 #include "oracle/exact/exact_resolve.h"
 #include "scene_checks.h"
 #include "scene_runner.h"
-#include "tilesweep/render.h"
+#include "tilesweep/scene/render.h"
 
 namespace tilesweep::properties {
 namespace {

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "src/scene/scalar_text.h"
+#include "scene/scalar_text.h"  // scene/: exact number text, shared with the scene reader
 
 namespace tilesweep::properties {
 namespace {

@@ -18,7 +18,7 @@
 #include <string_view>
 #include <vector>
 
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 namespace tilesweep::properties {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 namespace tilesweep::properties {
 

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "resolver_process.h"
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 namespace tilesweep::properties {
 

@@ -4,9 +4,9 @@
 // translation-invariant at a far origin, and stays compact over many frames. The checks read
 // the document the way a viewer would (elements and attributes), not its exact text. The suite
 // is named after the function it tests, so that `ctest -R render` selects it.
-#include "tilesweep/render.h"
+#include "tilesweep/scene/render.h"
 
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 #include <gtest/gtest.h>
 

@@ -20,7 +20,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include "oracle/exact/rational.h"
 #include "oracle/exact/rational_convert.h"
 #include "tilesweep/math.h"
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 // Exact counterparts of the public value types: the contract's geometry with rational
 // coordinates. Conventions are those of CONTRACT.md: x grows right, y grows down, a box is the

@@ -9,7 +9,7 @@
 #include "oracle/exact/rational.h"
 #include "tilesweep/math.h"
 #include "tilesweep/resolve.h"
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 // The exact reference: one frame through a map, and whole scenes, exactly as CONTRACT.md defines
 // them ("One frame through a map"), in rational arithmetic. It tests every solid tile of the map

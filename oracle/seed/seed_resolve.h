@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "tilesweep/math.h"
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 // The seed article's algorithm as written (shared/seed/swept-aabb-tile-collision.txt), in T,
 // kept only as a measured baseline: what a straightforward implementation gets wrong. Usable as

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "oracle/substep/substep_oracle.h"
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 // The game-style substep loop a tutorial would write, kept as a baseline that is known to be
 // wrong: everything in T. The step d/N is rounded once, the position is accumulated with

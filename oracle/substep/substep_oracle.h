@@ -8,7 +8,7 @@
 #include "oracle/exact/rational.h"
 #include "tilesweep/math.h"
 #include "tilesweep/resolve.h"
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 // The fine-substep oracle: the "per-pixel" method of the seed article, done exactly. The box is
 // placed at the exact positions pos + (k/N)*d, k = 1..N, and each is tested for plain (strict)

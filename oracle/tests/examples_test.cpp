@@ -14,7 +14,7 @@
 
 #include "expected_json.h"
 #include "oracle/exact/exact_resolve.h"
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 #ifndef TILESWEEP_EXAMPLES_DIR
 #error "TILESWEEP_EXAMPLES_DIR must name the directory holding scenes.jsonl"

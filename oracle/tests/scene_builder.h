@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 // Builds scenes for hand-worked tests straight from the pieces a scene file holds, without the
 // JSON reader: rows of '#' and '.', top row first.

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "scalar_text.h"
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 namespace tilesweep {
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 namespace tilesweep {
 namespace {

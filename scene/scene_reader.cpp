@@ -11,7 +11,7 @@
 
 #include "json_value.h"
 #include "scalar_text.h"
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 namespace tilesweep {
 namespace {

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/scene.h"
 
 #include <string>
 #include <vector>
 
 // A picture of a scene and its resolved frames, so that a person can look at a counterexample
-// instead of reading numbers. Part of the `tilesweep_scene` target, like scene.h.
+// instead of reading numbers. Part of the `tilesweep_scene` target (scene/), like scene.h.
 //
 // The picture is one self-contained SVG document (no scripts, fonts, images or other external
 // resources; valid XML, starting with `<svg`). Its y axis grows downward, as the contract's does,
