@@ -9,6 +9,7 @@ TILESWEEP_PACKAGES=(
     libboost-dev libgmp-dev              # the exact rational oracle (Boost.Multiprecision, GMP)
     nlohmann-json3-dev libcli11-dev      # scene files, the command line
     libbenchmark-dev libbox2d-dev        # benchmarks, and Box2D as the peer they measure against
+    luajit                               # examples/love_style: the C API from LuaJIT's FFI
 )
 
 # Scripts that need more (scripts/fuzz.sh: clang) name it in TILESWEEP_EXTRA_PACKAGES.

@@ -14,9 +14,149 @@
 
 #include "bit_ops.h"
 
+// 128-bit helpers: the compiler's __int128 on GCC and Clang; with TILESWEEP_PORTABLE_INTEGERS
+// defined, or on any other compiler (MSVC), two 64-bit limbs with the same operators, so that
+// WideInt, Int128 and their callers compile unchanged on any C++17 compiler.
+#if !defined(TILESWEEP_PORTABLE_INTEGERS) && (defined(__GNUC__) || defined(__clang__)) && defined(__SIZEOF_INT128__)
+#define TILESWEEP_HAVE_NATIVE_INT128 1
+#endif
+
 namespace tilesweep::detail {
 
+#if defined(TILESWEEP_HAVE_NATIVE_INT128)
 __extension__ typedef unsigned __int128 Uint128;
+__extension__ typedef __int128 Int128Native;
+#else
+/// An unsigned 128-bit integer as two limbs, arithmetic modulo 2^128, with the operators the
+/// native unsigned __int128 offers that this library uses. Shifts take 0 <= s < 128.
+struct Uint128 {
+    std::uint64_t lo = 0;
+    std::uint64_t hi = 0;
+
+    constexpr Uint128() noexcept = default;
+    constexpr Uint128(std::uint64_t v) noexcept : lo(v) {}  // implicit, as the native type converts
+    constexpr Uint128(std::uint64_t high, std::uint64_t low, bool) noexcept : lo(low), hi(high) {}
+    explicit constexpr operator std::uint64_t() const noexcept { return lo; }
+
+    /// The full product of two 64-bit values, from 32-bit halves.
+    static constexpr Uint128 multiply64(std::uint64_t a, std::uint64_t b) noexcept {
+        const std::uint64_t a0 = a & 0xffffffffu, a1 = a >> 32, b0 = b & 0xffffffffu, b1 = b >> 32;
+        const std::uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
+        const std::uint64_t middle = (p00 >> 32) + (p01 & 0xffffffffu) + (p10 & 0xffffffffu);
+        return {p11 + (p01 >> 32) + (p10 >> 32) + (middle >> 32), (p00 & 0xffffffffu) | (middle << 32), true};
+    }
+
+    friend constexpr Uint128 operator+(Uint128 a, Uint128 b) noexcept {
+        const std::uint64_t lo = a.lo + b.lo;
+        return {a.hi + b.hi + (lo < a.lo ? 1u : 0u), lo, true};
+    }
+    friend constexpr Uint128 operator-(Uint128 a, Uint128 b) noexcept {
+        return {a.hi - b.hi - (a.lo < b.lo ? 1u : 0u), a.lo - b.lo, true};
+    }
+    friend constexpr Uint128 operator*(Uint128 a, Uint128 b) noexcept {
+        Uint128 r = multiply64(a.lo, b.lo);
+        r.hi += a.lo * b.hi + a.hi * b.lo;
+        return r;
+    }
+    friend constexpr Uint128 operator<<(Uint128 a, int s) noexcept {
+        if (s == 0) return a;
+        if (s >= 64) return {a.lo << (s - 64), 0, true};
+        return {(a.hi << s) | (a.lo >> (64 - s)), a.lo << s, true};
+    }
+    friend constexpr Uint128 operator>>(Uint128 a, int s) noexcept {
+        if (s == 0) return a;
+        if (s >= 64) return {0, a.hi >> (s - 64), true};
+        return {a.hi >> s, (a.lo >> s) | (a.hi << (64 - s)), true};
+    }
+    friend constexpr Uint128 operator&(Uint128 a, Uint128 b) noexcept { return {a.hi & b.hi, a.lo & b.lo, true}; }
+    friend constexpr Uint128 operator|(Uint128 a, Uint128 b) noexcept { return {a.hi | b.hi, a.lo | b.lo, true}; }
+    friend constexpr Uint128 operator~(Uint128 a) noexcept { return {~a.hi, ~a.lo, true}; }
+    friend constexpr bool operator==(Uint128 a, Uint128 b) noexcept { return a.hi == b.hi && a.lo == b.lo; }
+    friend constexpr bool operator!=(Uint128 a, Uint128 b) noexcept { return !(a == b); }
+    friend constexpr bool operator<(Uint128 a, Uint128 b) noexcept { return a.hi != b.hi ? a.hi < b.hi : a.lo < b.lo; }
+    friend constexpr bool operator>(Uint128 a, Uint128 b) noexcept { return b < a; }
+    friend constexpr bool operator<=(Uint128 a, Uint128 b) noexcept { return !(b < a); }
+    friend constexpr bool operator>=(Uint128 a, Uint128 b) noexcept { return !(a < b); }
+
+    /// Quotient and remainder of a / b, b != 0 (restoring division, one bit a step; a 64-bit
+    /// division when both fit).
+    static constexpr Uint128 divide(Uint128 a, Uint128 b, Uint128& remainder) noexcept {
+        if (a.hi == 0 && b.hi == 0) {
+            remainder = Uint128(a.lo % b.lo);
+            return Uint128(a.lo / b.lo);
+        }
+        Uint128 q;
+        Uint128 r;
+        for (int bit = 127; bit >= 0; --bit) {
+            r = (r << 1) | ((a >> bit) & Uint128(1));
+            if (r >= b) {
+                r = r - b;
+                q = q | (Uint128(1) << bit);
+            }
+        }
+        remainder = r;
+        return q;
+    }
+
+    /// The value rounded to the nearest double (ties to even): the top 64 bits with a sticky
+    /// bit for the rest, so the one rounding to 53 bits is the correct one.
+    [[nodiscard]] double toDouble() const noexcept {
+        if (hi == 0) return static_cast<double>(lo);
+        const int shift = 64 - countLeadingZeros64(hi);  // bits of hi, 1..64
+        std::uint64_t top = shift == 64 ? hi : (hi << (64 - shift)) | (lo >> shift);
+        const std::uint64_t dropped = shift == 64 ? lo : lo << (64 - shift);
+        if (dropped != 0) top |= 1;
+        return std::ldexp(static_cast<double>(top), shift);
+    }
+};
+
+/// A signed 128-bit integer, two's complement over Uint128, with the operators the native
+/// __int128 offers that this library uses (division truncates toward zero, as in C++).
+struct Int128Native {
+    Uint128 bits;
+
+    constexpr Int128Native() noexcept = default;
+    constexpr Int128Native(std::int64_t v) noexcept  // implicit, as the native type converts
+        : bits(v < 0 ? ~std::uint64_t{0} : 0, static_cast<std::uint64_t>(v), true) {}
+    explicit constexpr Int128Native(Uint128 u) noexcept : bits(u) {}
+    explicit constexpr operator Uint128() const noexcept { return bits; }
+    explicit constexpr operator std::uint64_t() const noexcept { return bits.lo; }
+    explicit operator double() const noexcept {
+        return isNegative() ? -(Uint128{} - bits).toDouble() : bits.toDouble();
+    }
+
+    [[nodiscard]] constexpr bool isNegative() const noexcept { return (bits.hi >> 63) != 0; }
+
+    friend constexpr Int128Native operator+(Int128Native a, Int128Native b) noexcept { return Int128Native(a.bits + b.bits); }
+    friend constexpr Int128Native operator-(Int128Native a, Int128Native b) noexcept { return Int128Native(a.bits - b.bits); }
+    friend constexpr Int128Native operator-(Int128Native a) noexcept { return Int128Native(Uint128{} - a.bits); }
+    friend constexpr Int128Native operator*(Int128Native a, Int128Native b) noexcept { return Int128Native(a.bits * b.bits); }
+    friend constexpr Int128Native operator<<(Int128Native a, int s) noexcept { return Int128Native(a.bits << s); }
+    friend constexpr Int128Native operator/(Int128Native a, Int128Native b) noexcept {
+        Uint128 r;
+        const Uint128 q = Uint128::divide(a.magnitudeBits(), b.magnitudeBits(), r);
+        return a.isNegative() != b.isNegative() ? -Int128Native(q) : Int128Native(q);
+    }
+    friend constexpr Int128Native operator%(Int128Native a, Int128Native b) noexcept {
+        Uint128 r;
+        Uint128::divide(a.magnitudeBits(), b.magnitudeBits(), r);
+        return a.isNegative() ? -Int128Native(r) : Int128Native(r);
+    }
+    friend constexpr bool operator<(Int128Native a, Int128Native b) noexcept {
+        const auto ah = static_cast<std::int64_t>(a.bits.hi);
+        const auto bh = static_cast<std::int64_t>(b.bits.hi);
+        return ah != bh ? ah < bh : a.bits.lo < b.bits.lo;
+    }
+    friend constexpr bool operator>(Int128Native a, Int128Native b) noexcept { return b < a; }
+    friend constexpr bool operator<=(Int128Native a, Int128Native b) noexcept { return !(b < a); }
+    friend constexpr bool operator>=(Int128Native a, Int128Native b) noexcept { return !(a < b); }
+    friend constexpr bool operator==(Int128Native a, Int128Native b) noexcept { return a.bits == b.bits; }
+    friend constexpr bool operator!=(Int128Native a, Int128Native b) noexcept { return a.bits != b.bits; }
+
+private:
+    [[nodiscard]] constexpr Uint128 magnitudeBits() const noexcept { return isNegative() ? Uint128{} - bits : bits; }
+};
+#endif
 
 template <int N>
 struct WideInt {
@@ -193,10 +333,9 @@ struct WideInt {
 
 namespace tilesweep::detail {
 
-__extension__ typedef __int128 Int128Native;
-
 /// The narrowest tier as one native 128-bit integer: the same interface as WideInt, with the
-/// arithmetic done by the compiler's __int128 (a few instructions instead of limb loops).
+/// arithmetic done by the compiler's __int128 (a few instructions instead of limb loops), or by
+/// the two-limb Int128Native above under TILESWEEP_PORTABLE_INTEGERS.
 struct Int128 {
     Int128Native v;
 

@@ -83,6 +83,42 @@ inline double real(std::mt19937_64& rng, double lo, double hi) {
 
 }  // namespace detail
 
+/// A random box and move for a mover on `level` (sizes, positions and moves as randomScene's).
+template <class T>
+void randomMover(std::mt19937_64& rng, const Level<T>& level, Box<T>& box, Vec2<T>& move) {
+    using detail::pick;
+    using detail::real;
+    const double t[2] = {static_cast<double>(level.tile.x), static_cast<double>(level.tile.y)};
+    const double o[2] = {static_cast<double>(level.origin.x), static_cast<double>(level.origin.y)};
+    // Sizes: whole tiles, fractions of a tile, or arbitrary.
+    auto size = [&](double tile) {
+        switch (pick(rng, 0, 2)) {
+            case 0: return static_cast<T>(tile * pick(rng, 1, 4));
+            case 1: return static_cast<T>(tile * pick(rng, 1, 15) / 4.0);
+            default: return static_cast<T>(tile * real(rng, 0.05, 5));
+        }
+    };
+    box.size = {size(t[0]), size(t[1])};
+    // Positions: on the quarter-tile lattice around the map, or arbitrary.
+    auto coordinate = [&](double origin, double tile, int count) {
+        if (pick(rng, 0, 3) != 0) return static_cast<T>(origin + tile * pick(rng, -8, 4 * count + 8) / 4.0);
+        return static_cast<T>(origin + tile * real(rng, -2, count + 2));
+    };
+    box.pos = {coordinate(o[0], t[0], level.columns), coordinate(o[1], t[1], level.rows)};
+    // Moves: zero, lattice steps, arbitrary, tiny or huge.
+    auto displacement = [&](double tile) {
+        switch (pick(rng, 0, 5)) {
+            case 0: return T(0);
+            case 1:
+            case 2: return static_cast<T>(tile * pick(rng, -64, 64) / 8.0);
+            case 3: return static_cast<T>(tile * real(rng, -6, 6));
+            case 4: return static_cast<T>(tile * real(rng, -1, 1) * 1e-6);
+            default: return static_cast<T>(tile * real(rng, -1000, 1000));
+        }
+    };
+    move = {displacement(t[0]), displacement(t[1])};
+}
+
 /// One random scene (map, box, move) in T.
 template <class T>
 RandomScene<T> randomScene(std::mt19937_64& rng) {
@@ -109,33 +145,7 @@ RandomScene<T> randomScene(std::mt19937_64& rng) {
         const int i = pick(rng, 0, s.columns - 1);
         for (int j = 0; j < s.rows; ++j) s.cells[static_cast<std::size_t>(j * s.columns + i)] = 1;
     }
-    // Sizes: whole tiles, fractions of a tile, or arbitrary.
-    auto size = [&](double tile) {
-        switch (pick(rng, 0, 2)) {
-            case 0: return static_cast<T>(tile * pick(rng, 1, 4));
-            case 1: return static_cast<T>(tile * pick(rng, 1, 15) / 4.0);
-            default: return static_cast<T>(tile * real(rng, 0.05, 5));
-        }
-    };
-    s.box.size = {size(t[0]), size(t[1])};
-    // Positions: on the quarter-tile lattice around the map, or arbitrary.
-    auto coordinate = [&](double origin, double tile, int count) {
-        if (pick(rng, 0, 3) != 0) return static_cast<T>(origin + tile * pick(rng, -8, 4 * count + 8) / 4.0);
-        return static_cast<T>(origin + tile * real(rng, -2, count + 2));
-    };
-    s.box.pos = {coordinate(o[0], t[0], s.columns), coordinate(o[1], t[1], s.rows)};
-    // Moves: zero, lattice steps, arbitrary, tiny or huge.
-    auto displacement = [&](double tile) {
-        switch (pick(rng, 0, 5)) {
-            case 0: return T(0);
-            case 1:
-            case 2: return static_cast<T>(tile * pick(rng, -64, 64) / 8.0);
-            case 3: return static_cast<T>(tile * real(rng, -6, 6));
-            case 4: return static_cast<T>(tile * real(rng, -1, 1) * 1e-6);
-            default: return static_cast<T>(tile * real(rng, -1000, 1000));
-        }
-    };
-    s.move = {displacement(t[0]), displacement(t[1])};
+    randomMover(rng, s, s.box, s.move);
     return s;
 }
 

@@ -1,0 +1,26 @@
+# Checks that README.md quotes the platformer's game loop verbatim: the lines between
+# "// [readme:game-loop]" and "// [readme:end]" in SOURCE, with their common indentation
+# removed, must appear in README as consecutive lines. Run: cmake -DSOURCE=... -DREADME=... -P this
+file(READ ${SOURCE} source)
+file(READ ${README} readme)
+string(REGEX MATCH "// \\[readme:game-loop\\]\n(.*)\n[ ]*// \\[readme:end\\]" found "${source}")
+if(NOT found)
+    message(FATAL_ERROR "${SOURCE}: no [readme:game-loop] ... [readme:end] region")
+endif()
+set(snippet "${CMAKE_MATCH_1}")
+# The indentation of the first line is the common one (the region is one block).
+string(REGEX MATCH "^[ ]*" indent "${snippet}")
+string(LENGTH "${indent}" width)
+string(REPLACE "\n${indent}" "\n" snippet "\n${snippet}")
+string(SUBSTRING "${snippet}" 1 -1 snippet)
+string(FIND "${readme}" "${snippet}" at)
+if(at EQUAL -1)
+    message(FATAL_ERROR "README.md does not quote the platformer's game loop verbatim; it should hold:\n${snippet}")
+endif()
+string(REGEX MATCHALL "\n" lines "${snippet}")
+list(LENGTH lines count)
+math(EXPR count "${count} + 1")
+if(count GREATER 10)
+    message(FATAL_ERROR "the game-loop snippet has ${count} lines; the README promises ten or fewer")
+endif()
+message(STATUS "README.md quotes the platformer's loop (${count} lines)")

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "tilesweep/mover.h"
+
+// Many movers at once: N independent moveAndSlide frames against one prepared map, on a pool
+// of threads made once (target tilesweep::batch; the core tilesweep target stays free of
+// threads and dependencies).
+//
+// Every mover's result is bit for bit the one moveAndSlide gives it alone (tests/batch_test.cpp
+// compares them), whatever the number of threads: movers are independent and each is resolved
+// by one thread. Movers whose swept bounds meet no solid cell take moveAndSlide's cheap exit, a
+// byte scan over those cells, before any exact work. A batch allocates nothing: the pool's
+// threads are made when the pool is, and the caller owns the inputs and the results.
+//
+// Usage, every frame:
+//
+//     tilesweep::BatchPool pool(2);                          // once: the caller + 1 worker
+//     tilesweep::moveAndSlideBatch(map, inputs.data(), results.data(), inputs.size(), &pool);
+
+namespace tilesweep {
+
+/// Worker threads for moveAndSlideBatch, made once and reused by every batch. A pool of n
+/// threads runs batches on the calling thread and n - 1 workers; n <= 1 makes no thread. One
+/// batch runs at a time per pool (concurrent calls wait their turn).
+class BatchPool {
+public:
+    /// Starts threads - 1 workers (at most 255). Throws std::system_error if a thread cannot be
+    /// started (the C API reports TS_ERROR_THREADS instead).
+    explicit BatchPool(int threads);
+    /// Stops and joins the workers.
+    ~BatchPool();
+    BatchPool(const BatchPool&) = delete;
+    BatchPool& operator=(const BatchPool&) = delete;
+
+    /// Threads a batch runs on, the caller included (>= 1).
+    [[nodiscard]] int threadCount() const noexcept;
+
+    /// Calls work(context, begin, end) over disjoint ranges covering [0, count), in chunks of
+    /// `chunk` items, on every thread of the pool; returns when all are done. Allocates nothing.
+    void run(std::size_t count, std::size_t chunk, void (*work)(void* context, std::size_t begin, std::size_t end),
+             void* context) noexcept;
+
+    struct State;  ///< the threads and their hand-off (batch.cpp)
+
+private:
+    State* state_;
+};
+
+/// Resolves inputs[k] into results[k] for k < count, each exactly as moveAndSlide(map,
+/// inputs[k]) with no contact buffer (so a box wider than kInlineContacts allows gets
+/// MoveStatus::ContactBufferTooSmall; use moveAndSlide with a buffer for it). `pool` null runs
+/// on the calling thread. Inputs and results must not overlap.
+void moveAndSlideBatch(const PreparedMap<float>& map, const MoveInput<float>* inputs, MoveResult<float>* results,
+                       std::size_t count, BatchPool* pool = nullptr) noexcept;
+/// The same in double.
+void moveAndSlideBatch(const PreparedMap<double>& map, const MoveInput<double>* inputs,
+                       MoveResult<double>* results, std::size_t count, BatchPool* pool = nullptr) noexcept;
+
+}  // namespace tilesweep

@@ -1,0 +1,176 @@
+/* SPDX-License-Identifier: MIT */
+#ifndef TILESWEEP_TILESWEEP_H
+#define TILESWEEP_TILESWEEP_H
+
+/* The C API of tilesweep: plain C99, for C, C#, Rust, Zig, LuaJIT's FFI and GDExtension.
+ *
+ * The same resolver as the C++ API (tilesweep/mover.h, tilesweep/batch.h), bit for bit: exact
+ * swept-AABB move-and-slide of boxes through a tile map (../shared/CONTRACT.md). x grows to the
+ * right, y downward; landing on a floor is the normal (0, -1). Every function with a suffix _f
+ * works in float, _d in double. Nothing throws and nothing aborts: every function that can fail
+ * returns a ts_error, ts_error_message names it, and a result is written only on TS_OK (or, for
+ * a move refused as invalid, the start position with status TS_MOVE_INVALID_INPUT).
+ * Library: tilesweep_c (libtilesweep_c.so; LuaJIT: ffi.load("tilesweep_c")).
+ *
+ * Usage, C:
+ *
+ *     ts_map_f* map;
+ *     ts_map_desc_f desc = {{0, 0}, {16, 16}, columns, rows, cells};  (cells: 1 = solid)
+ *     if (ts_map_create_f(&desc, &map) != TS_OK) ...;                 (copies the cells)
+ *     ts_mover_f mover = {{{x, y}, {w, h}}, {vx * dt, vy * dt}};
+ *     ts_result_f r;
+ *     ts_move_and_slide_f(map, &mover, &r, NULL, 0);
+ *     x = r.position.x; y = r.position.y; if (r.on_ground) vy = 0;
+ *     ts_map_destroy_f(map);
+ */
+
+#include <stddef.h>
+#include <stdint.h>
+
+#if defined(_WIN32) && defined(TILESWEEP_C_BUILD)
+#define TILESWEEP_EXPORT __declspec(dllexport)
+#elif defined(_WIN32)
+#define TILESWEEP_EXPORT __declspec(dllimport)
+#elif defined(__GNUC__)
+#define TILESWEEP_EXPORT __attribute__((visibility("default")))
+#else
+#define TILESWEEP_EXPORT
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Why a call failed; TS_OK (0) when it did not. */
+typedef enum ts_error {
+    TS_OK = 0,
+    TS_ERROR_NULL_ARGUMENT = 1,          /**< a required pointer is NULL */
+    TS_ERROR_INVALID_INPUT = 2,          /**< a mover has a non-finite value or a size <= 0 */
+    TS_ERROR_MAP_NON_FINITE_ORIGIN = 3,  /**< map origin is NaN or infinite */
+    TS_ERROR_MAP_NON_POSITIVE_TILE_SIZE = 4, /**< a tile size is not finite and > 0 */
+    TS_ERROR_MAP_NEGATIVE_DIMENSIONS = 5,    /**< columns or rows < 0, or cells missing */
+    TS_ERROR_MAP_TOO_LARGE = 6,          /**< more than 2^31 - 1 cells */
+    TS_ERROR_MAP_UNREPRESENTABLE_EDGE_X = 7, /**< some tile edge on x is not exactly a float/double */
+    TS_ERROR_MAP_UNREPRESENTABLE_EDGE_Y = 8, /**< likewise on y */
+    TS_ERROR_CONTACT_BUFFER_TOO_SMALL = 9,   /**< give ts_max_contacts_* entries */
+    TS_ERROR_CELL_OUT_OF_RANGE = 10,     /**< a cell index outside the map */
+    TS_ERROR_OUT_OF_MEMORY = 11,         /**< allocation failed (map or pool creation only) */
+    TS_ERROR_THREADS = 12                /**< a worker thread could not be started */
+} ts_error;
+
+/** How a move ended (ts_result_*.status). */
+typedef enum ts_move_status {
+    TS_MOVE_MOVED = 0,          /**< nothing hit: moved the whole way */
+    TS_MOVE_BLOCKED = 1,        /**< at least one tile hit */
+    TS_MOVE_INVALID_INPUT = 2,  /**< refused: nothing moved */
+    TS_MOVE_CONTACT_BUFFER_TOO_SMALL = 3 /**< refused: contact_count is the buffer size needed */
+} ts_move_status;
+
+typedef struct ts_vec2f { float x, y; } ts_vec2f;
+typedef struct ts_vec2d { double x, y; } ts_vec2d;
+
+/** A box: the closed rectangle [pos, pos + size], size > 0. */
+typedef struct ts_box_f { ts_vec2f pos, size; } ts_box_f;
+typedef struct ts_box_d { ts_vec2d pos, size; } ts_box_d;
+
+/** A map to prepare: columns * rows cells, row-major from the top row, nonzero is solid. */
+typedef struct ts_map_desc_f {
+    ts_vec2f origin;     /**< top-left corner of cell (0, 0) */
+    ts_vec2f tile_size;  /**< > 0 */
+    int32_t columns;
+    int32_t rows;
+    const uint8_t* solid;
+} ts_map_desc_f;
+typedef struct ts_map_desc_d {
+    ts_vec2d origin;
+    ts_vec2d tile_size;
+    int32_t columns;
+    int32_t rows;
+    const uint8_t* solid;
+} ts_map_desc_d;
+
+/** A prepared map (validated, cells copied); opaque. */
+typedef struct ts_map_f ts_map_f;
+typedef struct ts_map_d ts_map_d;
+/** Worker threads for the batch calls; opaque. */
+typedef struct ts_pool ts_pool;
+
+/** One mover's frame: its box at the start and its motion over the frame (velocity * dt). */
+typedef struct ts_mover_f { ts_box_f box; ts_vec2f displacement; } ts_mover_f;
+typedef struct ts_mover_d { ts_box_d box; ts_vec2d displacement; } ts_mover_d;
+
+/** What happened to one mover; the flags come from the normals of every contact. */
+typedef struct ts_result_f {
+    ts_vec2f position;   /**< the end position; the start unless moved or blocked */
+    uint8_t status;      /**< a ts_move_status */
+    uint8_t blocked_x;   /**< a tile stopped the motion on x (= on_wall) */
+    uint8_t blocked_y;   /**< a tile stopped the motion on y */
+    uint8_t on_ground;   /**< a contact with normal (0, -1) */
+    uint8_t on_ceiling;  /**< a contact with normal (0, 1) */
+    uint8_t on_wall;     /**< a contact with normal (+-1, 0) */
+    int8_t wall_normal_x;  /**< 1: wall on the left, -1: on the right, 0: none */
+    int32_t contact_count; /**< tiles hit; stored iff <= the capacity given */
+    int32_t start_overlap_count; /**< solid tiles overlapped at the start (never blocking) */
+} ts_result_f;
+typedef struct ts_result_d {
+    ts_vec2d position;
+    uint8_t status;
+    uint8_t blocked_x;
+    uint8_t blocked_y;
+    uint8_t on_ground;
+    uint8_t on_ceiling;
+    uint8_t on_wall;
+    int8_t wall_normal_x;
+    int32_t contact_count;
+    int32_t start_overlap_count;
+} ts_result_d;
+
+/** One tile hit: cell (i, j), the normal leaving its face, the fraction of the frame elapsed. */
+typedef struct ts_contact_f { int32_t i, j; int8_t nx, ny; float time; } ts_contact_f;
+typedef struct ts_contact_d { int32_t i, j; int8_t nx, ny; double time; } ts_contact_d;
+
+/** A short English message naming the problem; never NULL. */
+TILESWEEP_EXPORT const char* ts_error_message(ts_error error);
+
+/** Validates and copies a map; *out receives it (destroy with ts_map_destroy_*). */
+TILESWEEP_EXPORT ts_error ts_map_create_f(const ts_map_desc_f* desc, ts_map_f** out);
+TILESWEEP_EXPORT ts_error ts_map_create_d(const ts_map_desc_d* desc, ts_map_d** out);
+/** Frees a map; NULL is allowed. */
+TILESWEEP_EXPORT void ts_map_destroy_f(ts_map_f* map);
+TILESWEEP_EXPORT void ts_map_destroy_d(ts_map_d* map);
+/** Sets cell (i, j) solid (nonzero) or empty, between frames. */
+TILESWEEP_EXPORT ts_error ts_map_set_solid_f(ts_map_f* map, int32_t i, int32_t j, int solid);
+TILESWEEP_EXPORT ts_error ts_map_set_solid_d(ts_map_d* map, int32_t i, int32_t j, int solid);
+
+/** The most contacts one frame of a box this size can record: a buffer this large never falls
+ *  short. 0 for sizes that are not finite and > 0. */
+TILESWEEP_EXPORT int32_t ts_max_contacts_f(ts_vec2f box_size, ts_vec2f tile_size);
+TILESWEEP_EXPORT int32_t ts_max_contacts_d(ts_vec2d box_size, ts_vec2d tile_size);
+
+/** Resolves one frame of one mover into *result. contacts (may be NULL) receives all of the
+ *  frame's contacts when they fit in capacity, otherwise none. TS_ERROR_INVALID_INPUT and
+ *  TS_ERROR_CONTACT_BUFFER_TOO_SMALL also fill *result (start position, its status). */
+TILESWEEP_EXPORT ts_error ts_move_and_slide_f(const ts_map_f* map, const ts_mover_f* mover, ts_result_f* result,
+                                              ts_contact_f* contacts, int32_t capacity);
+TILESWEEP_EXPORT ts_error ts_move_and_slide_d(const ts_map_d* map, const ts_mover_d* mover, ts_result_d* result,
+                                              ts_contact_d* contacts, int32_t capacity);
+
+/** Starts a pool of `threads` threads for the batch calls (the caller counts as one). */
+TILESWEEP_EXPORT ts_error ts_pool_create(int32_t threads, ts_pool** out);
+/** Stops a pool; NULL is allowed. */
+TILESWEEP_EXPORT void ts_pool_destroy(ts_pool* pool);
+
+/** Resolves movers[k] into results[k], k < count, each as ts_move_and_slide_* with no contact
+ *  buffer; pool may be NULL (this thread only). TS_ERROR_INVALID_INPUT (or
+ *  TS_ERROR_CONTACT_BUFFER_TOO_SMALL) when some mover was refused: its status says so, the
+ *  others are resolved. */
+TILESWEEP_EXPORT ts_error ts_move_and_slide_batch_f(const ts_map_f* map, const ts_mover_f* movers,
+                                                    ts_result_f* results, size_t count, ts_pool* pool);
+TILESWEEP_EXPORT ts_error ts_move_and_slide_batch_d(const ts_map_d* map, const ts_mover_d* movers,
+                                                    ts_result_d* results, size_t count, ts_pool* pool);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* TILESWEEP_TILESWEEP_H */

@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: MIT
+#include "tilesweep/batch.h"
+
+#include <atomic>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+// A small pool over std::thread rather than TBB: a batch is one parallel loop over independent
+// movers, so the pool needs only a hand-off (a generation counter under a mutex), an atomic
+// chunk cursor and a completion count. It allocates when it is made, never per batch; a TBB
+// parallel_for would allocate tasks per call and bring a dependency to every binding of the C
+// API.
+
+namespace tilesweep {
+
+struct BatchPool::State {
+    std::vector<std::thread> workers;
+    std::mutex runMutex;  // one batch at a time
+    std::mutex mutex;     // guards generation, stop and the job fields below
+    std::condition_variable wake;
+    std::condition_variable done;
+    std::uint64_t generation = 0;
+    bool stop = false;
+    // The current job.
+    std::size_t count = 0;
+    std::size_t chunk = 1;
+    void (*work)(void*, std::size_t, std::size_t) = nullptr;
+    void* context = nullptr;
+    std::atomic<std::size_t> next{0};
+    std::atomic<int> pending{0};
+
+    void runChunks() noexcept {
+        for (;;) {
+            const std::size_t begin = next.fetch_add(chunk, std::memory_order_relaxed);
+            if (begin >= count) return;
+            const std::size_t end = count - begin < chunk ? count : begin + chunk;
+            work(context, begin, end);
+        }
+    }
+
+    void workerLoop() noexcept {
+        std::uint64_t seen = 0;
+        for (;;) {
+            {
+                std::unique_lock<std::mutex> lock(mutex);
+                wake.wait(lock, [&] { return stop || generation != seen; });
+                if (stop) return;
+                seen = generation;
+            }
+            runChunks();
+            if (pending.fetch_sub(1, std::memory_order_acq_rel) == 1) {
+                std::lock_guard<std::mutex> lock(mutex);
+                done.notify_one();
+            }
+        }
+    }
+};
+
+BatchPool::BatchPool(int threads) : state_(new State) {
+    const int workers = threads <= 1 ? 0 : (threads > 256 ? 255 : threads - 1);
+    try {
+        state_->workers.reserve(static_cast<std::size_t>(workers));
+        for (int k = 0; k < workers; ++k) state_->workers.emplace_back([s = state_] { s->workerLoop(); });
+    } catch (...) {
+        this->~BatchPool();
+        throw;
+    }
+}
+
+BatchPool::~BatchPool() {
+    if (state_ == nullptr) return;
+    {
+        std::lock_guard<std::mutex> lock(state_->mutex);
+        state_->stop = true;
+    }
+    state_->wake.notify_all();
+    for (std::thread& t : state_->workers) t.join();
+    delete state_;
+    state_ = nullptr;
+}
+
+int BatchPool::threadCount() const noexcept { return static_cast<int>(state_->workers.size()) + 1; }
+
+void BatchPool::run(std::size_t count, std::size_t chunk, void (*work)(void*, std::size_t, std::size_t),
+                    void* context) noexcept {
+    if (count == 0) return;
+    if (chunk == 0) chunk = 1;
+    State& s = *state_;
+    // Too little work to be worth waking anyone: run it here.
+    if (s.workers.empty() || count <= chunk) {
+        work(context, 0, count);
+        return;
+    }
+    std::lock_guard<std::mutex> serial(s.runMutex);
+    {
+        std::lock_guard<std::mutex> lock(s.mutex);
+        s.count = count;
+        s.chunk = chunk;
+        s.work = work;
+        s.context = context;
+        s.next.store(0, std::memory_order_relaxed);
+        s.pending.store(static_cast<int>(s.workers.size()), std::memory_order_relaxed);
+        ++s.generation;
+    }
+    s.wake.notify_all();
+    s.runChunks();
+    std::unique_lock<std::mutex> lock(s.mutex);
+    s.done.wait(lock, [&] { return s.pending.load(std::memory_order_acquire) == 0; });
+}
+
+namespace {
+
+/// Movers per chunk: large enough that the shared cursor is touched rarely (a chunk is tens of
+/// microseconds of work), small enough that two threads finish within a chunk of each other.
+constexpr std::size_t kBatchChunk = 256;
+
+template <class T>
+struct BatchJob {
+    const PreparedMap<T>* map;
+    const MoveInput<T>* inputs;
+    MoveResult<T>* results;
+};
+
+template <class T>
+void runRange(void* context, std::size_t begin, std::size_t end) {
+    const auto& job = *static_cast<const BatchJob<T>*>(context);
+    for (std::size_t k = begin; k < end; ++k) job.results[k] = moveAndSlide(*job.map, job.inputs[k]);
+}
+
+template <class T>
+void batchOf(const PreparedMap<T>& map, const MoveInput<T>* inputs, MoveResult<T>* results, std::size_t count,
+             BatchPool* pool) noexcept {
+    if (inputs == nullptr || results == nullptr || count == 0) return;
+    BatchJob<T> job{&map, inputs, results};
+    if (pool == nullptr) {
+        runRange<T>(&job, 0, count);
+        return;
+    }
+    pool->run(count, kBatchChunk, &runRange<T>, &job);
+}
+
+}  // namespace
+
+void moveAndSlideBatch(const PreparedMap<float>& map, const MoveInput<float>* inputs, MoveResult<float>* results,
+                       std::size_t count, BatchPool* pool) noexcept {
+    batchOf(map, inputs, results, count, pool);
+}
+
+void moveAndSlideBatch(const PreparedMap<double>& map, const MoveInput<double>* inputs,
+                       MoveResult<double>* results, std::size_t count, BatchPool* pool) noexcept {
+    batchOf(map, inputs, results, count, pool);
+}
+
+}  // namespace tilesweep

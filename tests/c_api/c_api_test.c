@@ -1,0 +1,176 @@
+/* SPDX-License-Identifier: MIT */
+/* The C API from C99: a map prepared once, single moves with and without contacts, a batch on
+ * two threads, and every error code for bad input (none aborts). Expected values are worked
+ * out in the comments from ../shared/CONTRACT.md. Exit status 0 when every check holds. */
+#include "tilesweep/tilesweep.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+static int failures = 0;
+
+#define CHECK(cond)                                                       \
+    do {                                                                  \
+        if (!(cond)) {                                                    \
+            fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond); \
+            ++failures;                                                   \
+        }                                                                 \
+    } while (0)
+
+/* 8 columns x 4 rows of 16-pixel tiles: a floor on row 3, a wall at column 6 on row 2. */
+static const uint8_t level[32] = {
+    0, 0, 0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0, 1, 0,
+    1, 1, 1, 1, 1, 1, 1, 1,
+};
+
+static void testFloat(void) {
+    ts_map_desc_f desc = {{0, 0}, {16, 16}, 8, 4, level};
+    ts_map_f* map = NULL;
+    ts_mover_f mover = {{{4, 30}, {12, 16}}, {0, 8}};
+    ts_result_f r;
+    ts_contact_f contacts[8];
+    CHECK(ts_map_create_f(&desc, &map) == TS_OK);
+    CHECK(map != NULL);
+    /* Falls 8 from y = 30 (bottom 46) onto the floor at 48: t = 2/8, stops at y = 32, normal
+     * (0, -1), on tile (0, 3) alone: x in [4, 16] touches column 1 without overlapping it. */
+    CHECK(ts_move_and_slide_f(map, &mover, &r, contacts, 8) == TS_OK);
+    CHECK(r.status == TS_MOVE_BLOCKED);
+    CHECK(r.position.x == 4.0f && r.position.y == 32.0f);
+    CHECK(r.on_ground && r.blocked_y && !r.on_wall && !r.on_ceiling);
+    CHECK(r.contact_count == 1);
+    CHECK(contacts[0].i == 0 && contacts[0].j == 3 && contacts[0].nx == 0 && contacts[0].ny == -1);
+    CHECK(contacts[0].time == 0.25f);
+    /* Walks right 40 along the floor from x = 60 (right edge 72) into the wall at x = 96:
+     * stops at x = 84. */
+    mover.box.pos.x = 60;
+    mover.box.pos.y = 32;
+    mover.displacement.x = 40;
+    mover.displacement.y = 0;
+    CHECK(ts_move_and_slide_f(map, &mover, &r, NULL, 0) == TS_OK);
+    CHECK(r.position.x == 84.0f && r.position.y == 32.0f);
+    CHECK(r.on_wall && r.wall_normal_x == -1 && r.blocked_x && !r.on_ground);
+    /* The wall removed between frames: the same move goes the whole way. */
+    CHECK(ts_map_set_solid_f(map, 6, 2, 0) == TS_OK);
+    CHECK(ts_move_and_slide_f(map, &mover, &r, NULL, 0) == TS_OK);
+    CHECK(r.status == TS_MOVE_MOVED && r.position.x == 100.0f);
+    CHECK(ts_map_set_solid_f(map, 8, 0, 1) == TS_ERROR_CELL_OUT_OF_RANGE);
+    CHECK(ts_map_set_solid_f(NULL, 0, 0, 1) == TS_ERROR_NULL_ARGUMENT);
+    /* Bad movers are refused, with the start position. */
+    mover.displacement.x = NAN;
+    CHECK(ts_move_and_slide_f(map, &mover, &r, NULL, 0) == TS_ERROR_INVALID_INPUT);
+    CHECK(r.status == TS_MOVE_INVALID_INPUT && r.position.x == 60.0f);
+    mover.displacement.x = 1;
+    mover.box.size.x = -1;
+    CHECK(ts_move_and_slide_f(map, &mover, &r, NULL, 0) == TS_ERROR_INVALID_INPUT);
+    CHECK(ts_move_and_slide_f(NULL, &mover, &r, NULL, 0) == TS_ERROR_NULL_ARGUMENT);
+    CHECK(ts_move_and_slide_f(map, NULL, &r, NULL, 0) == TS_ERROR_NULL_ARGUMENT);
+    CHECK(ts_move_and_slide_f(map, &mover, NULL, NULL, 0) == TS_ERROR_NULL_ARGUMENT);
+    ts_map_destroy_f(map);
+    ts_map_destroy_f(NULL);
+}
+
+static void testDoubleAndBatch(void) {
+    ts_map_desc_d desc = {{0, 0}, {16, 16}, 8, 4, level};
+    ts_map_d* map = NULL;
+    ts_pool* pool = NULL;
+    ts_mover_d movers[1000];
+    ts_result_d results[1000];
+    ts_result_d single;
+    size_t k;
+    CHECK(ts_map_create_d(&desc, &map) == TS_OK);
+    CHECK(ts_pool_create(2, &pool) == TS_OK);
+    for (k = 0; k < 1000; ++k) {
+        ts_mover_d m = {{{(double)(k % 100), (double)(k % 37)}, {10, 10}}, {(double)(k % 13) - 6.5, 9.25}};
+        movers[k] = m;
+    }
+    CHECK(ts_move_and_slide_batch_d(map, movers, results, 1000, pool) == TS_OK);
+    for (k = 0; k < 1000; ++k) {
+        CHECK(ts_move_and_slide_d(map, &movers[k], &single, NULL, 0) == TS_OK);
+        CHECK(memcmp(&single.position, &results[k].position, sizeof single.position) == 0);
+        CHECK(single.on_ground == results[k].on_ground && single.contact_count == results[k].contact_count);
+    }
+    /* One bad mover: the batch says so, its status says which, the others are resolved. */
+    movers[500].box.size.y = 0;
+    CHECK(ts_move_and_slide_batch_d(map, movers, results, 1000, NULL) == TS_ERROR_INVALID_INPUT);
+    CHECK(results[500].status == TS_MOVE_INVALID_INPUT);
+    CHECK(results[501].status != TS_MOVE_INVALID_INPUT);
+    CHECK(ts_move_and_slide_batch_d(NULL, movers, results, 1000, pool) == TS_ERROR_NULL_ARGUMENT);
+    CHECK(ts_move_and_slide_batch_d(map, NULL, results, 0, pool) == TS_OK);
+    ts_pool_destroy(pool);
+    ts_pool_destroy(NULL);
+    ts_map_destroy_d(map);
+}
+
+static void testWideBox(void) {
+    /* A box 100 tiles wide lands on 101 floor tiles: more than the inline contacts. */
+    static uint8_t wide[2 * 120];
+    ts_map_desc_f desc = {{0, 0}, {16, 16}, 120, 2, wide};
+    ts_map_f* map = NULL;
+    ts_mover_f mover = {{{8, 0}, {1600, 8}}, {0, 16}};
+    ts_result_f r;
+    static ts_contact_f contacts[200];
+    int32_t bound;
+    int k;
+    for (k = 120; k < 240; ++k) wide[k] = 1;
+    CHECK(ts_map_create_f(&desc, &map) == TS_OK);
+    bound = ts_max_contacts_f(mover.box.size, desc.tile_size);
+    CHECK(bound == 104);
+    CHECK(ts_move_and_slide_f(map, &mover, &r, NULL, 0) == TS_ERROR_CONTACT_BUFFER_TOO_SMALL);
+    CHECK(r.status == TS_MOVE_CONTACT_BUFFER_TOO_SMALL && r.contact_count == bound && r.position.y == 0.0f);
+    CHECK(ts_move_and_slide_f(map, &mover, &r, contacts, bound) == TS_OK);
+    CHECK(r.contact_count == 101 && r.position.y == 8.0f && r.on_ground);
+    for (k = 0; k < 101; ++k) CHECK(contacts[k].i == k && contacts[k].j == 1 && contacts[k].ny == -1);
+    ts_map_destroy_f(map);
+}
+
+static void testBadMaps(void) {
+    ts_map_desc_f desc = {{0, 0}, {0, 16}, 8, 4, level};
+    ts_map_f* map = (ts_map_f*)&desc; /* overwritten with NULL on failure */
+    CHECK(ts_map_create_f(&desc, &map) == TS_ERROR_MAP_NON_POSITIVE_TILE_SIZE && map == NULL);
+    desc.tile_size.x = 16;
+    desc.origin.y = INFINITY;
+    CHECK(ts_map_create_f(&desc, &map) == TS_ERROR_MAP_NON_FINITE_ORIGIN);
+    desc.origin.y = 0;
+    desc.columns = -1;
+    CHECK(ts_map_create_f(&desc, &map) == TS_ERROR_MAP_NEGATIVE_DIMENSIONS);
+    desc.columns = 8;
+    desc.solid = NULL;
+    CHECK(ts_map_create_f(&desc, &map) == TS_ERROR_MAP_NEGATIVE_DIMENSIONS);
+    desc.solid = level;
+    desc.tile_size.x = 0.1f; /* 3 * 0.1f is not a float: edge 3 */
+    CHECK(ts_map_create_f(&desc, &map) == TS_ERROR_MAP_UNREPRESENTABLE_EDGE_X);
+    CHECK(ts_map_create_f(NULL, &map) == TS_ERROR_NULL_ARGUMENT);
+    CHECK(ts_map_create_f(&desc, NULL) == TS_ERROR_NULL_ARGUMENT);
+    CHECK(ts_max_contacts_f(desc.tile_size, desc.tile_size) > 0);
+    {
+        ts_vec2f zero = {0, 1};
+        CHECK(ts_max_contacts_f(zero, desc.tile_size) == 0);
+    }
+}
+
+static void testMessages(void) {
+    int code;
+    for (code = 0; code <= 12; ++code) {
+        const char* m = ts_error_message((ts_error)code);
+        CHECK(m != NULL && strlen(m) > 0 && strcmp(m, "unknown tilesweep error code") != 0);
+    }
+    CHECK(strcmp(ts_error_message((ts_error)99), "unknown tilesweep error code") == 0);
+    CHECK(strstr(ts_error_message(TS_ERROR_MAP_NON_POSITIVE_TILE_SIZE), "tile_size") != NULL);
+}
+
+int main(void) {
+    testFloat();
+    testDoubleAndBatch();
+    testWideBox();
+    testBadMaps();
+    testMessages();
+    if (failures != 0) {
+        fprintf(stderr, "%d checks failed\n", failures);
+        return 1;
+    }
+    printf("c_api_test: all checks hold\n");
+    return 0;
+}
