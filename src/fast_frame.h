@@ -27,9 +27,11 @@
 // range. The range test (admitDoubleFrame) asks that every nonzero input lie in [2^-250, 2^251),
 // that every tile edge origin + k*tile the walk forms be a double computed exactly (all of them
 // multiples of the lowest set bit of origin and tile, below 2^53 of it), that the origin be
-// within 2^47 tiles of zero, and (checked on construction) that the far box edges x + w be
-// doubles. Then every coordinate the solver forms is a double or an exact pair (ExactPair,
-// exact_double.h): a difference of two doubles by TwoSum. So:
+// within 2^47 tiles of zero, and that the inputs of each axis span at most 104 bits. Then every
+// coordinate the solver forms is a double or an exact pair (ExactPair, exact_double.h): a
+// difference of two doubles by TwoSum, or a distance between the far box edge x + w (itself a
+// TwoSum pair) and a tile edge, a three-term sum that one more TwoSum turns into an exact
+// normalized pair (FastAxis::farEdgeMinus, where the span condition is derived). So:
 //   - a pair against a double (a distance against a speed, a coordinate against a tile edge)
 //     compares exactly by monotonic rounding of its high part;
 //   - a time against a time (a pair times a speed against a pair times a speed) is decided by a
@@ -63,7 +65,9 @@ namespace tilesweep::detail {
 /// reciprocal and the product): under 6.05 uA/tile in all. Adding or subtracting the margin
 /// rounds once more, by at most 1.01 uA/tile, and the margin itself is computed 5u low at
 /// worst: 10 covers the 7.07 needed (and half of it does not). Double frames estimate the
-/// distances t as well (the high part of an exact pair, within u|t|): 1.01u|disp| more, 8.08.
+/// distances t as well (the high part of an exact pair, within u|t|): 1.01u|disp| more; and
+/// `high` is the far edge rounded to nearest (|highLow| <= u|high|): 1.01u|high| more, 9.09 in
+/// all, which 10, computed at most 5u low, still covers.
 inline constexpr double kSecondaryRangeErrorUlps = 10;
 
 /// The most bits the fast path's exact doubles may need: a double's 53.
@@ -127,9 +131,10 @@ template <class T>
 /// file), which must be valid (hasValidShape): nonzero inputs in [2^-250, 2^251), so that no product, TwoProduct error term or
 /// filter bound comes near overflow or underflow; every tile edge origin + k*tile with
 /// 0 <= k <= cells + 2 a multiple of 2^g (g the lowest set bit of origin and tile) below
-/// 2^(g + 53), so that k*tile and the sum are exact doubles; and |origin| < 2^47 tile, so that a
-/// cell estimate from a rounded quotient is off by less than one cell. The far box edges are
-/// checked when the frame is built.
+/// 2^(g + 53), so that k*tile and the sum are exact doubles; |origin| < 2^47 tile, so that a
+/// cell estimate from a rounded quotient is off by less than one cell; and a span of at most
+/// 104 bits between the largest coordinate and the lowest set bit of the box and grid inputs,
+/// so that the far box edge's distances to tile edges come out as exact pairs (farEdgeMinus).
 [[nodiscard]] inline bool admitDoubleFrame(const SweepInput<double>& in) noexcept {
     const double values[10] = {in.box.pos.x,     in.box.pos.y,     in.box.size.x,   in.box.size.y,
                                in.displacement.x, in.displacement.y, in.map.origin.x, in.map.origin.y,
@@ -160,6 +165,15 @@ template <class T>
         const int top = std::max(field[o] + 1, field[t] + 1 + cellBits) + 1;
         if (top > std::min(lsb[o], lsb[t]) + 53) return false;
         if (field[o] - field[t] > 46) return false;  // |origin| / tile < 2^(eo + 1 - et) <= 2^47
+        // The far edge's distances to tile edges (FastAxis::farEdgeMinus). With x, w the box's
+        // position and size, h = fl(x + w) and h + l = x + w: |h| <= |x| + |w| < 2^boxTop; for an
+        // edge e (|e| < 2^top), fl(h - e) = a with h - e = a + b, |a| < 2^(m + 1), m = max(top,
+        // boxTop), so |b| <= 2^(m - 52) and |l| <= 2^(boxTop - 53): |b + l| < 2^(m - 51). All of
+        // e, x, w, h, a, b, l are multiples of 2^lowest (the least set bit of x, w, origin and
+        // tile), so b + l is a double, exactly, when m - 51 <= lowest + 53.
+        const int boxTop = std::max(field[a], field[2 + a]) + 2;
+        const int lowest = std::min(std::min(lsb[a], lsb[2 + a]), std::min(lsb[o], lsb[t]));
+        if (std::max(top, boxTop) > lowest + 104) return false;
     }
     return true;
 }
@@ -220,10 +234,13 @@ template <>
     return p - q > kPairProductErrorBound * (std::fabs(p) + std::fabs(q));  // compareProducts' filter
 }
 
-/// One axis of a fast frame: the box's motion and the grid, as exact doubles.
+/// One axis of a fast frame: the box's motion and the grid, as exact doubles. The far box edge
+/// low + size is held as high + highLow: on float frames it is a double (highLow = 0); on double
+/// frames it is the TwoSum pair of low and size, and the distances from it to a tile edge are
+/// three-term sums (farEdgeMinus), made exact pairs again by one more TwoSum.
 struct FastAxis {
     double low;     ///< box edge with the smaller coordinate, at t = 0
-    double high;    ///< low + size
+    double high;    ///< fl(low + size): the far edge, rounded to nearest (exact on float frames)
     double disp;    ///< displacement over the frame
     double speed;   ///< |disp|
     int dir;        ///< sign of disp
@@ -231,22 +248,67 @@ struct FastAxis {
     double tile;    ///< tile size
     std::int64_t cells;
     double invTile; ///< 1 / tile, rounded: for estimates only
-    double size;    ///< high - low, exactly
+    double size;    ///< the box size: low + size is the far edge, exactly
+    double highLow = 0;  ///< low + size - high, exactly (|highLow| <= ulp(high) / 2)
 
     [[nodiscard]] double edge(std::int64_t k) const noexcept { return origin + static_cast<double>(k) * tile; }
+
+    /// The far edge minus the tile edge e, exactly: (high - e) + highLow. For double frames,
+    /// TwoSum gives high - e = a + b exactly, and then b + highLow is exact too: both are
+    /// multiples of 2^L (L the lowest set bit among the box, origin and tile inputs of this axis)
+    /// below 2^(L+53) in magnitude, which admitDoubleFrame checks (|b| <= u|a|, |highLow| <=
+    /// u|high|, and |a|, |high| < 2^(L+105)). A last TwoSum of a and b + highLow returns a
+    /// normalized pair (hi = fl(value)), exact for any doubles: the form compare,
+    /// compareProducts and roundTimeToDouble ask for.
+    template <class Coord>
+    [[nodiscard]] Coord farEdgeMinus(double e) const noexcept {
+        if constexpr (std::is_same<Coord, ExactPair>::value) {
+            const ExactPair s = twoSum(high, -e);
+            if (highLow == 0) return s;
+            return twoSum(s.hi, s.lo + highLow);
+        } else {
+            return high - e;  // float frames: exact in double (admitFloatFrame)
+        }
+    }
+    /// The tile edge e minus the far edge, exactly: the negation of farEdgeMinus (negation is
+    /// exact and keeps a pair normalized).
+    template <class Coord>
+    [[nodiscard]] Coord minusFarEdge(double e) const noexcept {
+        if constexpr (std::is_same<Coord, ExactPair>::value) {
+            const ExactPair s = farEdgeMinus<ExactPair>(e);
+            return {-s.hi, -s.lo};
+        } else {
+            return e - high;
+        }
+    }
+    /// The far edge at t = 0 as a coordinate (exact).
+    template <class Coord>
+    [[nodiscard]] Coord farEdge() const noexcept {
+        if constexpr (std::is_same<Coord, ExactPair>::value) {
+            return {high, highLow};
+        } else {
+            return high;
+        }
+    }
+    /// Whether the far edge lies above the double v, exactly: when high != v the rounded far
+    /// edge is on the same side of v as the exact one (monotonic rounding); when equal, highLow
+    /// decides.
+    [[nodiscard]] bool farEdgeAbove(double v) const noexcept { return high > v || (high == v && highLow > 0); }
+    [[nodiscard]] bool farEdgeAtLeast(double v) const noexcept { return high > v || (high == v && highLow >= 0); }
+
     template <class Coord = double>
     [[nodiscard]] Coord entryDistance(double lo, double hi) const noexcept {
-        return dir > 0 ? differenceOf<Coord>(lo, high) : differenceOf<Coord>(low, hi);
+        return dir > 0 ? minusFarEdge<Coord>(lo) : differenceOf<Coord>(low, hi);
     }
     template <class Coord = double>
     [[nodiscard]] Coord exitDistance(double lo, double hi) const noexcept {
-        return dir > 0 ? differenceOf<Coord>(hi, low) : differenceOf<Coord>(high, lo);
+        return dir > 0 ? differenceOf<Coord>(hi, low) : farEdgeMinus<Coord>(lo);
     }
     [[nodiscard]] bool overlapsAtStart(double lo, double hi) const noexcept {
 #if defined(TILESWEEP_FAULT_TOUCH_OVERLAPS)
-        return low <= hi && high >= lo;  // deliberate fault: touching counted as overlap
+        return low <= hi && farEdgeAtLeast(lo);  // deliberate fault: touching counted as overlap
 #else
-        return low < hi && high > lo;
+        return low < hi && farEdgeAbove(lo);
 #endif
     }
 
@@ -488,7 +550,6 @@ public:
 
     /// Solves the frame into `result`; false when it meets a case it hands to the lattice.
     bool run(const ResolveOutput<T>& out, SweepResult<T>& result) noexcept {
-        if (!admitted_) return false;
         result.startOverlapCount = listStartOverlaps(out.startOverlaps, out.startOverlapCapacity);
         result.position = {start_[0], start_[1]};
         if (axis_[0].dir == 0 && axis_[1].dir == 0) {
@@ -501,7 +562,7 @@ public:
             sweepBothAxes(first);
         } else {
             const int a = axis_[0].dir != 0 ? 0 : 1;
-            sweepOneAxis(a, coordOf<Coord>(axis_[1 - a].low), coordOf<Coord>(axis_[1 - a].high),
+            sweepOneAxis(a, coordOf<Coord>(axis_[1 - a].low), axis_[1 - a].template farEdge<Coord>(),
                          {coordOf<Coord>(0), 1}, first);
         }
         std::int32_t total = 0;
@@ -556,10 +617,9 @@ private:
         const auto o = static_cast<double>(origin);
         const Coord high = sumOf<Coord>(p, w);
         if constexpr (std::is_same<Coord, ExactPair>::value) {
-            if (high.lo != 0) admitted_ = false;  // the far edge is not a double: the lattice's
-            return {p, high.hi, d, std::fabs(d), dir, o, t, cells, 1 / t, w};
+            return {p, high.hi, d, std::fabs(d), dir, o, t, cells, 1 / t, w, high.lo};
         } else {
-            return {p, high, d, std::fabs(d), dir, o, t, cells, 1 / t, w};
+            return {p, high, d, std::fabs(d), dir, o, t, cells, 1 / t, w, 0};
         }
     }
 
@@ -690,11 +750,14 @@ private:
     }
 
     /// Solid cells the box overlaps (open) at the start, by row then column. The candidate
-    /// range comes from the cell estimates (low - origin) * invTile, widened by 8u of their
-    /// magnitude: low and high are exact doubles, so the estimate is within 2.01u (float frames:
-    /// the difference is exact) or 3.01u (double frames: one more rounding) of the quotient,
-    /// relatively. No exact settle: a solid byte in the range is the only thing that costs an
-    /// exact test, the open overlap of the tile with the box on each axis.
+    /// range comes from the cell estimates (low - origin) * invTile, widened by a certified
+    /// bound. Float frames: low and high are exact doubles and so is their difference with the
+    /// origin, so the estimate is within 2.01u of the quotient, relatively; 8u of its magnitude
+    /// covers it. Double frames: fl(v - origin) adds u|v - origin| and the far edge's rounding
+    /// |highLow| <= u|high|, so the estimate is off by at most (4.02u(|v| + |origin|)) / tile;
+    /// the margin 8u(|v| + |origin|) * invTile, computed at most 4u low, covers it. No exact
+    /// settle: a solid byte in the range is the only thing that costs an exact test, the open
+    /// overlap of the tile with the box on each axis.
     std::int32_t listStartOverlaps(Cell* store, std::int32_t capacity) const noexcept {
         std::int64_t from[2];
         std::int64_t to[2];
@@ -702,8 +765,14 @@ private:
             const FastAxis& g = axis_[a];
             const double low = (g.low - g.origin) * g.invTile;
             const double high = (g.high - g.origin) * g.invTile;
-            from[a] = std::max<std::int64_t>(g.clampCell(low - 0x1p-50 * std::fabs(low)), 0);
-            to[a] = std::min<std::int64_t>(g.clampCell(high + 0x1p-50 * std::fabs(high)), g.cells - 1);
+            double lowMargin = 0x1p-50 * std::fabs(low);
+            double highMargin = 0x1p-50 * std::fabs(high);
+            if constexpr (std::is_same<T, double>::value) {
+                lowMargin = 0x1p-50 * (std::fabs(g.low) + std::fabs(g.origin)) * g.invTile;
+                highMargin = 0x1p-50 * (std::fabs(g.high) + std::fabs(g.origin)) * g.invTile;
+            }
+            from[a] = std::max<std::int64_t>(g.clampCell(low - lowMargin), 0);
+            to[a] = std::min<std::int64_t>(g.clampCell(high + highMargin), g.cells - 1);
         }
         const FastAxis& gx = axis_[0];
         const FastAxis& gy = axis_[1];
@@ -728,8 +797,8 @@ private:
     std::int64_t firstCellAhead(int axis) const noexcept {
         const FastAxis& g = axis_[axis];
         if (g.dir > 0) return std::max<std::int64_t>(g.cellOf(g.low), 0);
-        std::int64_t k = g.cellOf(g.high);
-        if (k >= 0 && k < g.cells && g.edge(k) == g.high) --k;
+        std::int64_t k = g.cellOf(g.template farEdge<Coord>());
+        if (k >= 0 && k < g.cells && compare(g.template farEdge<Coord>(), g.edge(k)) == 0) --k;
         return std::min<std::int64_t>(k, g.cells - 1);
     }
 
@@ -841,7 +910,6 @@ private:
     FastAxis axis_[2];
     T start_[2];
     bool refined_ = false;
-    bool admitted_ = true;
 };
 
 }  // namespace tilesweep::detail

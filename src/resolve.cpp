@@ -12,6 +12,7 @@
 #include "fault_injection.h"
 #include "lattice.h"
 #include "wide_int.h"
+#include "zero_move.h"
 
 // Move-and-slide over the tile grid: the frame loop of CONTRACT.md ("One frame through a map").
 //
@@ -424,6 +425,14 @@ SweepResult<T> resolveMove(const SweepInput<T>& input, const ResolveOutput<T>& o
     // The fast path, when the range test admits the frame (fast_frame.h): float frames on exact
     // doubles, double frames on exact pairs under a certified filter. The range test implies
     // the frame is valid, so isValid only runs for the frames it turns away.
+    // A zero move: the start overlaps alone, from the cells under the box (zero_move.h).
+    if (input.displacement.x == 0 && input.displacement.y == 0) {
+        SweepResult<T> result;
+        if (detail::resolveZeroMove(input, output, result)) {
+            lastPath = detail::DecisionPath::Fast;
+            return result;
+        }
+    }
     bool admitted = false;
     if constexpr (std::is_same<T, float>::value) {
         admitted = detail::admitFloatFrame(input);
