@@ -213,6 +213,8 @@ void addAll(std::vector<Property>& out) {
                 {{"hit", 0.2}});
     addClaim<T>(out, "roundingNearFarCornersStaysOutOfHitTiles", "neverEndsInsideATileItDidNotStartIn",
                 Family::FarSubUlp, {{"far-origin", 0.9}, {"fallback", 0.05}});
+    addClaim<T>(out, "neverTunnelsAtHighSpeed", "matchesExactReferenceBitForBit", Family::HighSpeed,
+                {{"hit", 0.5}});
     addClaim<T>(out, "restingContactIsStable", "restingContactIsStable", Family::Resting, {{"touch-at-0", 0.3}});
     addClaim<T>(out, "slidingAlongFloorNeverSnags", "slidingAlongFloorNeverSnags", Family::SeamLanding,
                 {{"seam", 0.1}, {"touch-at-0", 0.2}});
