@@ -5,13 +5,15 @@
 #include <string>
 #include <vector>
 
+#include "tilesweep/scenarios/drawn_families.h"
+#include "tilesweep/scenarios/families.h"
 #include "tilesweep/scene/scene.h"
 
-// The scenario families of the audit: plain std::mt19937_64 generators, one scene per
-// (seed, family, case index, scalar), so that any case is regenerated from those four numbers
-// (the worst scenes are written that way, after the run). Every scene has integer tile sizes
-// and an origin that is a whole number of tiles, so that its map is representable in the scalar
-// type at every magnitude the family uses.
+// The columns of the audit, over the scenario library (scenarios/): its drawn families, the
+// same scenes translated far from the origin, and every family of the property suite, so that
+// the audit measures the population the properties check and a new family lands here too. One
+// scene per (seed, family, case index, scalar), so that any case is regenerated from those four
+// numbers (the worst scenes are written that way, after the run).
 
 namespace tilesweep::audit {
 
@@ -24,6 +26,7 @@ enum class FamilyKind : std::uint8_t {
     Tiny,        ///< displacements below one ulp of the position, free or against a face
     HighSpeed,   ///< 1 to 100 tiles per frame through thin walls
     Far,         ///< uniform, near-corner, tie and seam scenes translated by `magnitude`
+    Suite,       ///< a family of the property suite (`suite`), drawn from a seed (scenarios::buildScene)
 };
 
 /// One column of the report.
@@ -32,6 +35,7 @@ struct Family {
     FamilyKind kind = FamilyKind::Uniform;
     double magnitude = 0;   ///< the translation of the scene (rounded down to whole tiles)
     bool floatToo = true;   ///< false: only the double implementations run it (beyond 2^23)
+    scenarios::Family suite = scenarios::Family::Mixed;  ///< for FamilyKind::Suite
 };
 
 /// Every family of the audit, in report order.

@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <mutex>
 #include <ostream>
 #include <string>
 #include <random>
@@ -741,11 +742,19 @@ rc::Gen<GeneratedScene<T>> genScene(Family family) {
     return out;
 }
 
+/// RapidCheck keeps the generator being run in process-wide state (rc::detail::ImplicitParam), so
+/// two threads must not run generators at once; buildScene takes this lock.
+[[nodiscard]] inline std::mutex& generatorMutex() {
+    static std::mutex mutex;
+    return mutex;
+}
+
 /// The scene that `genScene<T>(family)` draws from `seed` at RapidCheck's size `size`: the same
 /// builders, run once outside any property, so the same (family, seed, size) always gives the
-/// same scene, on every machine with the same standard library.
+/// same scene, on every machine with the same standard library. Thread-safe.
 template <class T>
 [[nodiscard]] GeneratedScene<T> buildScene(Family family, std::uint64_t seed, int size = rc::kNominalSize) {
+    const std::lock_guard<std::mutex> lock(generatorMutex());
     return genScene<T>(family)(rc::Random(seed), size).value();
 }
 
