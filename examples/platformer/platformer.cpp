@@ -4,7 +4,7 @@
 // jump at a wall, dash once past the low wall), so the run is the same every time.
 //
 //     platformer                 prints the trajectory, one line per frame; exit 1 if a check fails
-//     platformer --svg FILE      also draws it with the scene renderer (tilesweep/render.h)
+//     platformer --svg FILE      also draws it with the scene renderer (tilesweep/scene/render.h)
 //     platformer --love-style    prints the frames of examples/love_style/main.lua's scenario
 //                                (a box falls, lands and slides), for that script to compare
 //
@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "tilesweep/mover.h"
-#include "tilesweep/render.h"
-#include "tilesweep/scene.h"
+#include "tilesweep/scene/render.h"
+#include "tilesweep/scene/scene.h"
 
 namespace {
 
