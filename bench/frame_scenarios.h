@@ -1,105 +1,19 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cmath>
-#include <cstddef>
-#include <cstdint>
-#include <random>
-#include <vector>
+// The benchmarks' frames come from the scenario library (tilesweep/scenarios/frames.h).
 
-#include "tilesweep/scene/scene.h"
-#include "tilesweep/sweep.h"
-
-// Pre-generated frames for the side-by-side benchmarks of tilesweep, the inexact twin and the
-// swept-bounds grid resolver (resolve_bench.cpp), and for the decision-agreement count
-// (twin_agreement.cpp): one 256x256 map of 16-px tiles per scenario and kFrameCount independent
-// frames (box, move) on it. Fixed seeds: the same frames every run, on every machine with the
-// same standard library.
+#include "tilesweep/scenarios/frames.h"
 
 namespace tilesweep::bench {
 
-/// Frames per scenario (issue 10 asks for 65,536); a power of two, so the loop index wraps by mask.
-inline constexpr std::size_t kFrameCount = 65536;
-inline constexpr int kFrameMapSize = 256;
-inline constexpr int kFrameTile = 16;
-
-/// Which frames; see makeFrameScenario for what each one is and why it matters.
-enum class FrameKind { Random30, FloorAndWalls, RestingOnFloor, FreeFlight, FarRandom30, ZeroMove };
-
-/// The name used in benchmark names, BM_<Impl>_<name>.
-inline const char* nameOf(FrameKind kind) noexcept {
-    switch (kind) {
-        case FrameKind::Random30: return "Random30";
-        case FrameKind::FloorAndWalls: return "FloorAndWalls";
-        case FrameKind::RestingOnFloor: return "RestingOnFloor";
-        case FrameKind::FreeFlight: return "FreeFlight";
-        case FrameKind::FarRandom30: return "FarRandom30";
-        case FrameKind::ZeroMove: return "ZeroMove";
-    }
-    return "?";
-}
-
-/// A map and kFrameCount frames on it.
-template <class T>
-struct FrameScenario {
-    TileMap<T> map;
-    std::vector<Box<T>> boxes;
-    std::vector<Vec2<T>> moves;
-};
-
-/// Far from the origin: 2^20 on both axes, where a float's ulp is 1/8 px.
-inline constexpr double kFarOrigin = 1048576.0;
-
-/// Builds one scenario. `tilesPerFrame` is the speed of the random-direction moves (Random30,
-/// FloorAndWalls, FreeFlight, FarRandom30); RestingOnFloor and ZeroMove ignore it.
-template <class T>
-FrameScenario<T> makeFrameScenario(FrameKind kind, double tilesPerFrame) {
-    constexpr int n = kFrameMapSize;
-    FrameScenario<T> s;
-    std::mt19937 rng(20240 + static_cast<std::uint32_t>(kind));
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    const double origin = kind == FrameKind::FarRandom30 ? kFarOrigin : 0.0;
-    s.map.origin = {static_cast<T>(origin), static_cast<T>(origin)};
-    s.map.tileSize = {T(kFrameTile), T(kFrameTile)};
-    s.map.columns = n;
-    s.map.rows = n;
-    s.map.solid.assign(static_cast<std::size_t>(n) * n, 0);
-    const auto at = [](int i, int j) { return static_cast<std::size_t>(j) * n + static_cast<std::size_t>(i); };
-    const bool random30 = kind == FrameKind::Random30 || kind == FrameKind::FarRandom30 || kind == FrameKind::ZeroMove;
-    const bool floors = kind == FrameKind::FloorAndWalls || kind == FrameKind::RestingOnFloor;
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            bool solid = false;
-            if (random30) solid = unit(rng) < 0.3;
-            // Floors every 12 rows with gaps, walls every 20 columns with doors (as makeScenario).
-            if (floors) solid = (j % 12 == 11 && i % 9 != 4) || (i % 20 == 19 && j % 12 < 8);
-            s.map.solid[at(i, j)] = solid ? 1 : 0;
-        }
-    // Boxes start in a 64x64-cell window in the middle, 12x12 px, inside an empty cell.
-    std::uniform_int_distribution<int> cell(n / 2 - 30, n / 2 + 29);
-    s.boxes.reserve(kFrameCount);
-    s.moves.reserve(kFrameCount);
-    while (s.boxes.size() < kFrameCount) {
-        const int i = cell(rng);
-        const int j = cell(rng);
-        if (kind == FrameKind::RestingOnFloor) {
-            // Standing exactly on a floor tile's top (y + h == its top edge), walking at up to
-            // 2 px/frame, with one frame of gravity (900 px/s^2 at 60 Hz: 0.25 px) pulling down.
-            if (j % 12 != 11 || s.map.solid[at(i, j)] == 0) continue;
-            s.boxes.push_back({{static_cast<T>(i * kFrameTile + 4 * unit(rng)), static_cast<T>(j * kFrameTile - 12)},
-                               {T(12), T(12)}});
-            s.moves.push_back({static_cast<T>(4 * unit(rng) - 2), T(0.25)});
-            continue;
-        }
-        if (s.map.solid[at(i, j)] != 0) continue;
-        const double angle = unit(rng) * 6.283185307179586;
-        const double speed = kind == FrameKind::ZeroMove ? 0.0 : tilesPerFrame * kFrameTile;
-        s.boxes.push_back({{static_cast<T>(origin + i * kFrameTile + 2 + unit(rng)),
-                            static_cast<T>(origin + j * kFrameTile + 2 + unit(rng))},
-                           {T(12), T(12)}});
-        s.moves.push_back({static_cast<T>(speed * std::cos(angle)), static_cast<T>(speed * std::sin(angle))});
-    }
-    return s;
-}
+using scenarios::FrameKind;
+using scenarios::FrameScenario;
+using scenarios::kFarOrigin;
+using scenarios::kFrameCount;
+using scenarios::kFrameMapSize;
+using scenarios::kFrameTile;
+using scenarios::makeFrameScenario;
+using scenarios::nameOf;
 
 }  // namespace tilesweep::bench

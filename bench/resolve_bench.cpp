@@ -41,47 +41,15 @@ constexpr int kSamples = 512;
 enum class Level { Random30, FloorAndWalls };
 
 /// A map, and kSamples boxes that start in empty cells near its middle, each with a move of
-/// the given speed in a random direction. The same seed gives the same scenes every run.
+/// the given speed in a random direction (the scenario library's map-size scenarios).
 template <class T>
-struct Scenario {
-    tilesweep::TileMap<T> map;
-    std::vector<Box<T>> boxes;
-    std::vector<Vec2<T>> moves;
-};
+using Scenario = tilesweep::scenarios::FrameScenario<T>;
 
 template <class T>
 Scenario<T> makeScenario(int size, Level level, double tilesPerFrame, std::uint32_t seed = 12345) {
-    Scenario<T> s;
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    s.map.origin = {0, 0};
-    s.map.tileSize = {T(kTile), T(kTile)};
-    s.map.columns = size;
-    s.map.rows = size;
-    s.map.solid.assign(static_cast<std::size_t>(size) * static_cast<std::size_t>(size), 0);
-    for (int j = 0; j < size; ++j)
-        for (int i = 0; i < size; ++i) {
-            bool solid = false;
-            if (level == Level::Random30) solid = unit(rng) < 0.3;
-            // Floors every 12 rows with gaps, walls every 20 columns with doors.
-            if (level == Level::FloorAndWalls) solid = (j % 12 == 11 && i % 9 != 4) || (i % 20 == 19 && j % 12 < 8);
-            s.map.solid[static_cast<std::size_t>(j) * static_cast<std::size_t>(size) + static_cast<std::size_t>(i)] = solid ? 1 : 0;
-        }
-    // Boxes near the middle (a 64x64-cell window), so the motion is the same on every map size.
-    const int lo = size / 2 - std::min(size / 2, 32) + 2;
-    const int hi = size / 2 + std::min(size / 2, 32) - 2;
-    std::uniform_int_distribution<int> cell(lo, hi - 1);
-    while (static_cast<int>(s.boxes.size()) < kSamples) {
-        const int i = cell(rng);
-        const int j = cell(rng);
-        if (s.map.solid[static_cast<std::size_t>(j) * static_cast<std::size_t>(size) + static_cast<std::size_t>(i)] != 0) continue;
-        const double angle = unit(rng) * 6.283185307179586;
-        const double speed = tilesPerFrame * kTile;
-        s.boxes.push_back({{static_cast<T>(i * kTile + 2 + unit(rng)), static_cast<T>(j * kTile + 2 + unit(rng))},
-                           {T(12), T(12)}});
-        s.moves.push_back({static_cast<T>(speed * std::cos(angle)), static_cast<T>(speed * std::sin(angle))});
-    }
-    return s;
+    using tilesweep::scenarios::FrameKind;
+    return tilesweep::scenarios::makeMapScenario<T>(
+        size, level == Level::Random30 ? FrameKind::Random30 : FrameKind::FloorAndWalls, tilesPerFrame, kSamples, seed);
 }
 
 template <class T>

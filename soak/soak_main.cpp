@@ -24,20 +24,22 @@
 #include <cstring>
 #include <fstream>
 #include <random>
+#include <utility>
 #include <string>
 #include <vector>
 
 #include "frame_safety.h"
 #include "fuzz_check.h"
 #include "tilesweep/resolve.h"
+#include "tilesweep/scenarios/levels.h"
 #include "tilesweep/tile_map.h"
 
 namespace {
 
 using namespace tilesweep;
 
-constexpr std::int32_t kColumns = 128;
-constexpr std::int32_t kRows = 48;
+constexpr std::int32_t kColumns = scenarios::kLevelColumns;
+constexpr std::int32_t kRows = scenarios::kLevelRows;
 constexpr std::int64_t kTicksPerLevel = 4000;     // a new level (and new walkers) this often
 constexpr std::int32_t kListCapacity = 256;       // contacts or overlaps of one small box
 constexpr int kMaxReportedViolations = 10;
@@ -102,40 +104,10 @@ public:
     void newLevel() {
         ++counters_.levels;
         Level<T>& level = level_;
-        level.solid.assign(static_cast<std::size_t>(kColumns * kRows), 0);
-        auto set = [&](std::int32_t i, std::int32_t j) {
-            if (i >= 0 && i < kColumns && j >= 0 && j < kRows) level.solid[static_cast<std::size_t>(j * kColumns + i)] = 1;
-        };
-        for (std::int32_t i = 0; i < kColumns; ++i) set(i, 0), set(i, kRows - 1);
-        for (std::int32_t j = 0; j < kRows; ++j) set(0, j), set(kColumns - 1, j);
-        // Ground three cells thick, broken by pits that drop to the bottom border.
-        for (std::int32_t i = 1; i < kColumns - 1; ++i) {
-            if (uniform(0, 1) < 0.06) {
-                i += static_cast<std::int32_t>(uniform(2, 6));
-                continue;
-            }
-            for (std::int32_t j = kRows - 4; j < kRows - 1; ++j) set(i, j);
-        }
-        for (int k = 0; k < 45; ++k) {  // platforms
-            const auto i = static_cast<std::int32_t>(uniform(1, kColumns - 10));
-            const auto j = static_cast<std::int32_t>(uniform(4, kRows - 8));
-            const auto length = static_cast<std::int32_t>(uniform(2, 11));
-            for (std::int32_t n = 0; n < length; ++n) set(i + n, j);
-        }
-        for (int k = 0; k < 12; ++k) {  // walls standing on the ground
-            const auto i = static_cast<std::int32_t>(uniform(2, kColumns - 3));
-            const auto height = static_cast<std::int32_t>(uniform(2, 9));
-            for (std::int32_t n = 1; n <= height; ++n) set(i, kRows - 4 - n);
-        }
-
-        // Tile sizes and origins a game might use, near and far from the origin; far away the
-        // positions are coarse (the ulp at 2^20 is 1/8 for float) and every frame rounds.
-        const T tiles[] = {T(16), T(8), T(32), T(12.5), T(0.75)};
-        const T tile = tiles[static_cast<std::size_t>(uniform(0, 5))];
-        const T far = sizeof(T) == 4 ? T(1048576) : T(1099511627776.0);
-        const T origins[] = {T(0), T(-640), T(0.5), far, -far};
-        const T origin = origins[static_cast<std::size_t>(uniform(0, 5))];
-        level.map = {{origin, origin * T(0.5)}, {tile, tile}, kColumns, kRows, level.solid.data()};
+        // The level's cells, tile size and origin from the scenario library (same draws, same order).
+        scenarios::PlatformLevel<T> built = scenarios::buildPlatformLevel<T>(random_);
+        level.solid = std::move(built.solid);
+        level.map = {built.origin, {built.tile, built.tile}, kColumns, kRows, level.solid.data()};
         if (validateTileMap(level.map) != MapError::None) level.map.origin = {T(0), T(0)};
         level.edges = checks::computeEdges(level.map);
 
