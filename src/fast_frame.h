@@ -550,7 +550,11 @@ public:
 
     /// Solves the frame into `result`; false when it meets a case it hands to the lattice.
     bool run(const ResolveOutput<T>& out, SweepResult<T>& result) noexcept {
-        result.startOverlapCount = listStartOverlaps(out.startOverlaps, out.startOverlapCapacity);
+        // A short move: the solid cells of the swept bounds, listed once, serve the start
+        // overlaps and both steps (collectNear); otherwise the walk.
+        const bool nearOnly = collectNear(std::max<std::int32_t>(out.contactCapacity, 0));
+        result.startOverlapCount = nearOnly ? startOverlapsOfNear(out.startOverlaps, out.startOverlapCapacity)
+                                            : listStartOverlaps(out.startOverlaps, out.startOverlapCapacity);
         result.position = {start_[0], start_[1]};
         if (axis_[0].dir == 0 && axis_[1].dir == 0) {
             result.status = Status::Moved;
@@ -559,11 +563,20 @@ public:
         Coord finalPos[2] = {sumOf<Coord>(axis_[0].low, axis_[0].disp), sumOf<Coord>(axis_[1].low, axis_[1].disp)};
         Hits first{out.contacts, std::max<std::int32_t>(out.contactCapacity, 0)};
         if (axis_[0].dir != 0 && axis_[1].dir != 0) {
-            sweepBothAxes(first);
+            if (nearOnly) {
+                for (std::int32_t n = 0; n < nearCount_; ++n) testAndRecord(near_[n].i, near_[n].j, first);
+            } else {
+                sweepBothAxes(first);
+            }
         } else {
             const int a = axis_[0].dir != 0 ? 0 : 1;
-            sweepOneAxis(a, coordOf<Coord>(axis_[1 - a].low), axis_[1 - a].template farEdge<Coord>(),
-                         {coordOf<Coord>(0), 1}, first);
+            const Coord heldLow = coordOf<Coord>(axis_[1 - a].low);
+            const Coord heldHigh = axis_[1 - a].template farEdge<Coord>();
+            if (nearOnly) {
+                sweepOneAxisNear(a, heldLow, heldHigh, {coordOf<Coord>(0), 1}, first);
+            } else {
+                sweepOneAxis(a, heldLow, heldHigh, {coordOf<Coord>(0), 1}, first);
+            }
         }
         std::int32_t total = 0;
         if (first.any) {
@@ -576,8 +589,13 @@ public:
                 const int held = 1 - free;
                 const std::int32_t used = std::min(first.count, first.capacity);
                 Hits second{out.contacts + used, first.capacity - used};
-                sweepOneAxis(free, touchLow(held, first.touch[held]), touchHigh(held, first.touch[held]), first.time,
-                             second);
+                if (nearOnly) {
+                    sweepOneAxisNear(free, touchLow(held, first.touch[held]), touchHigh(held, first.touch[held]),
+                                     first.time, second);
+                } else {
+                    sweepOneAxis(free, touchLow(held, first.touch[held]), touchHigh(held, first.touch[held]),
+                                 first.time, second);
+                }
                 if (second.any) {
                     if (!finishStep(second)) return false;
                     total += second.count;
@@ -906,10 +924,95 @@ private:
         return axis == 0 ? Normal{against, 0} : Normal{0, against};
     }
 
+    /// The most cells of swept bounds that collectNear scans, and the most solid ones it keeps.
+    static constexpr std::int64_t kNearArea = 12;
+
+    /// Lists the solid cells of the frame's swept bounds, row by row, when those bounds hold at
+    /// most kNearArea cells and at most `contactCapacity` of them are solid; false otherwise
+    /// (the walk then runs). Every tile that can block either step, or that the box overlaps at
+    /// the start, lies in them: on each axis the box covers [min(low, low + disp), max(high,
+    /// high + disp)] over the frame, and step 2 stays inside that (its held axis is at a touch
+    /// position between the start and the end, its free axis on the rest of its own motion). The
+    /// cell range is estimated from (v - origin) * invTile with a margin of 8u(|low| + |high| +
+    /// |disp| + |origin|) * invTile: the coordinates (low + disp, rounded on double frames, and
+    /// high, rounded on double frames) are within 2u of that sum of magnitudes, the difference,
+    /// the reciprocal and the product add 3.02u of it, all over tile: 5.03u < 8u(1 - 4u), the
+    /// margin with its own roundings, and the rounding of the widened estimate adds u more. So
+    /// the range is a superset; extra cells are tested exactly and rejected. With every tile
+    /// tested, the earliest hits are the same set as the walk's, and none is cut short
+    /// (solid cells <= capacity), so the stored contacts match too.
+    bool collectNear(std::int32_t contactCapacity) noexcept {
+        std::int64_t from[2];
+        std::int64_t to[2];
+        for (int a = 0; a < 2; ++a) {
+            const FastAxis& g = axis_[a];
+            const double lowEnd = std::min(g.low, g.low + g.disp);
+            const double highEnd = std::max(g.high, g.high + g.disp);
+            const double margin =
+                0x1p-50 * (((std::fabs(g.low) + std::fabs(g.high)) + g.speed) + std::fabs(g.origin)) * g.invTile;
+            from[a] = std::max<std::int64_t>(g.clampCell((lowEnd - g.origin) * g.invTile - margin), 0);
+            to[a] = std::min<std::int64_t>(g.clampCell((highEnd - g.origin) * g.invTile + margin), g.cells - 1);
+            if (from[a] > to[a]) {
+                nearCount_ = 0;  // the swept bounds miss the map: nothing to find
+                return true;
+            }
+        }
+        if ((to[0] - from[0] + 1) * (to[1] - from[1] + 1) > kNearArea) return false;
+#if defined(TILESWEEP_FAULT_BROADPHASE_SHORT)
+        --to[1];  // deliberate fault: the swept bounds one row short (the walk's twin)
+#endif
+        std::int32_t count = 0;
+        for (std::int64_t j = from[1]; j <= to[1]; ++j) {
+            const std::uint8_t* row = map_.solid + j * map_.columns;
+            for (std::int64_t i = from[0]; i <= to[0]; ++i) {
+                if (row[i] == 0) continue;
+                if (count >= contactCapacity) return false;
+                near_[count++] = {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)};
+            }
+        }
+        nearCount_ = count;
+        return true;
+    }
+
+    /// The start overlaps among the listed cells (collectNear), which hold all of them, in the
+    /// same row-then-column order.
+    std::int32_t startOverlapsOfNear(Cell* store, std::int32_t capacity) const noexcept {
+        std::int32_t count = 0;
+        for (std::int32_t n = 0; n < nearCount_; ++n) {
+            const Cell c = near_[n];
+            if (!axis_[1].overlapsAtStart(axis_[1].edge(c.j), axis_[1].edge(c.j + 1)) ||
+                !axis_[0].overlapsAtStart(axis_[0].edge(c.i), axis_[0].edge(c.i + 1)))
+                continue;
+            if (count < capacity) store[count] = c;
+            ++count;
+        }
+        return count;
+    }
+
+    /// sweepOneAxis over the listed cells: the tiles overlapping the held span whose entry time
+    /// on `axis` lies in [from, 1), at the earliest such time (the walk's first column that has
+    /// any: entry times grow strictly along the motion).
+    void sweepOneAxisNear(int axis, Coord heldLow, Coord heldHigh, const FastTime<Coord>& from, Hits& hits) noexcept {
+        const FastAxis& ga = axis_[axis];
+        const FastAxis& go = axis_[1 - axis];
+        for (std::int32_t n = 0; n < nearCount_; ++n) {
+            const std::int64_t k = axis == 0 ? near_[n].i : near_[n].j;
+            const std::int64_t o = axis == 0 ? near_[n].j : near_[n].i;
+            if (!(compare(heldLow, go.edge(o + 1)) < 0 && compare(heldHigh, go.edge(o)) > 0)) continue;
+            const Coord entry = ga.entryDistance<Coord>(ga.edge(k), ga.edge(k + 1));
+            if (compare(entry, ga.speed) >= 0) continue;  // entered at t >= 1
+            const FastTime<Coord> at{entry, ga.speed};
+            if (compareTimes(at, from) < 0) continue;  // overlapping already at `from`
+            add(hits, near_[n], axis == 0 ? Axis::X : Axis::Y, at, touchEdge(axis, k));
+        }
+    }
+
     const TileMapView<T>& map_;
     FastAxis axis_[2];
     T start_[2];
     bool refined_ = false;
+    std::int32_t nearCount_ = 0;
+    Cell near_[kNearArea];
 };
 
 }  // namespace tilesweep::detail

@@ -418,21 +418,16 @@ SweepResult<T> solveOnLattice(const SweepInput<T>& in, const ResolveOutput<T>& o
     });
 }
 
-}  // namespace
-
+/// Every frame but the zero moves resolveZeroMove settles: out of line, so that the early exit
+/// pays for none of its stack frame.
 template <class T>
-SweepResult<T> resolveMove(const SweepInput<T>& input, const ResolveOutput<T>& output) noexcept {
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+SweepResult<T> resolveMoving(const SweepInput<T>& input, const ResolveOutput<T>& output) noexcept {
     // The fast path, when the range test admits the frame (fast_frame.h): float frames on exact
     // doubles, double frames on exact pairs under a certified filter. The range test implies
     // the frame is valid, so isValid only runs for the frames it turns away.
-    // A zero move: the start overlaps alone, from the cells under the box (zero_move.h).
-    if (input.displacement.x == 0 && input.displacement.y == 0) {
-        SweepResult<T> result;
-        if (detail::resolveZeroMove(input, output, result)) {
-            lastPath = detail::DecisionPath::Fast;
-            return result;
-        }
-    }
     bool admitted = false;
     if constexpr (std::is_same<T, float>::value) {
         admitted = detail::admitFloatFrame(input);
@@ -456,6 +451,21 @@ SweepResult<T> resolveMove(const SweepInput<T>& input, const ResolveOutput<T>& o
     }
     lastPath = detail::DecisionPath::Exact;
     return solveOnLattice(input, output);
+}
+
+}  // namespace
+
+template <class T>
+SweepResult<T> resolveMove(const SweepInput<T>& input, const ResolveOutput<T>& output) noexcept {
+    // A zero move: the start overlaps alone, from the cells under the box (zero_move.h).
+    if (input.displacement.x == 0 && input.displacement.y == 0) {
+        SweepResult<T> result;
+        if (detail::resolveZeroMove(input, output, result)) {
+            lastPath = detail::DecisionPath::Fast;
+            return result;
+        }
+    }
+    return resolveMoving(input, output);
 }
 
 namespace detail {

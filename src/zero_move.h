@@ -16,70 +16,103 @@
 //        left to the ordinary path, where underflow would break the relative bound);
 //   qh = fl(fl(fl(x - o) + w) / t), within u|x - o| / t of Qh from the first rounding, and
 //        (2u + u^2)|Qh| + O(u^2) from the other two: under 1.01u|Ql| + 2.01u|Qh|.
-// The margins el = 4u|ql| and eh = 4u(|ql| + |qh|) exceed those by more than the rounding of
-// ql -+ el and qh -+ eh (one more u|q| each); so when floor(ql - el) == floor(ql + el), that is
-// floor(Ql), and likewise for the ceiling of Qh. When either is undecided (a box edge within a
-// few ulps of a grid line, or on one: a box resting on a floor), the frame takes the ordinary
-// path, which settles it exactly. Float inputs are widened to double (exactly) and take the
-// same test. Inputs must be valid (finite, sizes > 0); estimates beyond +-2^62 are undecided.
+// When ql and qh lie far enough from an integer (margins below, at zeroMoveCells), floor(Ql) =
+// floor(ql) and ceil(Qh) - 1 = floor(qh). When either is undecided (a box edge within a few ulps
+// of a grid line, or on one: a box resting on a floor), the frame takes the ordinary path, which
+// settles it exactly. Float inputs are widened to double (exactly) and take the
+// same test. Inputs must be valid (finite, sizes > 0); estimates beyond +-2^52 are undecided.
 
 #include <cmath>
 #include <cstdint>
 #include <limits>
 
+#include "exact_double.h"
 #include "tilesweep/resolve.h"
 
 namespace tilesweep::detail {
 
-/// floor(v) for a finite |v| < 2^62 (no libm call: x86-64's baseline has no rounding instruction).
+/// floor(v) for a finite |v| < 2^52 (no libm call: x86-64's baseline has no rounding instruction).
 [[nodiscard]] inline std::int64_t zeroMoveFloor(double v) noexcept {
     auto k = static_cast<std::int64_t>(v);  // toward zero
     if (static_cast<double>(k) > v) --k;
     return k;
 }
 
+/// Whether num = n * t exactly, for a double integer n = fl(num / t): the product rounds to num
+/// and its rounding error (TwoProduct, exact_double.h) is zero. Away from underflow only.
+[[nodiscard]] inline bool isExactQuotient(double num, double t, double n) noexcept {
+    if (num == 0) return true;  // n = fl(0 / t) = 0
+    if (!(std::fabs(num) > 0x1p-900 && std::fabs(num) < 0x1p900)) return false;
+    const double p = n * t;
+    return p == num && productError(n, t, p) == 0;
+}
+
+/// zeroMoveCells outside its bands: a box edge exactly on a grid line (a box resting on a floor,
+/// snapped to a tile) is settled when the rounded quotient is an integer n and x - o, x - o + w
+/// and n*t are exact, so that Q = n; false otherwise. Out of line: the early exit stays small.
+#if defined(__GNUC__)
+__attribute__((noinline, cold))
+#endif
+inline bool settleOnLine(double x, double w, double o, double t, double a, double b, double ql, double qh,
+                         double rl, double rh, double el, double eh, std::int64_t& last) noexcept {
+    const bool exactA = twoSum(x, -o).lo == 0;
+    if (!(rl > el && rl < 1 - el) && !(rl == 0 && exactA && isExactQuotient(a, t, ql))) return false;
+    // x on line n: cell n = floor(ql) is the first whose interior meets the box's, as found.
+    if (rh > eh && rh < 1 - eh) return true;
+    if (!(rh == 0 && exactA && twoSum(a, w).lo == 0 && isExactQuotient(b, t, qh))) return false;
+    last -= 1;  // x + w on line n: cell n - 1 is the last
+    return true;
+}
+
 /// The cells [from, to] (clamped to the map; empty when from > to) whose open interior meets
 /// the box's on one axis; false when a bound is too close to a grid line to be sure.
-[[nodiscard]] inline bool zeroMoveCells(double x, double w, double o, double t, std::int64_t cells,
-                                        std::int64_t& from, std::int64_t& to) noexcept {
+///
+/// With f = floor(ql) (exact: |ql| < 2^52) and r = fl(ql - f) (exact but when ql lies in
+/// (-1, 0), then within 2^-54), Ql - f lies within r -+ (2^-54 + 2.02u|ql|). So r > el and
+/// r < fl(1 - el), with el = fl(2^-50|ql| + 2^-52) >= (8u|ql| + 2^-52)(1 - u), put Ql strictly
+/// inside (f, f + 1): floor(Ql) = f. The same with eh = fl(2^-50(|ql| + |qh|) + 2^-52) puts Qh
+/// strictly inside (g, g + 1), g = floor(qh), so that ceil(Qh) - 1 = g. Outside those bands the
+/// one case settled here is an exact one: Q an integer (isExactQuotient).
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+inline bool zeroMoveCells(double x, double w, double o, double t, std::int64_t cells, std::int64_t& from,
+                          std::int64_t& to) noexcept {
     const double a = x - o;
     const double b = a + w;
     const double ql = a / t;
     const double qh = b / t;
+    constexpr double kReach = 0x1p52;
+    // NaN (an overflowing x - o) fails this too.
+    if (!(std::fabs(ql) < kReach && std::fabs(qh) < kReach)) return false;
     // A quotient near underflow loses its relative error bound (0 for a nonzero Ql, say).
     if ((std::fabs(ql) < 0x1p-900 && a != 0) || (std::fabs(qh) < 0x1p-900 && b != 0)) return false;
-    const double el = 0x1p-51 * std::fabs(ql);
-    const double eh = 0x1p-51 * (std::fabs(ql) + std::fabs(qh));
-    const double lowA = ql - el;
-    const double lowB = ql + el;
-    const double highA = qh - eh;
-    const double highB = qh + eh;
-    constexpr double kReach = 0x1p62;
-    // NaN (an overflowing x - o) fails these too.
-    if (!(lowA > -kReach && lowB < kReach && highA > -kReach && highB < kReach)) return false;
-    const std::int64_t i0 = zeroMoveFloor(lowA);
-    if (zeroMoveFloor(lowB) != i0) return false;
-    // ceil(v) - 1 = -floor(-v) - 1.
-    const std::int64_t i1 = -zeroMoveFloor(-highB) - 1;
-    if (-zeroMoveFloor(-highA) - 1 != i1) return false;
+    const std::int64_t i0 = zeroMoveFloor(ql);
+    const std::int64_t i1 = zeroMoveFloor(qh);
+    const double el = 0x1p-50 * std::fabs(ql) + 0x1p-52;
+    const double eh = 0x1p-50 * (std::fabs(ql) + std::fabs(qh)) + 0x1p-52;
+    const double rl = ql - static_cast<double>(i0);
+    const double rh = qh - static_cast<double>(i1);
+    std::int64_t last = i1;
+    if (!(rl > el && rl < 1 - el && rh > eh && rh < 1 - eh) &&
+        !settleOnLine(x, w, o, t, a, b, ql, qh, rl, rh, el, eh, last))
+        return false;
     from = i0 < 0 ? 0 : i0;
-    to = i1 >= cells ? cells - 1 : i1;
+    to = last >= cells ? cells - 1 : last;
     return true;
 }
 
-/// Whether in's values are all finite and its sizes positive, and its map header sane: isValid
-/// (validate.cpp) inline, for the early exit.
+/// isValid (validate.cpp) inline, for the early exit: v - v is +0 for a finite v and NaN for
+/// an infinity or a NaN, so the sum of eight of them is zero iff all eight are finite.
 template <class T>
 [[nodiscard]] inline bool isValidInline(const SweepInput<T>& in) noexcept {
     const TileMapView<T>& map = in.map;
+    const T x = in.box.pos.x, y = in.box.pos.y, w = in.box.size.x, h = in.box.size.y;
+    const T ox = map.origin.x, oy = map.origin.y, tx = map.tileSize.x, ty = map.tileSize.y;
+    const T finite = ((x - x) + (y - y)) + ((w - w) + (h - h)) + ((ox - ox) + (oy - oy)) + ((tx - tx) + (ty - ty));
     const std::int64_t cells = static_cast<std::int64_t>(map.columns) * map.rows;
-    constexpr T kMax = std::numeric_limits<T>::max();
-    // |v| <= max is false for NaN and infinities; v > 0 && v <= max for positive finite sizes.
-    return std::fabs(in.box.pos.x) <= kMax && std::fabs(in.box.pos.y) <= kMax && in.box.size.x > 0 &&
-           in.box.size.x <= kMax && in.box.size.y > 0 && in.box.size.y <= kMax &&
-           std::fabs(map.origin.x) <= kMax && std::fabs(map.origin.y) <= kMax && map.tileSize.x > 0 &&
-           map.tileSize.x <= kMax && map.tileSize.y > 0 && map.tileSize.y <= kMax && map.columns >= 0 &&
-           map.rows >= 0 && cells <= kMaxCells && (cells == 0 || map.solid != nullptr);
+    return finite == 0 && w > 0 && h > 0 && tx > 0 && ty > 0 && map.columns >= 0 && map.rows >= 0 &&
+           cells <= kMaxCells && (cells == 0 || map.solid != nullptr);
 }
 
 /// The zero-move frame (see the top of this file); false when it must take the ordinary path
