@@ -14,6 +14,9 @@ target_compile_options(tilesweep_warnings INTERFACE
     # Fused multiply-add changes the rounding of a*b+c; the oracles, the corpus replay and the
     # bit-for-bit comparisons assume every product and sum is rounded on its own (box2d, earcut).
     $<IF:$<STREQUAL:${TILESWEEP_FAULT},FMA>,-ffp-contract=fast,-ffp-contract=off>
+    # GoogleTest's TYPED_TEST_SUITE(Suite, Types) leaves its variadic argument empty, which clang's
+    # -Wpedantic reports at every use.
+    $<$<CXX_COMPILER_ID:Clang>:-Wno-gnu-zero-variadic-macro-arguments>
     $<$<BOOL:${TILESWEEP_WERROR}>:-Werror>)
 
 
@@ -22,4 +25,9 @@ if(TILESWEEP_SANITIZE)
     # compiled here (box2d).
     add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
     add_link_options(-fsanitize=address,undefined)
+    # A C program linked by clang against the C++ library (tests/c_api/) needs the sanitizers' C++
+    # runtime and libstdc++, which the C driver leaves out.
+    if(CMAKE_C_COMPILER_ID MATCHES "Clang")
+        add_link_options($<$<LINK_LANGUAGE:C>:-fsanitize-link-c++-runtime> $<$<LINK_LANGUAGE:C>:-lstdc++>)
+    endif()
 endif()

@@ -252,9 +252,10 @@ TEST(ExactResolve, landingAcrossASeamThenSlidingAlongTheFloor) {
             }
         }
         SCOPED_TRACE("frame " + std::to_string(k));
-        EXPECT_EQ(frames[k].start.x, Rational(x));
-        expectContacts(frames[k], expected);
-        expectPosition(frames[k], Rational(x + 12), Rational(36));
+        const auto frame = static_cast<std::size_t>(k);
+        EXPECT_EQ(frames[frame].start.x, Rational(x));
+        expectContacts(frames[frame], expected);
+        expectPosition(frames[frame], Rational(x + 12), Rational(36));
     }
 }
 
