@@ -15,21 +15,28 @@
 
 namespace tilesweep {
 
+// The hand-off. A batch opens (`open`), wakes the workers and works through the chunks itself;
+// a worker that wakes joins by counting itself in `active` and then checking `open`. When the
+// caller runs out of chunks it closes the batch and waits only for the workers that joined (all
+// seq_cst: either the caller sees a worker's join, or that worker sees the batch closed and
+// leaves). So a worker the scheduler has not run yet never holds the caller up: on a loaded
+// machine the caller may simply do all the work.
 struct BatchPool::State {
     std::vector<std::thread> workers;
     std::mutex runMutex;  // one batch at a time
-    std::mutex mutex;     // guards generation, stop and the job fields below
+    std::mutex mutex;     // guards generation and stop; pairs with the two condition variables
     std::condition_variable wake;
     std::condition_variable done;
     std::uint64_t generation = 0;
     bool stop = false;
-    // The current job.
+    // The current batch: written before `open` is set, read after it is seen set.
     std::size_t count = 0;
     std::size_t chunk = 1;
     void (*work)(void*, std::size_t, std::size_t) = nullptr;
     void* context = nullptr;
     std::atomic<std::size_t> next{0};
-    std::atomic<int> pending{0};
+    std::atomic<bool> open{false};
+    std::atomic<int> active{0};
 
     void runChunks() noexcept {
         for (;;) {
@@ -37,6 +44,13 @@ struct BatchPool::State {
             if (begin >= count) return;
             const std::size_t end = count - begin < chunk ? count : begin + chunk;
             work(context, begin, end);
+        }
+    }
+
+    void leave() noexcept {
+        if (active.fetch_sub(1) == 1) {
+            std::lock_guard<std::mutex> lock(mutex);
+            done.notify_one();
         }
     }
 
@@ -49,11 +63,9 @@ struct BatchPool::State {
                 if (stop) return;
                 seen = generation;
             }
-            runChunks();
-            if (pending.fetch_sub(1, std::memory_order_acq_rel) == 1) {
-                std::lock_guard<std::mutex> lock(mutex);
-                done.notify_one();
-            }
+            active.fetch_add(1);
+            if (open.load()) runChunks();
+            leave();
         }
     }
 };
@@ -94,20 +106,21 @@ void BatchPool::run(std::size_t count, std::size_t chunk, void (*work)(void*, st
         return;
     }
     std::lock_guard<std::mutex> serial(s.runMutex);
+    s.count = count;
+    s.chunk = chunk;
+    s.work = work;
+    s.context = context;
+    s.next.store(0, std::memory_order_relaxed);
+    s.open.store(true);
     {
         std::lock_guard<std::mutex> lock(s.mutex);
-        s.count = count;
-        s.chunk = chunk;
-        s.work = work;
-        s.context = context;
-        s.next.store(0, std::memory_order_relaxed);
-        s.pending.store(static_cast<int>(s.workers.size()), std::memory_order_relaxed);
         ++s.generation;
     }
     s.wake.notify_all();
     s.runChunks();
+    s.open.store(false);
     std::unique_lock<std::mutex> lock(s.mutex);
-    s.done.wait(lock, [&] { return s.pending.load(std::memory_order_acquire) == 0; });
+    s.done.wait(lock, [&] { return s.active.load() == 0; });
 }
 
 namespace {
