@@ -154,9 +154,10 @@ struct AuditResult {
 /// Runs the audit on `config.jobs` threads. Deterministic for a given seed and case count.
 [[nodiscard]] AuditResult runAudit(const AuditConfig& config);
 
-/// Writes report.md, report.json, the SVG plots and worst/<implementation>__<family>.jsonl (the
-/// worst scene of every failing cell, one line per failing metric, replayable with
-/// `tilesweep resolve`) into `directory`, creating it. Throws std::runtime_error on I/O failure.
+/// Writes report.md, report.json (scripts/plots.py draws the charts from it) and
+/// worst/<implementation>__<family>.jsonl (the worst scene of every failing cell, one line per
+/// failing metric, replayable with `tilesweep resolve`) into `directory`, creating it. Throws
+/// std::runtime_error on I/O failure.
 void writeAuditReport(const AuditResult& result, const std::string& directory);
 
 /// The seed's verdict on a family: the smallest |epsilon| of kSeedEpsilons with no decision

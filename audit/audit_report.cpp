@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The audit's output: report.md (a table per metric), report.json (every figure), two SVG plots
-// and the worst scene of every failing cell as a replayable scene line.
+// The audit's output: report.md (a table per metric), report.json (every figure) and the worst
+// scene of every failing cell as a replayable scene line. The charts are drawn from report.json
+// by scripts/plots.py (matplotlib), the one way every chart is drawn; scripts/audit.sh runs both.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -125,173 +126,6 @@ void writeText(const std::filesystem::path& path, const std::string& text) {
     out << text;
     out.close();
     if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
-}
-
-// ---- SVG ------------------------------------------------------------------------------------
-
-const std::vector<std::string> kColours = {"#1b9e77", "#0b5d43", "#d95f02", "#a63603",
-                                           "#7570b3", "#e7298a", "#66a61e", "#e6ab02"};
-
-std::string colourOf(std::size_t r) { return kColours[r % kColours.size()]; }
-
-std::string escapeXml(const std::string& s) {
-    std::string out;
-    for (const char c : s) {
-        if (c == '<') out += "&lt;";
-        else if (c == '>') out += "&gt;";
-        else if (c == '&') out += "&amp;";
-        else out += c;
-    }
-    return out;
-}
-
-/// log10(1 + ulps): the y coordinate of the error plot (0 ulps sits on the axis).
-double logUlps(std::uint64_t u) { return std::log10(1.0 + static_cast<double>(u)); }
-
-std::string errorPlot(const AuditResult& r) {
-    std::vector<std::size_t> buckets;
-    for (std::size_t c = 0; c < r.families.size(); ++c)
-        if (r.families[c].kind == FamilyKind::Far) buckets.push_back(c);
-    const double width = 1100, height = 470, left = 70, right = 200, top = 50, bottom = 60;
-    const double panelGap = 40;
-    const double panelWidth = (width - left - right - panelGap) / 2;
-    const double plotHeight = height - top - bottom;
-    const double yMax = 21;  // log10(1 + 2^64) < 19.3; the top band shows non-finite
-    std::ostringstream s;
-    s << "<svg xmlns='http://www.w3.org/2000/svg' width='" << width << "' height='" << height
-      << "' font-family='sans-serif' font-size='12'>\n<rect width='100%' height='100%' fill='white'/>\n";
-    s << "<text x='" << width / 2 - 100 << "' y='22' font-size='16' text-anchor='middle'>Position error against "
-         "distance from the origin (ulps of the scalar type, log scale)</text>\n";
-    for (int panel = 0; panel < 2; ++panel) {
-        const double x0 = left + panel * (panelWidth + panelGap);
-        const double step = panelWidth / static_cast<double>(buckets.size() - 1 + 1);
-        auto yOf = [&](double v) { return top + plotHeight - v / yMax * plotHeight; };
-        s << "<text x='" << x0 + panelWidth / 2 << "' y='42' text-anchor='middle' font-weight='bold'>"
-          << (panel == 0 ? "max over the scenes" : "99th percentile") << "</text>\n";
-        s << "<rect x='" << x0 << "' y='" << top << "' width='" << panelWidth << "' height='" << plotHeight
-          << "' fill='none' stroke='#444'/>\n";
-        const std::vector<std::pair<double, const char*>> ticks = {{0, "0"},   {std::log10(11.0), "10"}, {3, "1e3"},
-                                                                   {6, "1e6"}, {9, "1e9"}, {12, "1e12"},
-                                                                   {15, "1e15"}, {18, "1e18"}};
-        for (const auto& [v, label] : ticks) {
-            s << "<line x1='" << x0 << "' x2='" << x0 + panelWidth << "' y1='" << yOf(v) << "' y2='" << yOf(v)
-              << "' stroke='#ddd'/>\n";
-            s << "<text x='" << x0 - 6 << "' y='" << yOf(v) + 4 << "' text-anchor='end'>" << label << "</text>\n";
-        }
-        s << "<text x='" << x0 - 6 << "' y='" << yOf(20.2) + 4 << "' text-anchor='end'>inf</text>\n";
-        for (std::size_t b = 0; b < buckets.size(); ++b) {
-            const double x = x0 + step * (static_cast<double>(b) + 0.5);
-            std::string label = r.families[buckets[b]].name.substr(4);
-            s << "<text x='" << x << "' y='" << top + plotHeight + 18 << "' text-anchor='middle'>" << escapeXml(label)
-              << "</text>\n";
-        }
-        s << "<text x='" << x0 + panelWidth / 2 << "' y='" << height - 18
-          << "' text-anchor='middle'>translation of the scene (far-* families)</text>\n";
-        for (std::size_t i = 0; i < r.implementations.size(); ++i) {
-            std::string points;
-            std::ostringstream marks;
-            for (std::size_t b = 0; b < buckets.size(); ++b) {
-                const Family& fam = r.families[buckets[b]];
-                if (!runs(r.implementations[i], fam)) continue;
-                const CellStats& cell = r.cells[i][buckets[b]];
-                if (cell.positionUlps.empty()) continue;
-                const std::uint64_t u = panel == 0 ? cell.positionUlps.back() : quantile(cell.positionUlps, 0.99);
-                const double v = u == kNonFiniteUlps ? 20.2 : logUlps(u);
-                // A small horizontal offset per implementation keeps coincident lines visible.
-                const double x = x0 + step * (static_cast<double>(b) + 0.5) + (static_cast<double>(i) - 3.0) * 2.5;
-                points += std::to_string(x) + "," + std::to_string(yOf(v)) + " ";
-                marks << "<circle cx='" << x << "' cy='" << yOf(v) << "' r='3.5' fill='" << colourOf(i) << "'/>";
-            }
-            s << "<polyline points='" << points << "' fill='none' stroke='" << colourOf(i)
-              << "' stroke-width='2'/>" << marks.str() << "\n";
-        }
-    }
-    for (std::size_t i = 0; i < r.implementations.size(); ++i) {
-        const double y = top + 20 + 22 * static_cast<double>(i);
-        s << "<rect x='" << width - right + 15 << "' y='" << y - 10 << "' width='14' height='14' fill='"
-          << colourOf(i) << "'/><text x='" << width - right + 35 << "' y='" << y + 2 << "'>"
-          << escapeXml(r.implementations[i].name) << "</text>\n";
-    }
-    s << "<text x='" << width - right + 15 << "' y='" << top + 20 + 22 * 8
-      << "' font-size='11'>float rows stop at 2^23</text>\n";
-    s << "<text x='" << width - right + 15 << "' y='" << top + 20 + 22 * 9
-      << "' font-size='11'>0 ulps sits on the axis</text>\n";
-    s << "<text x='" << width - right + 15 << "' y='" << top + 20 + 22 * 10
-      << "' font-size='11'>ulps at the position's</text>\n";
-    s << "<text x='" << width - right + 15 << "' y='" << top + 20 + 22 * 10 + 14
-      << "' font-size='11'>magnitude (tile size at least)</text>\n";
-    s << "</svg>\n";
-    return s.str();
-}
-
-std::string failurePlot(const AuditResult& r) {
-    const std::size_t groups = r.families.size();
-    const std::size_t bars = r.implementations.size();
-    const double width = 1250, panelHeight = 260, left = 60, right = 190, top = 50, gap = 90;
-    const double height = top + 2 * panelHeight + gap + 70;
-    const double plotWidth = width - left - right;
-    const double groupWidth = plotWidth / static_cast<double>(groups);
-    const double barWidth = groupWidth * 0.8 / static_cast<double>(bars);
-    std::ostringstream s;
-    s << "<svg xmlns='http://www.w3.org/2000/svg' width='" << width << "' height='" << height
-      << "' font-family='sans-serif' font-size='12'>\n<rect width='100%' height='100%' fill='white'/>\n";
-    s << "<text x='" << width / 2 - 90 << "' y='22' font-size='16' text-anchor='middle'>Failures per family "
-         "(% of scenes)</text>\n";
-    for (int panel = 0; panel < 2; ++panel) {
-        const double y0 = top + panel * (panelHeight + gap);
-        auto yOf = [&](double p) { return y0 + panelHeight - p / 100.0 * panelHeight; };
-        s << "<text x='" << left + plotWidth / 2 << "' y='" << y0 - 8 << "' text-anchor='middle' font-weight='bold'>"
-          << (panel == 0 ? "decisions differ from the exact reference (tiles hit or normals)"
-                         : "tunnels, or ends inside a tile it did not start in")
-          << "</text>\n";
-        for (int p = 0; p <= 100; p += 25) {
-            s << "<line x1='" << left << "' x2='" << left + plotWidth << "' y1='" << yOf(p) << "' y2='" << yOf(p)
-              << "' stroke='#ddd'/><text x='" << left - 6 << "' y='" << yOf(p) + 4 << "' text-anchor='end'>" << p
-              << "%</text>\n";
-        }
-        for (std::size_t c = 0; c < groups; ++c) {
-            const double gx = left + groupWidth * static_cast<double>(c) + groupWidth * 0.1;
-            for (std::size_t i = 0; i < bars; ++i) {
-                const double x = gx + barWidth * static_cast<double>(i);
-                if (!runs(r.implementations[i], r.families[c])) {
-                    s << "<text x='" << x + barWidth / 2 << "' y='" << yOf(0) - 3
-                      << "' font-size='14' text-anchor='middle' fill='#999'>·</text>";
-                    continue;
-                }
-                const CellStats& cell = r.cells[i][c];
-                std::uint64_t n = 0;
-                if (panel == 0) {
-                    n = cell.failures[static_cast<std::size_t>(Metric::Decision)];
-                } else {
-                    // A scene can both tunnel and end inside; count each at most once by taking
-                    // the larger figure (a lower bound of the union, exact when one implies the other).
-                    n = std::max(cell.failures[static_cast<std::size_t>(Metric::Tunnel)],
-                                 cell.failures[static_cast<std::size_t>(Metric::Inside)]);
-                }
-                const double p = cell.scenes == 0 ? 0 : 100.0 * static_cast<double>(n) / static_cast<double>(cell.scenes);
-                s << "<rect x='" << x << "' y='" << yOf(p) << "' width='" << barWidth * 0.92 << "' height='"
-                  << yOf(0) - yOf(p) << "' fill='" << colourOf(i) << "'/>";
-            }
-            s << "\n<text transform='translate(" << gx + groupWidth * 0.4 << "," << y0 + panelHeight + 14
-              << ") rotate(30)' font-size='11'>" << escapeXml(r.families[c].name) << "</text>\n";
-        }
-        s << "<line x1='" << left << "' x2='" << left + plotWidth << "' y1='" << yOf(0) << "' y2='" << yOf(0)
-          << "' stroke='#444'/>\n";
-    }
-    for (std::size_t i = 0; i < bars; ++i) {
-        const double y = top + 20 + 22 * static_cast<double>(i);
-        s << "<rect x='" << width - right + 15 << "' y='" << y - 10 << "' width='14' height='14' fill='"
-          << colourOf(i) << "'/><text x='" << width - right + 35 << "' y='" << y + 2 << "'>"
-          << escapeXml(r.implementations[i].name) << "</text>\n";
-    }
-    s << "<text x='" << width - right + 15 << "' y='" << top + 20 + 22 * static_cast<double>(bars) + 10
-      << "' font-size='11'>no bar: 0%</text>\n";
-    s << "<text x='" << width - right + 15 << "' y='" << top + 20 + 22 * static_cast<double>(bars) + 28
-      << "' font-size='11'>grey dots: not run (float</text>\n";
-    s << "<text x='" << width - right + 15 << "' y='" << top + 20 + 22 * static_cast<double>(bars) + 42
-      << "' font-size='11'>beyond 2^23)</text>\n";
-    s << "</svg>\n";
-    return s.str();
 }
 
 // ---- Markdown -------------------------------------------------------------------------------
@@ -602,8 +436,6 @@ void writeAuditReport(const AuditResult& result, const std::string& directory) {
     }
     writeText(dir / "report.md", markdown(result));
     writeText(dir / "report.json", reportJson(result).dump(1) + "\n");
-    writeText(dir / "error_vs_magnitude.svg", errorPlot(result));
-    writeText(dir / "failures_per_family.svg", failurePlot(result));
 }
 
 }  // namespace tilesweep::audit

@@ -28,7 +28,8 @@ CLI::App* addAuditCommand(CLI::App& app, AuditOptions& options) {
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
     command->add_option("--seed", options.seed, "The seed every scene derives from")->capture_default_str();
-    command->add_option("--out", options.outDir, "Directory for report.md, report.json, the SVG plots and worst/")
+    command->add_option("--out", options.outDir,
+                        "Directory for report.md, report.json and worst/ (scripts/plots.py audit DIR draws the charts)")
         ->type_name("DIR")
         ->capture_default_str();
     command->add_option("--jobs", options.jobs, "Worker threads (default: all cores)")->check(CLI::PositiveNumber);

@@ -3,7 +3,7 @@
 # repetitions, keeps the aggregates (median, mean, stddev, cv) as JSON in
 # docs/bench/results-<host>.json with the machine beside it (machine-<host>.json), then writes
 # docs/bench/bench.md (medians and target ratios) and docs/bench/pareto.svg (run time against
-# the audit's error figures) with scripts/bench_report.py.
+# the audit's error figures) with scripts/bench_report.py, whose chart scripts/plots.py draws.
 #
 #   bash scripts/bench.sh                      # 5 repetitions of every benchmark
 #   bash scripts/bench.sh --repetitions 3      # fewer, on a busy machine
@@ -57,7 +57,8 @@ if ((build)); then
     # The release preset: the library, the oracles (the exact reference, the seed and substep
     # baselines) and the benchmarks; no tests.
     # shellcheck disable=SC2086  # BENCH_CMAKE_ARGS is a list of words on purpose
-    TILESWEEP_PRESET=release TILESWEEP_BUILD_DIR=$build_dir bash "$root/scripts/build.sh" ${BENCH_CMAKE_ARGS:-}
+    TILESWEEP_EXTRA_PACKAGES=python3-matplotlib TILESWEEP_PRESET=release TILESWEEP_BUILD_DIR=$build_dir \
+        bash "$root/scripts/build.sh" ${BENCH_CMAKE_ARGS:-}
 fi
 if [ ! -x "$binary" ]; then
     echo "bench.sh: $binary not found (build first, or drop --no-build)" >&2
@@ -113,5 +114,6 @@ with open(sys.argv[1], "w", encoding="utf-8") as f:
     f.write("\n")
 EOF
 
-python3 "$root/scripts/bench_report.py" --results "$results" --machine "$machine" \
+# The report's chart is drawn by scripts/plots.py with Debian's matplotlib (/usr/bin/python3).
+/usr/bin/python3 "$root/scripts/bench_report.py" --results "$results" --machine "$machine" \
     --audit "$root/docs/audit/report.json" --out-dir "$out_dir"

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Turns one run of the benchmark suite into docs/bench/bench.md and docs/bench/pareto.svg.
 
 Reads the Google Benchmark JSON written by scripts/bench.sh (the median aggregates of repeated
@@ -10,17 +10,16 @@ error figures against the exact reference). Writes:
   pareto.svg  run time per frame (log scale) against the share of audit scenes whose decisions
               differ from the exact reference, one labelled point per implementation.
 
-Standard library only.
+The chart is drawn by scripts/plots.py (Debian's python3-matplotlib), the one way every chart of
+the project is drawn.
 
-    python3 scripts/bench_report.py --results docs/bench/results-HOST.json \\
+    /usr/bin/python3 scripts/bench_report.py --results docs/bench/results-HOST.json \\
         [--machine docs/bench/machine-HOST.json] [--audit docs/audit/report.json] \\
         [--out-dir docs/bench]
 """
 
 import argparse
-import html
 import json
-import math
 import os
 import statistics
 import sys
@@ -457,55 +456,12 @@ def write_markdown(path, results, audit, machine, results_path, audit_path, out_
 
 
 # --------------------------------------------------------------------------------------------
-# pareto.svg
-
-GROUP_STYLE = {
-    "production": ("#1a9850", "circle"),
-    "seed": ("#d73027", "square"),
-    "substep": ("#f08c00", "triangle"),
-    "exact": ("#2c5aa0", "diamond"),
-}
-
-
-def text_width(s, size, bold=False):
-    """A rough width in px of a text in DejaVu Sans (for placing labels only; a little wide)."""
-    width = 0.0
-    for c in s:
-        if c in " ":
-            width += 0.33
-        elif c in ".,:;'|!()[]":
-            width += 0.36
-        elif c in "ijlft":
-            width += 0.34
-        elif c in "mwMW%":
-            width += 0.92
-        elif c.isupper() or c.isdigit() or c in "²µ→≤≥":
-            width += 0.68
-        else:
-            width += 0.6
-    return width * size * (1.08 if bold else 1.0)
-
-
-def marker(shape, x, y, color, r=7, hollow=False):
-    """A marker; hollow (white inside, a thick coloured edge) for the double variants."""
-    fill, stroke, sw = ("white", color, 2.6) if hollow else (color, "#222", 1)
-    if shape == "circle":
-        return f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{r}" fill="{fill}" stroke="{stroke}" stroke-width="{sw}"/>'
-    if shape == "square":
-        return (f'<rect x="{x - r + 0.5:.1f}" y="{y - r + 0.5:.1f}" width="{2 * r - 1}" height="{2 * r - 1}" '
-                f'fill="{fill}" stroke="{stroke}" stroke-width="{sw}"/>')
-    if shape == "triangle":
-        pts = f"{x:.1f},{y - r - 1:.1f} {x + r:.1f},{y + r - 1:.1f} {x - r:.1f},{y + r - 1:.1f}"
-        return f'<polygon points="{pts}" fill="{fill}" stroke="{stroke}" stroke-width="{sw}"/>'
-    pts = f"{x:.1f},{y - r - 1:.1f} {x + r + 1:.1f},{y:.1f} {x:.1f},{y + r + 1:.1f} {x - r - 1:.1f},{y:.1f}"
-    return f'<polygon points="{pts}" fill="{fill}" stroke="{stroke}" stroke-width="{sw}"/>'
-
-
-def boxes_overlap(a, b, pad=3):
-    return not (a[2] + pad <= b[0] or b[2] + pad <= a[0] or a[3] + pad <= b[1] or b[3] + pad <= a[1])
-
+# pareto.svg, drawn by scripts/plots.py (matplotlib), the one way every chart is drawn
 
 def write_svg(path, results, audit, machine):
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import plots  # noqa: E402  (scripts/plots.py; needs python3-matplotlib)
+
     points = []
     for impl, bench, speeds, label, group in IMPLEMENTATIONS:
         t = results.get(bench)
@@ -515,171 +471,15 @@ def write_svg(path, results, audit, machine):
         span = [v for v in (results.get(b) for b in speeds) if v is not None]
         points.append({"impl": impl, "label": label, "group": group, "t": t, "err": row["decision"],
                        "tunnel": row["tunnel"], "lo": min(span), "hi": max(span)})
-    W, H = 1000, 640
-    left, right, top, bottom = 96, 36, 78, 150
-    pw, ph = W - left - right, H - top - bottom
-    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" viewBox="0 0 {W} {H}" '
-           'font-family="DejaVu Sans, Verdana, Arial, sans-serif">',
-           f'<rect width="{W}" height="{H}" fill="white"/>']
-    title = "tilesweep: run time against error, one point per implementation"
-    out.append(f'<text x="{W / 2}" y="30" font-size="19" font-weight="bold" text-anchor="middle">{html.escape(title)}</text>')
-    sub = ("time: median CPU per frame at 8 tiles/frame (this run); error: audit scenes whose "
-           "decisions differ from the exact reference")
-    out.append(f'<text x="{W / 2}" y="52" font-size="12.5" fill="#444" text-anchor="middle">{html.escape(sub)}</text>')
-    if not points:
-        out.append(f'<text x="{W / 2}" y="{H / 2}" font-size="16" text-anchor="middle">no data</text></svg>')
-        with open(path, "w", encoding="utf-8") as f:
-            f.write("\n".join(out) + "\n")
-        return
-
-    # x: log10 of ns, whole decades around the data (the speed range bars included).
-    xmin = math.floor(math.log10(min(p["lo"] for p in points)))
-    xmax = math.ceil(math.log10(max(p["hi"] for p in points)))
-    if xmax - xmin < 2:
-        xmax = xmin + 2
-
-    def X(ns):
-        return left + (math.log10(ns) - xmin) / (xmax - xmin) * pw
-
-    # y: linear percent. The 0 line is lifted off the bottom of the frame into a band of its
-    # own, so that points at exactly 0 read as a value and not as the floor of the plot.
-    ymax = max(10.0, math.ceil(max(p["err"] for p in points) / 10.0) * 10.0)
-    zero_band = 44                       # px of the band around the 0 line at the bottom
-    y0_px = top + ph - zero_band / 2     # where 0 is drawn
-
-    def Y(err):
-        return y0_px - err / ymax * (y0_px - top - 12)
-
-    # Plot frame and grid.
-    out.append(f'<rect x="{left}" y="{top}" width="{pw}" height="{ph}" fill="#fcfcfc" stroke="#999"/>')
-    out.append(f'<rect x="{left + 1}" y="{top + ph - zero_band}" width="{pw - 2}" height="{zero_band - 1}" fill="#e6f4e9"/>')
-    step = 10 if ymax <= 100 else 20
-    v = step
-    while v <= ymax + 1e-9:
-        y = Y(v)
-        out.append(f'<line x1="{left}" y1="{y:.1f}" x2="{left + pw}" y2="{y:.1f}" stroke="#e3e3e3"/>')
-        out.append(f'<text x="{left - 8}" y="{y + 4:.1f}" font-size="13" text-anchor="end">{v:g}%</text>')
-        v += step
-    out.append(f'<line x1="{left}" y1="{y0_px:.1f}" x2="{left + pw}" y2="{y0_px:.1f}" stroke="#7bbf8c" stroke-width="1.2"/>')
-    out.append(f'<text x="{left - 8}" y="{y0_px + 5:.1f}" font-size="14" font-weight="bold" fill="#1a7a3a" '
-               'text-anchor="end">0%</text>')
-    out.append(f'<text x="{left + pw - 8}" y="{top + ph - 4}" font-size="11.5" fill="#1a7a3a" text-anchor="end">'
-               'on the 0 line: agrees with the exact reference on every audit scene</text>')
-    # x ticks: decades labelled, 2..9 minor
-    names = {0: "1 ns", 1: "10 ns", 2: "100 ns", 3: "1 µs", 4: "10 µs", 5: "100 µs", 6: "1 ms",
-             7: "10 ms", 8: "100 ms", 9: "1 s", 10: "10 s"}
-    for d in range(xmin, xmax + 1):
-        x = X(10 ** d)
-        out.append(f'<line x1="{x:.1f}" y1="{top}" x2="{x:.1f}" y2="{top + ph}" stroke="#dcdcdc"/>')
-        out.append(f'<text x="{x:.1f}" y="{top + ph + 20}" font-size="13" text-anchor="middle">{names.get(d, f"1e{d} ns")}</text>')
-        if d < xmax:
-            for m in range(2, 10):
-                xm = X(m * 10 ** d)
-                out.append(f'<line x1="{xm:.1f}" y1="{top + ph}" x2="{xm:.1f}" y2="{top + ph + 5}" stroke="#999"/>')
-    out.append(f'<text x="{left + pw / 2}" y="{top + ph + 44}" font-size="14.5" text-anchor="middle">'
-               'run time per frame (median CPU time, log scale)  →  slower</text>')
-    out.append(f'<text transform="translate({24},{top + ph / 2}) rotate(-90)" font-size="14.5" text-anchor="middle">'
-               'scenes whose decisions differ from exact (%)</text>')
-
-    # Dominance: everything slower and no more accurate than the fastest error-free point.
-    best = min((p for p in points if p["err"] == 0), key=lambda p: p["t"], default=None)
-    if best is not None:
-        bx = X(best["t"])
-        out.append(f'<rect x="{bx:.1f}" y="{top + 1}" width="{left + pw - bx - 1:.1f}" height="{ph - 2}" '
-                   'fill="#1a9850" fill-opacity="0.045"/>')
-        out.append(f'<line x1="{bx:.1f}" y1="{top}" x2="{bx:.1f}" y2="{top + ph}" stroke="#1a9850" '
-                   'stroke-width="1.2" stroke-dasharray="3,3"/>')
-        out.append(f'<text x="{bx + 6:.1f}" y="{top + 16}" font-size="12" fill="#1a7a3a">shaded: slower and no '
-                   f'more exact than {html.escape(best["label"])} (dominated)</text>')
-
-    # Range bars (0.5 to 32 tiles/frame), then the points.
-    for p in points:
-        if p["hi"] > p["lo"]:
-            y = Y(p["err"])
-            color = GROUP_STYLE[p["group"]][0]
-            out.append(f'<line x1="{X(p["lo"]):.1f}" y1="{y:.1f}" x2="{X(p["hi"]):.1f}" y2="{y:.1f}" '
-                       f'stroke="{color}" stroke-width="3" stroke-opacity="0.35" stroke-linecap="round"/>')
-    occupied = [(left, top, left + pw, top + 22)] if best is not None else []   # the shading note
-    occupied.append((left + pw - 420, top + ph - 16, left + pw, top + ph))      # the zero band note
-    for p in sorted(points, key=lambda q: not q["impl"].endswith("-double")):
-        x, y = X(p["t"]), Y(p["err"])
-        p["x"], p["y"] = x, y
-        occupied.append((x - 9, y - 9, x + 9, y + 9))
-        color, shape = GROUP_STYLE[p["group"]]
-        out.append(marker(shape, x, y, color, hollow=p["impl"].endswith("-double")))
-
-    # Labels: two lines (name; time and error), placed greedily where they collide with nothing.
-    label_boxes = []
-    for p in sorted(points, key=lambda q: (q["err"], q["t"])):
-        line1 = p["label"]
-        err = "0 (reference)" if p["impl"] == "exact-reference" else (
-            "0" if p["err"] == 0 else f"{p['err']:.1f}%")
-        line2 = f"{fmt_ns(p['t'])}, differs {err}"
-        if p["tunnel"] > 0:
-            line2 += f", tunnels {p['tunnel']:.1f}%"
-        w = max(text_width(line1, 13.5, bold=True), text_width(line2, 11.5)) + 6
-        h = 30
-        x, y = p["x"], p["y"]
-        candidates = []
-        for dist in (12, 26, 44, 64):
-            candidates += [(x + dist, y - h / 2), (x - dist - w, y - h / 2),
-                           (x - w / 2, y - dist - h), (x - w / 2, y + dist),
-                           (x + dist * 0.7, y - dist * 0.7 - h), (x - dist * 0.7 - w, y - dist * 0.7 - h),
-                           (x + dist * 0.7, y + dist * 0.7), (x - dist * 0.7 - w, y + dist * 0.7)]
-        chosen = None
-        for cx, cy in candidates:
-            box = (cx, cy, cx + w, cy + h)
-            if box[0] < left + 2 or box[2] > left + pw - 2 or box[1] < top + 2 or box[3] > top + ph - 2:
-                continue
-            if any(boxes_overlap(box, o) for o in occupied + label_boxes):
-                continue
-            chosen = box
-            break
-        if chosen is None:
-            chosen = (x + 12, y - h / 2, x + 12 + w, y + h / 2)
-        label_boxes.append(chosen)
-        cx, cy = chosen[0], chosen[1]
-        # a leader line when the label is not right beside its point
-        nearest_x = min(max(x, chosen[0]), chosen[2])
-        nearest_y = min(max(y, chosen[1]), chosen[3])
-        if math.hypot(nearest_x - x, nearest_y - y) > 16:
-            out.append(f'<line x1="{x:.1f}" y1="{y:.1f}" x2="{nearest_x:.1f}" y2="{nearest_y:.1f}" stroke="#777" stroke-width="0.8"/>')
-        out.append(f'<rect x="{cx:.1f}" y="{cy:.1f}" width="{w:.1f}" height="{h}" fill="white" fill-opacity="0.85" rx="3"/>')
-        out.append(f'<text x="{cx + 2:.1f}" y="{cy + 13:.1f}" font-size="13.5" font-weight="bold" '
-                   f'fill="{GROUP_STYLE[p["group"]][0] if p["group"] != "production" else "#15703a"}">{html.escape(line1)}</text>')
-        out.append(f'<text x="{cx + 2:.1f}" y="{cy + 27:.1f}" font-size="11.5" fill="#333">{html.escape(line2)}</text>')
-
-    # Legend and footnote below the plot, wrapped to the width of the plot.
-    ly = top + ph + 70
-    lx = left
-    items = [("production", "production resolver (exact)"), ("exact", "exact reference (GMP rationals)"),
-             ("seed", "seed algorithm (the article)"), ("substep", "game-style float substeps"),
-             ("hollow", "hollow: double (filled: float)"), (None, "range: 0.5 to 32 tiles/frame")]
-    for group, text in items:
-        width = 22 + text_width(text, 12.5) + 18
-        if lx + width > left + pw:
-            lx, ly = left, ly + 20
-        if group == "hollow":
-            out.append(marker("circle", lx + 8, ly - 4, "#666", r=6, hollow=True))
-        elif group is None:
-            out.append(f'<line x1="{lx + 1}" y1="{ly - 4}" x2="{lx + 17}" y2="{ly - 4}" stroke="#888" '
-                       'stroke-width="3" stroke-opacity="0.5" stroke-linecap="round"/>')
-        else:
-            color, shape = GROUP_STYLE[group]
-            out.append(marker(shape, lx + 8, ly - 4, color, r=6))
-        out.append(f'<text x="{lx + 22}" y="{ly + 1}" font-size="12.5">{html.escape(text)}</text>')
-        lx += width
     host = machine.get("host") or results.context.get("host_name", "")
     cpu = machine.get("cpu_model", "")
-    foot1 = ("Time: production and seed on a 256² map, substeps and exact reference on a 64² map, 30% "
-             "solid; the baselines scan the whole map.")
-    foot2 = (f"Error: decisions differ, over all audit families (seed {audit.seed}, {audit.cases} "
-             f"scenes per family). Machine: {host}, {cpu}.")
-    out.append(f'<text x="{left}" y="{ly + 24}" font-size="11" fill="#555">{html.escape(foot1)}</text>')
-    out.append(f'<text x="{left}" y="{ly + 39}" font-size="11" fill="#555">{html.escape(foot2)}</text>')
-    out.append("</svg>")
-    with open(path, "w", encoding="utf-8") as f:
-        f.write("\n".join(out) + "\n")
+    footnotes = [
+        "Time: production and seed on a 256² map, substeps and exact reference on a 64² map, 30% solid; "
+        "the baselines scan the whole map.",
+        f"Error: decisions differ, over all audit families (seed {audit.seed}, {audit.cases} scenes per family). "
+        f"Machine: {host}, {cpu}.",
+    ]
+    plots.pareto(path, points, footnotes)
 
 
 # --------------------------------------------------------------------------------------------
