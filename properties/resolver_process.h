@@ -8,7 +8,7 @@
 // scene fails the scene it was working on, and the process is killed and restarted for the
 // scenes after it.
 //
-//     ResolverProcess process("build/cli/tilesweep resolve --scalar float", 10.0);
+//     ResolverProcess process("build/dev/cli/tilesweep resolve --scalar float", 10.0);
 //     auto replies = process.exchange({sceneLine1, sceneLine2});
 //     for (auto& r : replies) if (!r.failure.empty()) ... else parseResultLine<float>(r.line, ...);
 //
