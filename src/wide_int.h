@@ -47,8 +47,8 @@ struct Uint128 {
     }
 
     friend constexpr Uint128 operator+(Uint128 a, Uint128 b) noexcept {
-        const std::uint64_t lo = a.lo + b.lo;
-        return {a.hi + b.hi + (lo < a.lo ? 1u : 0u), lo, true};
+        const std::uint64_t low = a.lo + b.lo;
+        return {a.hi + b.hi + (low < a.lo ? 1u : 0u), low, true};
     }
     friend constexpr Uint128 operator-(Uint128 a, Uint128 b) noexcept {
         return {a.hi - b.hi - (a.lo < b.lo ? 1u : 0u), a.lo - b.lo, true};

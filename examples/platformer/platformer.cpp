@@ -111,11 +111,13 @@ int fail(const char* what) {
 /// True when the box's interior meets a solid tile's (touching is not overlapping). The
 /// positions are small floats, so every sum below is exact in double.
 bool overlapsSolid(const Level& level, const Box<float>& b) {
-    const double x0 = b.pos.x, y0 = b.pos.y, x1 = x0 + double{b.size.x}, y1 = y0 + double{b.size.y};
+    const double x0 = static_cast<double>(b.pos.x), y0 = static_cast<double>(b.pos.y);
+    const double x1 = x0 + static_cast<double>(b.size.x), y1 = y0 + static_cast<double>(b.size.y);
+    const double tile = static_cast<double>(kTile);
     for (std::int32_t j = 0; j < level.map.rows; ++j)
         for (std::int32_t i = 0; i < level.map.columns; ++i)
-            if (level.view().isSolid(i, j) && x0 < (i + 1) * double{kTile} && x1 > i * double{kTile} &&
-                y0 < (j + 1) * double{kTile} && y1 > j * double{kTile})
+            if (level.view().isSolid(i, j) && x0 < (i + 1) * tile && x1 > i * tile && y0 < (j + 1) * tile &&
+                y1 > j * tile)
                 return true;
     return false;
 }
