@@ -207,7 +207,9 @@ ts_error moveBatch(const typename Types<T>::Map* map, const typename Types<T>::M
 
 extern "C" {
 
-const char* ts_error_message(ts_error error) {
+const char* ts_error_message(int error) {
+    // An int, not a ts_error: a caller may pass any code, and loading a value outside the
+    // enumeration into the enum type would be undefined in C++.
     switch (error) {
         case TS_OK: return "ok";
         case TS_ERROR_NULL_ARGUMENT: return "a required pointer argument is NULL";

@@ -129,8 +129,8 @@ typedef struct ts_result_d {
 typedef struct ts_contact_f { int32_t i, j; int8_t nx, ny; float time; } ts_contact_f;
 typedef struct ts_contact_d { int32_t i, j; int8_t nx, ny; double time; } ts_contact_d;
 
-/** A short English message naming the problem; never NULL. */
-TILESWEEP_EXPORT const char* ts_error_message(ts_error error);
+/** A short English message naming the problem (a ts_error, or any other int); never NULL. */
+TILESWEEP_EXPORT const char* ts_error_message(int error);
 
 /** Validates and copies a map; *out receives it (destroy with ts_map_destroy_*). */
 TILESWEEP_EXPORT ts_error ts_map_create_f(const ts_map_desc_f* desc, ts_map_f** out);

@@ -154,10 +154,10 @@ static void testBadMaps(void) {
 static void testMessages(void) {
     int code;
     for (code = 0; code <= 12; ++code) {
-        const char* m = ts_error_message((ts_error)code);
+        const char* m = ts_error_message(code);
         CHECK(m != NULL && strlen(m) > 0 && strcmp(m, "unknown tilesweep error code") != 0);
     }
-    CHECK(strcmp(ts_error_message((ts_error)99), "unknown tilesweep error code") == 0);
+    CHECK(strcmp(ts_error_message(99), "unknown tilesweep error code") == 0);
     CHECK(strstr(ts_error_message(TS_ERROR_MAP_NON_POSITIVE_TILE_SIZE), "tile_size") != NULL);
 }
 
