@@ -38,17 +38,29 @@ namespace tilesweep::detail {
     return ((aHigh * bHigh - p) + aHigh * bLow + aLow * bHigh) + aLow * bLow;
 }
 
+// The refinements below run on a small share of comparisons: out of line (gnu::cold), so that
+// the filters that call them inline into the solver's loops (gnu::always_inline; other
+// compilers ignore both).
+
+/// The order of a*b and c*d when their rounded values p and q are equal: that of the rounding
+/// errors, exactly (see the top of this file).
+[[gnu::noinline, gnu::cold]] inline int compareEqualProducts(double a, double b, double c, double d, double p,
+                                                       double q) noexcept {
+    const double e = productError(a, b, p);
+    const double f = productError(c, d, q);
+    return e < f ? -1 : (e > f ? 1 : 0);
+}
+
 /// -1, 0 or 1 as a*b compares with c*d, exactly. `refined` is set when the rounded products
 /// were equal and the exact rounding errors had to settle the order.
-[[nodiscard]] inline int compareProducts(double a, double b, double c, double d, bool& refined) noexcept {
+[[nodiscard, gnu::always_inline]] inline int compareProducts(double a, double b, double c, double d,
+                                                                     bool& refined) noexcept {
     const double p = a * b;
     const double q = c * d;
     if (p < q) return -1;  // monotonic rounding: the order of the rounded values is exact
     if (p > q) return 1;
     refined = true;
-    const double e = productError(a, b, p);
-    const double f = productError(c, d, q);
-    return e < f ? -1 : (e > f ? 1 : 0);
+    return compareEqualProducts(a, b, c, d, p, q);
 }
 
 /// A real number held exactly as hi + lo, where hi = fl(hi + lo) (the sum rounded to nearest)
@@ -97,6 +109,17 @@ struct ExactPair {
     return m == 0 ? 0 : (e[m - 1] > 0 ? 1 : -1);
 }
 
+/// The sign of a*s - b*t, exactly, from the eight-term expansion (four TwoProducts), for the
+/// pair comparison below when its filter cannot decide; p = fl(a.hi*s), q = fl(b.hi*t).
+[[gnu::noinline, gnu::cold]] inline int signOfPairProducts(ExactPair a, double s, ExactPair b, double t, double p,
+                                                     double q) noexcept {
+    const double p2 = a.lo * s;
+    const double q2 = b.lo * t;
+    const double terms[8] = {productError(a.hi, s, p), productError(a.lo, s, p2), -productError(b.hi, t, q),
+                             -productError(b.lo, t, q2), p2, -q2, p, -q};
+    return signOfSum(terms, 8);
+}
+
 /// The semi-static error bound of compareProducts on pairs, relative to |fl(a.hi*s)| +
 /// |fl(b.hi*t)|: (3 + 16u)u with u = 2^-53 (derivation at compareProducts below).
 inline constexpr double kPairProductErrorBound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53;
@@ -114,7 +137,8 @@ inline constexpr double kPairProductErrorBound = (3.0 + 16.0 * 0x1p-53) * 0x1p-5
 /// Inside it, the sign of the eight-term exact sum (four TwoProducts) settles it, and `refined`
 /// is set. The caller's range keeps every product and every TwoProduct error term far from
 /// overflow and underflow.
-[[nodiscard]] inline int compareProducts(ExactPair a, double s, ExactPair b, double t, bool& refined) noexcept {
+[[nodiscard, gnu::always_inline]] inline int compareProducts(ExactPair a, double s, ExactPair b, double t,
+                                                                     bool& refined) noexcept {
     if (a.lo == 0 && b.lo == 0) return compareProducts(a.hi, s, b.hi, t, refined);
     const double p = a.hi * s;
     const double q = b.hi * t;
@@ -127,11 +151,7 @@ inline constexpr double kPairProductErrorBound = (3.0 + 16.0 * 0x1p-53) * 0x1p-5
     if (d > bound) return 1;
     if (d < -bound) return -1;
     refined = true;
-    const double p2 = a.lo * s;
-    const double q2 = b.lo * t;
-    const double terms[8] = {productError(a.hi, s, p), productError(a.lo, s, p2), -productError(b.hi, t, q),
-                             -productError(b.lo, t, q2), p2, -q2, p, -q};
-    return signOfSum(terms, 8);
+    return signOfPairProducts(a, s, b, t, p, q);
 }
 
 /// The next double above (up = true) or below a finite nonzero double, by its bits.
