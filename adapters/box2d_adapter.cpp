@@ -19,6 +19,8 @@
 //     tiles are listed); reported normals are the dominant axis of Box2D's normal.
 //
 //     tilesweep_box2d_adapter < scenes.jsonl        (float only: Box2D is float)
+#include "tilesweep/scene/scene.h"
+
 #include <box2d/b2_collision.h>
 #include <box2d/b2_distance.h>
 #include <box2d/b2_polygon_shape.h>
@@ -29,8 +31,6 @@
 #include <iostream>
 #include <string>
 #include <vector>
-
-#include "tilesweep/scene/scene.h"
 
 namespace {
 
@@ -47,7 +47,8 @@ struct Hit {
 };
 
 /// The cell range [lo, hi] on one axis covering [a, b] plus one cell on each side.
-void cellRange(float origin, float tile, std::int32_t count, float a, float b, std::int32_t& lo, std::int32_t& hi) {
+void cellRange(float origin, float tile, std::int32_t count, float a, float b, std::int32_t& lo,
+               std::int32_t& hi) {
     const float first = std::floor((a - origin) / tile) - 1;
     const float last = std::floor((b - origin) / tile) + 1;
     lo = static_cast<std::int32_t>(std::max(first, 0.0f));
@@ -61,7 +62,8 @@ std::vector<FrameResult<float>> runBox2D(const Scene<float>& scene) {
     b2PolygonShape tileShape;
     tileShape.SetAsBox(map.tileSize.x / 2 / kPixelsPerMeter, map.tileSize.y / 2 / kPixelsPerMeter);
     const auto solid = [&](std::int32_t i, std::int32_t j) {
-        return map.solid[static_cast<std::size_t>(j) * static_cast<std::size_t>(map.columns) + static_cast<std::size_t>(i)] != 0;
+        return map.solid[static_cast<std::size_t>(j) * static_cast<std::size_t>(map.columns) +
+                         static_cast<std::size_t>(i)] != 0;
     };
     const auto tileCenter = [&](std::int32_t i, std::int32_t j) {
         return meters(map.origin.x + (static_cast<float>(i) + 0.5f) * map.tileSize.x,
@@ -82,7 +84,8 @@ std::vector<FrameResult<float>> runBox2D(const Scene<float>& scene) {
             b2Transform boxXf(boxCenter(p), b2Rot(0));
             for (std::int32_t j = j0; j <= j1; ++j)
                 for (std::int32_t i = i0; i <= i1; ++i)
-                    if (solid(i, j) && b2TestOverlap(&boxShape, 0, &tileShape, 0, boxXf, b2Transform(tileCenter(i, j), b2Rot(0))))
+                    if (solid(i, j) && b2TestOverlap(&boxShape, 0, &tileShape, 0, boxXf,
+                                                     b2Transform(tileCenter(i, j), b2Rot(0))))
                         frame.startOverlaps.push_back({i, j});
         }
         b2Vec2 r(move.x, move.y);  // pixels
@@ -117,7 +120,8 @@ std::vector<FrameResult<float>> runBox2D(const Scene<float>& scene) {
                     input.tMax = 1;
                     b2TOIOutput output;
                     b2TimeOfImpact(&output, &input);
-                    if (output.state != b2TOIOutput::e_touching && output.state != b2TOIOutput::e_overlapped) continue;
+                    if (output.state != b2TOIOutput::e_touching && output.state != b2TOIOutput::e_overlapped)
+                        continue;
                     const float t = output.state == b2TOIOutput::e_touching ? output.t : 0.0f;
                     if (t > best) continue;
                     // The normal at the time of impact, from b2Distance (closest points of the cores).
@@ -146,8 +150,9 @@ std::vector<FrameResult<float>> runBox2D(const Scene<float>& scene) {
                 break;
             }
             p += best * r;
-            std::sort(hits.begin(), hits.end(),
-                      [](const Hit& a, const Hit& b) { return a.tile.j != b.tile.j ? a.tile.j < b.tile.j : a.tile.i < b.tile.i; });
+            std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) {
+                return a.tile.j != b.tile.j ? a.tile.j < b.tile.j : a.tile.i < b.tile.i;
+            });
             const float frameTime = elapsed + best * (1 - elapsed);
             for (const Hit& h : hits) {
                 const bool onX = std::fabs(h.normal.x) > std::fabs(h.normal.y);

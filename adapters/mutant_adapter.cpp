@@ -11,6 +11,12 @@
 //                              where the default axis is the other one, and transposed back)
 //
 //     tilesweep_mutant_adapter --mutation round-nearest [--scalar float|double] < scenes.jsonl
+#include "oracle/exact/exact_geometry.h"
+#include "oracle/exact/exact_resolve.h"
+#include "oracle/exact/rational_convert.h"
+
+#include "tilesweep/scene/scene.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -19,11 +25,6 @@
 #include <string>
 #include <tuple>
 #include <vector>
-
-#include "oracle/exact/exact_geometry.h"
-#include "oracle/exact/exact_resolve.h"
-#include "oracle/exact/rational_convert.h"
-#include "tilesweep/scene/scene.h"
 
 namespace {
 
@@ -37,7 +38,8 @@ std::vector<FrameResult<T>> roundNearest(const Scene<T>& scene) {
     std::vector<FrameResult<T>> frames;
     Box<T> box = scene.box;
     for (const Vec2<T>& move : scene.moves) {
-        const oracle::ExactFrame exact = oracle::resolveFrameExact(map, oracle::toExact(box), oracle::toExact(move));
+        const oracle::ExactFrame exact =
+            oracle::resolveFrameExact(map, oracle::toExact(box), oracle::toExact(move));
         FrameResult<T> frame = oracle::roundFrame<T>(exact);  // decisions and times as the contract's
         frame.position = {oracle::fromRational<T>(exact.position.x, oracle::Rounding::NearestEven),
                           oracle::fromRational<T>(exact.position.y, oracle::Rounding::NearestEven)};
@@ -102,7 +104,8 @@ int serve(Mutation mutation) {
             std::cout << formatError(parsed.error) << '\n' << std::flush;
             continue;
         }
-        const auto frames = mutation == Mutation::RoundNearest ? roundNearest(*parsed.scene) : tiePrefersX(*parsed.scene);
+        const auto frames =
+            mutation == Mutation::RoundNearest ? roundNearest(*parsed.scene) : tiePrefersX(*parsed.scene);
         std::cout << formatFrames(frames) << '\n' << std::flush;
     }
     return 0;
@@ -118,8 +121,10 @@ int main(int argc, char** argv) {
         if (std::strcmp(argv[k], "--mutation") == 0) mutation = argv[k + 1];
         if (std::strcmp(argv[k], "--scalar") == 0) scalar = argv[k + 1];
     }
-    if ((mutation != "round-nearest" && mutation != "tie-prefers-x") || (scalar != "float" && scalar != "double")) {
-        std::fprintf(stderr, "usage: %s --mutation round-nearest|tie-prefers-x [--scalar float|double]\n", argv[0]);
+    if ((mutation != "round-nearest" && mutation != "tie-prefers-x") ||
+        (scalar != "float" && scalar != "double")) {
+        std::fprintf(stderr, "usage: %s --mutation round-nearest|tie-prefers-x [--scalar float|double]\n",
+                     argv[0]);
         return 2;
     }
     const Mutation m = mutation == "round-nearest" ? Mutation::RoundNearest : Mutation::TiePrefersX;

@@ -5,14 +5,15 @@
 // --resolver-cmd` hold to the contract as "the move-and-slide a competent game developer writes".
 //
 //     tilesweep_twin_adapter [--scalar float|double] < scenes.jsonl
+#include "bench/twin_resolve.h"
+
+#include "tilesweep/scene/scene.h"
+
 #include <cstdio>
 #include <cstring>
 #include <iostream>
 #include <string>
 #include <vector>
-
-#include "bench/twin_resolve.h"
-#include "tilesweep/scene/scene.h"
 
 namespace {
 
@@ -28,9 +29,8 @@ std::vector<tilesweep::FrameResult<T>> runTwin(const tilesweep::Scene<T>& scene)
         tilesweep::SweepResult<T> r;
         for (;;) {
             r = tilesweep::bench::resolveMoveTwin<T>(
-                {scene.map.view(), box, move},
-                {contacts.data(), static_cast<std::int32_t>(contacts.size()), overlaps.data(),
-                 static_cast<std::int32_t>(overlaps.size())});
+                {scene.map.view(), box, move}, {contacts.data(), static_cast<std::int32_t>(contacts.size()),
+                                                overlaps.data(), static_cast<std::int32_t>(overlaps.size())});
             if (static_cast<std::size_t>(r.contactCount) <= contacts.size() &&
                 static_cast<std::size_t>(r.startOverlapCount) <= overlaps.size())
                 break;
@@ -54,7 +54,8 @@ int serve() {
         if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
         const tilesweep::SceneParse<T> parsed = tilesweep::parseScene<T>(line);
         try {
-            std::cout << (parsed.scene ? tilesweep::formatFrames(runTwin(*parsed.scene)) : tilesweep::formatError(parsed.error));
+            std::cout << (parsed.scene ? tilesweep::formatFrames(runTwin(*parsed.scene))
+                                       : tilesweep::formatError(parsed.error));
         } catch (const std::exception& e) {  // a NaN position cannot be printed as JSON
             std::cout << tilesweep::formatError(std::string("twin: ") + e.what());
         }
@@ -67,7 +68,8 @@ int serve() {
 
 int main(int argc, char** argv) {
     std::ios::sync_with_stdio(false);
-    const bool useDouble = argc == 3 && std::strcmp(argv[1], "--scalar") == 0 && std::strcmp(argv[2], "double") == 0;
+    const bool useDouble =
+        argc == 3 && std::strcmp(argv[1], "--scalar") == 0 && std::strcmp(argv[2], "double") == 0;
     if (argc != 1 && !(argc == 3 && std::strcmp(argv[1], "--scalar") == 0)) {
         std::fprintf(stderr, "usage: %s [--scalar float|double] < scenes.jsonl\n", argv[0]);
         return 2;

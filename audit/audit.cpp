@@ -5,6 +5,18 @@
 // (each worker owns its cells; the GMP rationals of the oracle are per-object), merged at the end.
 #include "audit/audit.h"
 
+#include "bench/grid_resolve.h"
+#include "bench/twin_resolve.h"
+#include "frame_safety.h"  // checks/
+#include "oracle/exact/exact_resolve.h"
+#include "oracle/exact/exact_sweep.h"
+#include "oracle/exact/rational_convert.h"
+#include "oracle/seed/seed_resolve.h"
+#include "oracle/substep/substep_float.h"
+#include "src/decision_path.h"
+
+#include "tilesweep/scene/scene.h"
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -14,17 +26,6 @@
 #include <stdexcept>
 #include <thread>
 #include <utility>
-
-#include "frame_safety.h"  // checks/
-#include "oracle/exact/exact_resolve.h"
-#include "oracle/exact/exact_sweep.h"
-#include "oracle/exact/rational_convert.h"
-#include "oracle/seed/seed_resolve.h"
-#include "oracle/substep/substep_float.h"
-#include "bench/grid_resolve.h"
-#include "bench/twin_resolve.h"
-#include "src/decision_path.h"
-#include "tilesweep/scene/scene.h"
 
 namespace tilesweep::audit {
 
@@ -37,16 +38,26 @@ using oracle::Rational;
 
 const char* metricName(Metric m) {
     switch (m) {
-        case Metric::Decision: return "decision";
-        case Metric::Inexact: return "inexact";
-        case Metric::Tunnel: return "tunnel";
-        case Metric::Inside: return "inside";
-        case Metric::ClipMiss: return "clip-miss";
-        case Metric::CornerHit: return "corner-hit";
-        case Metric::Snag: return "snag";
-        case Metric::NonFinite: return "non-finite";
-        case Metric::Position: return "position";
-        case Metric::Time: return "time";
+        case Metric::Decision:
+            return "decision";
+        case Metric::Inexact:
+            return "inexact";
+        case Metric::Tunnel:
+            return "tunnel";
+        case Metric::Inside:
+            return "inside";
+        case Metric::ClipMiss:
+            return "clip-miss";
+        case Metric::CornerHit:
+            return "corner-hit";
+        case Metric::Snag:
+            return "snag";
+        case Metric::NonFinite:
+            return "non-finite";
+        case Metric::Position:
+            return "position";
+        case Metric::Time:
+            return "time";
     }
     return "?";
 }
@@ -89,8 +100,10 @@ void CellStats::merge(const CellStats& other) {
     restingEligible += other.restingEligible;
     positionUlps.insert(positionUlps.end(), other.positionUlps.begin(), other.positionUlps.end());
     timeErrors.insert(timeErrors.end(), other.timeErrors.begin(), other.timeErrors.end());
-    if (epsilonMismatches.size() < other.epsilonMismatches.size()) epsilonMismatches.resize(other.epsilonMismatches.size());
-    for (std::size_t k = 0; k < other.epsilonMismatches.size(); ++k) epsilonMismatches[k] += other.epsilonMismatches[k];
+    if (epsilonMismatches.size() < other.epsilonMismatches.size())
+        epsilonMismatches.resize(other.epsilonMismatches.size());
+    for (std::size_t k = 0; k < other.epsilonMismatches.size(); ++k)
+        epsilonMismatches[k] += other.epsilonMismatches[k];
 }
 
 void Coverage::merge(const Coverage& o) {
@@ -141,7 +154,8 @@ std::uint64_t ulpError(T got, T expected, T tile) {
     if (got == expected) return 0;
     const T scale = std::max(std::fabs(expected), tile);
     const T ulp = std::nextafter(scale, std::numeric_limits<T>::infinity()) - scale;
-    const Rational error = abs(oracle::toRational(got) - oracle::toRational(expected)) / oracle::toRational(ulp);
+    const Rational error =
+        abs(oracle::toRational(got) - oracle::toRational(expected)) / oracle::toRational(ulp);
     const double ratio = std::ceil(error.convert_to<double>());
     if (!(ratio < 1.8e19)) return kNonFiniteUlps - 1;
     return std::max<std::uint64_t>(1, static_cast<std::uint64_t>(ratio));
@@ -191,10 +205,10 @@ struct FrameFacts {
     Vec2<T> start{};
     ExactFrame exact;
     FrameResult<T> rounded;
-    std::vector<Cell> clipTiles;  ///< first-step contacts that clip a corner
-    std::vector<Cell> missTiles;  ///< corner-missed tiles in the swept bounds, never touched exactly
-    bool cornerPass = false;      ///< some miss is a path exactly through a corner point
-    std::int32_t restingRow = -1; ///< the floor row the box starts resting on, or -1
+    std::vector<Cell> clipTiles;   ///< first-step contacts that clip a corner
+    std::vector<Cell> missTiles;   ///< corner-missed tiles in the swept bounds, never touched exactly
+    bool cornerPass = false;       ///< some miss is a path exactly through a corner point
+    std::int32_t restingRow = -1;  ///< the floor row the box starts resting on, or -1
 };
 
 /// One implementation's verdicts on one scene.
@@ -273,8 +287,9 @@ private:
             const ExactRect sweptA = oracle::rectOf(box);
             const ExactBox moved{{box.pos.x + d.x, box.pos.y + d.y}, box.size};
             const ExactRect sweptB = oracle::rectOf(moved);
-            const ExactRect swept{{std::min(sweptA.min.x, sweptB.min.x), std::min(sweptA.min.y, sweptB.min.y)},
-                                  {std::max(sweptA.max.x, sweptB.max.x), std::max(sweptA.max.y, sweptB.max.y)}};
+            const ExactRect swept{
+                {std::min(sweptA.min.x, sweptB.min.x), std::min(sweptA.min.y, sweptB.min.y)},
+                {std::max(sweptA.max.x, sweptB.max.x), std::max(sweptA.max.y, sweptB.max.y)}};
             for (const Cell& c : solid_) {
                 const ExactRect tile = map_.tileRect(c.i, c.j);
                 if (!oracle::overlaps(swept, tile)) continue;
@@ -286,12 +301,11 @@ private:
                     // on the other axis inside the frame, before the box would leave the tile
                     // on the first: unstopped, it would pass the corner and come out.
                     const oracle::ExtendedTime one = oracle::ExtendedTime::finite(Rational(1));
-                    const bool clips = !s.tie && other.high < own.high && s.overlap.high == other.high &&
-                                       other.high < one;
-                    const bool recorded = std::any_of(f.exact.contacts.begin(), f.exact.contacts.end(),
-                                                      [&](const oracle::ExactContact& e) {
-                                                          return e.step == 1 && e.tile == c;
-                                                      });
+                    const bool clips =
+                        !s.tie && other.high < own.high && s.overlap.high == other.high && other.high < one;
+                    const bool recorded = std::any_of(
+                        f.exact.contacts.begin(), f.exact.contacts.end(),
+                        [&](const oracle::ExactContact& e) { return e.step == 1 && e.tile == c; });
                     if (clips && recorded) f.clipTiles.push_back(c);
                 } else if (s.state == oracle::ExactSweepState::Misses && !s.xTimes.empty && !s.yTimes.empty &&
                            s.xTimes.meetsOpenUnitInterval() && s.yTimes.meetsOpenUnitInterval() &&
@@ -306,7 +320,8 @@ private:
         const Rational bottom = box.pos.y + box.size.y;
         const Rational row = (bottom - map_.origin.y) / map_.tileSize.y;
         if (boost::multiprecision::denominator(row) == 1 && row >= 0 && row < map_.rows) {
-            const auto j = static_cast<std::int32_t>(boost::multiprecision::numerator(row).convert_to<long long>());
+            const auto j =
+                static_cast<std::int32_t>(boost::multiprecision::numerator(row).convert_to<long long>());
             for (const Cell& c : solid_) {
                 if (c.j != j || map_.isSolid(c.i, c.j - 1)) continue;
                 const ExactRect tile = map_.tileRect(c.i, c.j);
@@ -324,7 +339,8 @@ private:
         if (decisionKeys(got.contacts) != decisionKeys(f.exact.contacts)) fail(Metric::Decision);
 
         // Bit for bit against the contract's rounding.
-        bool exact = sameBits(got.position.x, f.rounded.position.x) && sameBits(got.position.y, f.rounded.position.y) &&
+        bool exact = sameBits(got.position.x, f.rounded.position.x) &&
+                     sameBits(got.position.y, f.rounded.position.y) &&
                      got.contacts.size() == f.rounded.contacts.size() &&
                      got.startOverlaps.size() == f.rounded.startOverlaps.size();
         for (std::size_t n = 0; exact && n < got.contacts.size(); ++n) {
@@ -336,8 +352,9 @@ private:
             exact = got.startOverlaps[n] == f.rounded.startOverlaps[n];
         if (!exact) fail(Metric::Inexact);
 
-        v.positionUlps = std::max({v.positionUlps, ulpError(got.position.x, f.rounded.position.x, scene_.map.tileSize.x),
-                                   ulpError(got.position.y, f.rounded.position.y, scene_.map.tileSize.y)});
+        v.positionUlps =
+            std::max({v.positionUlps, ulpError(got.position.x, f.rounded.position.x, scene_.map.tileSize.x),
+                      ulpError(got.position.y, f.rounded.position.y, scene_.map.tileSize.y)});
 
         // Frame times of the contacts both report on the same tile, against the contract's
         // (the exact time rounded to nearest), so that a correct resolver reads 0.
@@ -367,11 +384,11 @@ private:
         if (f.restingRow >= 0) {
             v.restingEligible = true;
             for (const Contact<T>& c : got.contacts) {
-                if (c.normal.x == 0 || c.tile.j != f.restingRow || map_.isSolid(c.tile.i, c.tile.j - 1)) continue;
-                const bool exactToo = std::any_of(f.exact.contacts.begin(), f.exact.contacts.end(),
-                                                  [&](const oracle::ExactContact& e) {
-                                                      return e.tile == c.tile && e.normal == c.normal;
-                                                  });
+                if (c.normal.x == 0 || c.tile.j != f.restingRow || map_.isSolid(c.tile.i, c.tile.j - 1))
+                    continue;
+                const bool exactToo = std::any_of(
+                    f.exact.contacts.begin(), f.exact.contacts.end(),
+                    [&](const oracle::ExactContact& e) { return e.tile == c.tile && e.normal == c.normal; });
                 if (!exactToo) fail(Metric::Snag);
             }
         }
@@ -392,7 +409,8 @@ private:
         }
 
         // Ends inside a tile it did not start in: the shared safety rule, no allowance.
-        if (checks::findNewOverlap(scene_.map.view(), edges_, Box<T>{f.start, scene_.box.size}, got.position, scratch_))
+        if (checks::findNewOverlap(scene_.map.view(), edges_, Box<T>{f.start, scene_.box.size}, got.position,
+                                   scratch_))
             fail(Metric::Inside);
     }
 
@@ -429,7 +447,8 @@ std::vector<FrameResult<T>> runFrames(const Scene<T>& scene, Resolve resolve) {
         FrameResult<T> f;
         f.position = r.position;
         f.contacts.assign(contacts.begin(), contacts.begin() + std::max<std::int32_t>(r.contactCount, 0));
-        f.startOverlaps.assign(overlaps.begin(), overlaps.begin() + std::max<std::int32_t>(r.startOverlapCount, 0));
+        f.startOverlaps.assign(overlaps.begin(),
+                               overlaps.begin() + std::max<std::int32_t>(r.startOverlapCount, 0));
         frames.push_back(std::move(f));
         start = r.position;
     }
@@ -459,8 +478,10 @@ std::vector<FrameResult<T>> runImplementation(const Implementation& impl, const 
             return runFrames(scene, [](const SweepInput<T>& in, const ResolveOutput<T>& out) {
                 return bench::resolveMoveGrid(in, out);
             });
-        case ImplementationKind::Core: return runScene(scene);
-        case ImplementationKind::Seed: return oracle::resolveSceneSeed(scene);
+        case ImplementationKind::Core:
+            return runScene(scene);
+        case ImplementationKind::Seed:
+            return oracle::resolveSceneSeed(scene);
         case ImplementationKind::SubstepFloat:
             return oracle::frameResults(oracle::resolveSceneSubstepFloat(scene, impl.substeps));
     }
@@ -528,7 +549,8 @@ void auditScene(const std::vector<Implementation>& impls, const Family& family, 
             cell.epsilonMismatches.resize(kSeedEpsilons.size());
             for (std::size_t k = 0; k < kSeedEpsilons.size(); ++k) {
                 const auto epsilon = static_cast<T>(kSeedEpsilons[k]);
-                if (!judge.decisionsMatch(oracle::resolveSceneSeed(scene, epsilon))) ++cell.epsilonMismatches[k];
+                if (!judge.decisionsMatch(oracle::resolveSceneSeed(scene, epsilon)))
+                    ++cell.epsilonMismatches[k];
             }
         }
     }
@@ -566,7 +588,8 @@ AuditResult runAudit(const AuditConfig& config) {
                 const std::size_t f = static_cast<std::size_t>(t % columns);
                 const std::uint64_t caseIndex = t / columns;
                 const Family& family = result.families[f];
-                if (family.floatToo) auditScene<float>(result.implementations, family, f, config.seed, caseIndex, shards[w]);
+                if (family.floatToo)
+                    auditScene<float>(result.implementations, family, f, config.seed, caseIndex, shards[w]);
                 auditScene<double>(result.implementations, family, f, config.seed, caseIndex, shards[w]);
             }
         } catch (const std::exception& e) {

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "audit/scene_families.h"
+
 #include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
-
-#include "audit/scene_families.h"
 
 // The tolerance audit (`tilesweep audit`): every implementation of the resolver held against the
 // exact reference (oracle/exact) over the scenario families of scene_families.h, frame by frame.
@@ -49,13 +49,22 @@ namespace tilesweep::audit {
 
 /// The tolerances the seed algorithm is re-run with, in fractions of the move, smallest first
 /// (each with both signs: + accepts near misses, - rejects near hits).
-inline const std::vector<double> kSeedEpsilons = {0,     1e-7,  -1e-7, 1e-6, -1e-6, 1e-5, -1e-5,
-                                                  1e-4, -1e-4, 1e-3,  -1e-3, 1e-2, -1e-2};
+inline const std::vector<double> kSeedEpsilons = {0,    1e-7,  -1e-7, 1e-6,  -1e-6, 1e-5, -1e-5,
+                                                  1e-4, -1e-4, 1e-3,  -1e-3, 1e-2,  -1e-2};
 
 /// The per-scene failure figures, in report order; Position and Time select the worst scene of
 /// a cell by the size of the error rather than by a count.
 enum class Metric : std::uint8_t {
-    Decision, Inexact, Tunnel, Inside, ClipMiss, CornerHit, Snag, NonFinite, Position, Time
+    Decision,
+    Inexact,
+    Tunnel,
+    Inside,
+    ClipMiss,
+    CornerHit,
+    Snag,
+    NonFinite,
+    Position,
+    Time
 };
 constexpr std::size_t kMetricCount = 10;
 
@@ -73,10 +82,10 @@ enum class ImplementationKind : std::uint8_t {
 
 /// One row of the report.
 struct Implementation {
-    std::string name;          ///< "core-float", "seed-double", "substep16-float", ...
+    std::string name;  ///< "core-float", "seed-double", "substep16-float", ...
     ImplementationKind kind = ImplementationKind::Core;
-    bool isDouble = false;     ///< the scalar type it runs in
-    std::int64_t substeps = 0; ///< N, for SubstepFloat
+    bool isDouble = false;      ///< the scalar type it runs in
+    std::int64_t substeps = 0;  ///< N, for SubstepFloat
 };
 
 /// Every implementation of the audit, in report order.
@@ -94,9 +103,9 @@ struct WorstCase {
 struct CellStats {
     std::uint64_t scenes = 0;
     std::array<std::uint64_t, kMetricCount> failures{};  ///< scenes that failed each metric
-    std::uint64_t clipEligible = 0;     ///< scenes whose exact first step clips a corner
-    std::uint64_t cornerEligible = 0;   ///< scenes with a corner-missed tile in the swept bounds
-    std::uint64_t restingEligible = 0;  ///< scenes with a frame that starts resting on a floor
+    std::uint64_t clipEligible = 0;                      ///< scenes whose exact first step clips a corner
+    std::uint64_t cornerEligible = 0;         ///< scenes with a corner-missed tile in the swept bounds
+    std::uint64_t restingEligible = 0;        ///< scenes with a frame that starts resting on a floor
     std::vector<std::uint64_t> positionUlps;  ///< per scene, the largest error; kNonFiniteUlps if not finite
     std::vector<double> timeErrors;           ///< per scene with a shared contact, the largest error
     std::vector<std::uint64_t> epsilonMismatches;  ///< per kSeedEpsilons entry (seed rows only)
@@ -129,7 +138,7 @@ struct Coverage {
 
 /// What to run.
 struct AuditConfig {
-    std::uint64_t cases = 5000;      ///< scenes per family (per scalar type)
+    std::uint64_t cases = 5000;     ///< scenes per family (per scalar type)
     std::uint64_t seed = 20261122;  ///< the seed every scene derives from
     int jobs = 0;                   ///< worker threads; 0: all cores
     std::string commandLine;        ///< recorded in the report, for rerunning it
@@ -142,7 +151,7 @@ struct AuditResult {
     AuditConfig config;
     std::vector<Implementation> implementations;
     std::vector<Family> families;
-    std::vector<std::vector<CellStats>> cells;  ///< [implementation][family]; sorted vectors
+    std::vector<std::vector<CellStats>> cells;      ///< [implementation][family]; sorted vectors
     std::vector<std::array<Coverage, 2>> coverage;  ///< [family][0 float, 1 double]
     double seconds = 0;
     int jobs = 1;

@@ -2,6 +2,12 @@
 // The audit's output: report.md (a table per metric), report.json (every figure) and the worst
 // scene of every failing cell as a replayable scene line. The charts are drawn from report.json
 // by scripts/plots.py (matplotlib), the one way every chart is drawn; scripts/audit.sh runs both.
+#include "audit/audit.h"
+
+#include "tilesweep/scene/scene.h"
+
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,14 +15,10 @@
 #include <fstream>
 #include <functional>
 #include <limits>
-#include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include "audit/audit.h"
-#include "tilesweep/scene/scene.h"
 
 namespace tilesweep::audit {
 namespace {
@@ -31,8 +33,14 @@ struct Bucket {
     const char* label;
 };
 const std::vector<Bucket> kHistogram = {
-    {0, "0"},          {1, "1"},          {3, "2-3"},           {15, "4-15"},
-    {255, "16-255"},   {65535, "256-65535"}, {0xFFFFFFFFull, "2^16-2^32"}, {kNonFiniteUlps - 1, ">2^32"},
+    {0, "0"},
+    {1, "1"},
+    {3, "2-3"},
+    {15, "4-15"},
+    {255, "16-255"},
+    {65535, "256-65535"},
+    {0xFFFFFFFFull, "2^16-2^32"},
+    {kNonFiniteUlps - 1, ">2^32"},
     {kNonFiniteUlps, "non-finite"},
 };
 
@@ -130,7 +138,6 @@ void writeText(const std::filesystem::path& path, const std::string& text) {
 
 // ---- Markdown -------------------------------------------------------------------------------
 
-
 std::string table(const AuditResult& r, const std::function<std::string(const CellStats&)>& text) {
     std::ostringstream s;
     s << "| implementation |";
@@ -141,7 +148,8 @@ std::string table(const AuditResult& r, const std::function<std::string(const Ce
     for (std::size_t i = 0; i < r.implementations.size(); ++i) {
         s << "| " << r.implementations[i].name << " |";
         for (std::size_t c = 0; c < r.families.size(); ++c)
-            s << ' ' << (runs(r.implementations[i], r.families[c]) ? text(r.cells[i][c]) : std::string("—")) << " |";
+            s << ' ' << (runs(r.implementations[i], r.families[c]) ? text(r.cells[i][c]) : std::string("—"))
+              << " |";
         s << '\n';
     }
     return s.str();
@@ -166,8 +174,9 @@ bool productionClean(const AuditResult& r, std::string& problems) {
                 if (cell.failures[m] == 0) continue;
                 clean = false;
                 problems += "- " + r.implementations[i].name + " on " + r.families[c].name + ": " +
-                            std::to_string(cell.failures[m]) + " scene(s) fail `" + metricName(static_cast<Metric>(m)) +
-                            "`; worst: `" + worstFileName(r.implementations[i], r.families[c]) + "`\n";
+                            std::to_string(cell.failures[m]) + " scene(s) fail `" +
+                            metricName(static_cast<Metric>(m)) + "`; worst: `" +
+                            worstFileName(r.implementations[i], r.families[c]) + "`\n";
             }
         }
     }
@@ -189,50 +198,74 @@ std::string markdown(const AuditResult& r) {
 
     std::string problems;
     if (productionClean(r, problems))
-        s << "**Production rows (core-float, core-double): zero on every figure of every family** — no decision "
-             "different, bit-for-bit the contract's rounded result (position within the rounding rule: 0 ulps), "
+        s << "**Production rows (core-float, core-double): zero on every figure of every family** — no "
+             "decision "
+             "different, bit-for-bit the contract's rounded result (position within the rounding rule: 0 "
+             "ulps), "
              "no tunnelling, never inside a tile.\n\n";
     else
         s << "**PRODUCTION ROWS ARE NOT ZERO** — a bug in the core:\n\n" << problems << "\n";
 
     s << "## What is measured\n\n"
-         "A scene counts once in a figure whichever of its frames failed. Each frame of an implementation is judged "
-         "against the exact frame that starts where *that implementation's* frame starts (the exact reference is "
-         "re-run from its start when it has drifted), so one early error is not counted again on every later frame.\n\n"
+         "A scene counts once in a figure whichever of its frames failed. Each frame of an implementation is "
+         "judged "
+         "against the exact frame that starts where *that implementation's* frame starts (the exact "
+         "reference is "
+         "re-run from its start when it has drifted), so one early error is not counted again on every later "
+         "frame.\n\n"
          "| figure | a scene fails it when |\n|---|---|\n"
          "| decision | the multiset of (tile, normal) contacts of some frame differs from the exact one |\n"
-         "| inexact | anything differs from the contract's result bit for bit: position (exact, rounded toward the start), "
+         "| inexact | anything differs from the contract's result bit for bit: position (exact, rounded "
+         "toward the start), "
          "contacts in order with their frame times (rounded to nearest), start overlaps |\n"
-         "| tunnel | the box ends entirely beyond a tile the exact frame stops at, on that contact's axis (its trailing edge "
+         "| tunnel | the box ends entirely beyond a tile the exact frame stops at, on that contact's axis "
+         "(its trailing edge "
          "at or past the tile's far face) |\n"
-         "| inside | the box ends strictly overlapping a solid tile it did not overlap at its frame's start |\n"
-         "| clip-miss | the exact first step hits a tile by clipping its corner (it enters on one axis, not a tie, and the "
-         "overlap window would close on the other axis before the frame ends: unstopped, it would pass the corner and "
+         "| inside | the box ends strictly overlapping a solid tile it did not overlap at its frame's start "
+         "|\n"
+         "| clip-miss | the exact first step hits a tile by clipping its corner (it enters on one axis, not "
+         "a tie, and the "
+         "overlap window would close on the other axis before the frame ends: unstopped, it would pass the "
+         "corner and "
          "come out) and the implementation reports no contact with that tile |\n"
-         "| corner-hit | the straight move's swept bounds overlap a tile whose overlap set I is empty (the contract's corner "
+         "| corner-hit | the straight move's swept bounds overlap a tile whose overlap set I is empty (the "
+         "contract's corner "
          "miss, a path exactly through its corner point included), the exact frame never touches it, and the "
          "implementation reports a contact with it |\n"
-         "| snag | the frame starts resting on a floor (bottom on the top of a solid tile it overlaps on x, the cell "
-         "above empty) and the implementation reports an x contact on a tile of that floor row that the exact frame "
+         "| snag | the frame starts resting on a floor (bottom on the top of a solid tile it overlaps on x, "
+         "the cell "
+         "above empty) and the implementation reports an x contact on a tile of that floor row that the "
+         "exact frame "
          "does not |\n"
          "| non-finite | an infinite or NaN position |\n"
-         "| position | error of the final position against the contract's (exact, rounded toward the start), in ulps of "
-         "the scalar type at the expected coordinate's magnitude, floored at the tile size: \\|got − want\\| / "
-         "ulp(max(\\|want\\|, tile)), rounded up (0 only when equal); largest axis and frame. Counting the representable "
+         "| position | error of the final position against the contract's (exact, rounded toward the start), "
+         "in ulps of "
+         "the scalar type at the expected coordinate's magnitude, floored at the tile size: \\|got − want\\| "
+         "/ "
+         "ulp(max(\\|want\\|, tile)), rounded up (0 only when equal); largest axis and frame. Counting the "
+         "representable "
          "values in between would call 1e-7 against 0 a billion ulps |\n"
-         "| time | \\|t − t_contract\\| over contacts reported on the same tile, in fractions of the frame, t_contract being "
+         "| time | \\|t − t_contract\\| over contacts reported on the same tile, in fractions of the frame, "
+         "t_contract being "
          "the exact time rounded to nearest (so a correct resolver reads 0). The seed reports "
-         "its `time` as a fraction of that test's velocity and the substep loops k/N, as documented in oracle/README.md |\n\n";
+         "its `time` as a fraction of that test's velocity and the substep loops k/N, as documented in "
+         "oracle/README.md |\n\n";
     s << "Rates are % of scenes; `k/m` figures are failures over the scenes where the event can happen. "
-         "`—`: not run (float cannot hold those magnitudes' tile maps at this tile size; the double rows go on).\n\n";
+         "`—`: not run (float cannot hold those magnitudes' tile maps at this tile size; the double rows go "
+         "on).\n\n";
 
     s << "## Families and what they cover\n\n"
-         "Counted on the exact first frame, float / double scenes. far-* are the uniform, near-corner, tie and seam "
-         "generators (in turn) with the map's origin moved to the magnitude, rounded down to whole tiles; case k of "
+         "Counted on the exact first frame, float / double scenes. far-* are the uniform, near-corner, tie "
+         "and seam "
+         "generators (in turn) with the map's origin moved to the magnitude, rounded down to whole tiles; "
+         "case k of "
          "every far-* family is the same local scene.\n\n"
-         "The last two columns are the production resolver's own: the scenes where its fast path needed an exact "
-         "refinement (filtered) and where it fell back to the exact lattice (exact), of all the scene's frames.\n\n"
-         "| family | scenes | hit | two-step | tie | corner clip | corner miss | corner pass | start overlap | resting | filtered | exact |\n"
+         "The last two columns are the production resolver's own: the scenes where its fast path needed an "
+         "exact "
+         "refinement (filtered) and where it fell back to the exact lattice (exact), of all the scene's "
+         "frames.\n\n"
+         "| family | scenes | hit | two-step | tie | corner clip | corner miss | corner pass | start overlap "
+         "| resting | filtered | exact |\n"
          "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (std::size_t c = 0; c < r.families.size(); ++c) {
         const auto& cv = r.coverage[c];
@@ -241,11 +274,11 @@ std::string markdown(const AuditResult& r) {
             return out + " / " + percent(cv[1].*field, cv[1].scenes);
         };
         s << "| " << r.families[c].name << " | " << cv[0].scenes << " / " << cv[1].scenes << " | "
-          << both(&Coverage::hit) << " | " << both(&Coverage::twoStep) << " | " << both(&Coverage::tie) << " | "
-          << both(&Coverage::cornerClip) << " | " << both(&Coverage::cornerMiss) << " | "
+          << both(&Coverage::hit) << " | " << both(&Coverage::twoStep) << " | " << both(&Coverage::tie)
+          << " | " << both(&Coverage::cornerClip) << " | " << both(&Coverage::cornerMiss) << " | "
           << both(&Coverage::cornerPass) << " | " << both(&Coverage::startOverlap) << " | "
-          << both(&Coverage::resting) << " | " << both(&Coverage::filtered) << " | " << both(&Coverage::exactPath)
-          << " |\n";
+          << both(&Coverage::resting) << " | " << both(&Coverage::filtered) << " | "
+          << both(&Coverage::exactPath) << " |\n";
     }
 
     auto section = [&](const std::string& title, const std::string& note,
@@ -254,26 +287,36 @@ std::string markdown(const AuditResult& r) {
         if (!note.empty()) s << note << "\n\n";
         s << table(r, text);
     };
-    section("Decisions differ (% of scenes)", "", [](const CellStats& c) { return countCell(c, Metric::Decision); });
+    section("Decisions differ (% of scenes)", "",
+            [](const CellStats& c) { return countCell(c, Metric::Decision); });
     section("Not bit-for-bit the contract (% of scenes)", "",
             [](const CellStats& c) { return countCell(c, Metric::Inexact); });
     section("Tunnelling (% of scenes)", "", [](const CellStats& c) { return countCell(c, Metric::Tunnel); });
-    section("Ends inside a tile (% of scenes)", "", [](const CellStats& c) { return countCell(c, Metric::Inside); });
-    section("Misses a clipped corner (failures / scenes with a clipped corner)", "",
-            [](const CellStats& c) { return eligibleCell(c.failures[static_cast<std::size_t>(Metric::ClipMiss)], c.clipEligible); });
-    section("Hits a missed corner (failures / scenes with a corner-missed tile)", "",
-            [](const CellStats& c) { return eligibleCell(c.failures[static_cast<std::size_t>(Metric::CornerHit)], c.cornerEligible); });
-    section("Snags on a seam (failures / scenes resting on a floor)", "",
-            [](const CellStats& c) { return eligibleCell(c.failures[static_cast<std::size_t>(Metric::Snag)], c.restingEligible); });
-    section("Non-finite position (% of scenes)", "", [](const CellStats& c) { return countCell(c, Metric::NonFinite); });
-    section("Position error, max (ulps)", "",
-            [](const CellStats& c) { return c.positionUlps.empty() ? std::string("—") : ulpsText(c.positionUlps.back()); });
+    section("Ends inside a tile (% of scenes)", "",
+            [](const CellStats& c) { return countCell(c, Metric::Inside); });
+    section("Misses a clipped corner (failures / scenes with a clipped corner)", "", [](const CellStats& c) {
+        return eligibleCell(c.failures[static_cast<std::size_t>(Metric::ClipMiss)], c.clipEligible);
+    });
+    section("Hits a missed corner (failures / scenes with a corner-missed tile)", "", [](const CellStats& c) {
+        return eligibleCell(c.failures[static_cast<std::size_t>(Metric::CornerHit)], c.cornerEligible);
+    });
+    section("Snags on a seam (failures / scenes resting on a floor)", "", [](const CellStats& c) {
+        return eligibleCell(c.failures[static_cast<std::size_t>(Metric::Snag)], c.restingEligible);
+    });
+    section("Non-finite position (% of scenes)", "",
+            [](const CellStats& c) { return countCell(c, Metric::NonFinite); });
+    section("Position error, max (ulps)", "", [](const CellStats& c) {
+        return c.positionUlps.empty() ? std::string("—") : ulpsText(c.positionUlps.back());
+    });
     section("Position error, 99th percentile (ulps)", "",
             [](const CellStats& c) { return ulpsText(quantile(c.positionUlps, 0.99)); });
-    section("Frame-time error, max (fraction of the frame)", "Over the contacts both report on the same tile.",
-            [](const CellStats& c) { return c.timeErrors.empty() ? std::string("n/a") : number(c.timeErrors.back()); });
-    section("Frame-time error, 99th percentile", "",
-            [](const CellStats& c) { return c.timeErrors.empty() ? std::string("n/a") : number(quantile(c.timeErrors, 0.99)); });
+    section("Frame-time error, max (fraction of the frame)",
+            "Over the contacts both report on the same tile.", [](const CellStats& c) {
+                return c.timeErrors.empty() ? std::string("n/a") : number(c.timeErrors.back());
+            });
+    section("Frame-time error, 99th percentile", "", [](const CellStats& c) {
+        return c.timeErrors.empty() ? std::string("n/a") : number(quantile(c.timeErrors, 0.99));
+    });
 
     // Histogram over every family, one row per implementation.
     s << "\n## Position error histogram (ulps, scenes over all families)\n\n| implementation |";
@@ -283,7 +326,8 @@ std::string markdown(const AuditResult& r) {
     s << '\n';
     for (std::size_t i = 0; i < r.implementations.size(); ++i) {
         std::vector<std::uint64_t> all;
-        for (const CellStats& c : r.cells[i]) all.insert(all.end(), c.positionUlps.begin(), c.positionUlps.end());
+        for (const CellStats& c : r.cells[i])
+            all.insert(all.end(), c.positionUlps.begin(), c.positionUlps.end());
         const std::vector<std::uint64_t> h = histogramOf(all);
         s << "| " << r.implementations[i].name << " |";
         for (const std::uint64_t n : h) s << ' ' << n << " |";
@@ -292,38 +336,51 @@ std::string markdown(const AuditResult& r) {
 
     // The epsilon question.
     s << "\n## Would a tolerance have fixed the naive variants?\n\n"
-         "**Definition.** The seed algorithm compares times (`time > disjoint`, `timeX < 0`, `timeX > 1`). It is "
+         "**Definition.** The seed algorithm compares times (`time > disjoint`, `timeX < 0`, `timeX > 1`). "
+         "It is "
          "re-run with a tolerance ε, in fractions of the move, in each of those comparisons: "
          "`collided = !(time > disjoint + ε)`, rejected when `(timeX < −ε && timeY < −ε) || timeX > 1 + ε || "
          "timeY > 1 + ε` (`oracle/seed/seed_resolve.h`, default ε = 0 is the article). ε runs over "
          "{0, ±1e-7, ±1e-6, ±1e-5, ±1e-4, ±1e-3, ±1e-2} (+ accepts near misses, − rejects near hits). "
-         "The cell gives the smallest |ε| at which its decisions (tiles and normals, every frame) match the exact "
-         "ones on **every** scene of the family, or **none** when no ε in the list does; below it, the best ε and the "
-         "share of scenes still wrong there. `none` means a tolerance cannot repair it: the flaws are not near-ties "
-         "(the disjoint test compares a distance with a time, moving left or up never hits, a zero velocity component "
-         "divides by zero, no slide) — and a tie decided wrongly at 1 ulp cannot be fixed by any ε either, since "
-         "moving ε moves the wrong side of the tie with it. The substep loops have no tolerance in their comparisons: "
-         "their errors come from sampling the path (a window shorter than a substep is missed, a hit is reported up "
+         "The cell gives the smallest |ε| at which its decisions (tiles and normals, every frame) match the "
+         "exact "
+         "ones on **every** scene of the family, or **none** when no ε in the list does; below it, the best "
+         "ε and the "
+         "share of scenes still wrong there. `none` means a tolerance cannot repair it: the flaws are not "
+         "near-ties "
+         "(the disjoint test compares a distance with a time, moving left or up never hits, a zero velocity "
+         "component "
+         "divides by zero, no slide) — and a tie decided wrongly at 1 ulp cannot be fixed by any ε either, "
+         "since "
+         "moving ε moves the wrong side of the tie with it. The substep loops have no tolerance in their "
+         "comparisons: "
+         "their errors come from sampling the path (a window shorter than a substep is missed, a hit is "
+         "reported up "
          "to a substep late), which no ε repairs, so their cells read `n/a (sampling)` when they differ.\n\n";
     s << table(r, [&](const CellStats& c) -> std::string {
         if (c.epsilonMismatches.empty()) {
-            return c.failures[static_cast<std::size_t>(Metric::Decision)] == 0 ? std::string("0 (exact)")
-                                                                               : std::string("n/a (sampling)");
+            return c.failures[static_cast<std::size_t>(Metric::Decision)] == 0
+                       ? std::string("0 (exact)")
+                       : std::string("n/a (sampling)");
         }
         std::size_t best = 0;
         for (std::size_t k = 1; k < c.epsilonMismatches.size(); ++k)
             if (c.epsilonMismatches[k] < c.epsilonMismatches[best]) best = k;
         char bestText[64];
         std::snprintf(bestText, sizeof bestText, "%g", kSeedEpsilons[best]);
-        return smallestFixingEpsilon(c) + " (best ε=" + bestText + ": " + percent(c.epsilonMismatches[best], c.scenes) +
-               " wrong)";
+        return smallestFixingEpsilon(c) + " (best ε=" + bestText + ": " +
+               percent(c.epsilonMismatches[best], c.scenes) + " wrong)";
     });
 
     s << "\n## Worst scenes\n\n"
-         "The worst scene of every failing cell, one line per failing figure (largest position error; largest time "
-         "error for `time`), in `worst/<implementation>__<family>.jsonl` (`^` written as `p`). Each line is a scene "
-         "with every number a hexfloat, plus `implementation`, `family`, `metric`, `score`, `scalar`, `seed` and "
-         "`case`: replay it with `tilesweep resolve --scalar <scalar> FILE` (add `--resolver exact` for the exact "
+         "The worst scene of every failing cell, one line per failing figure (largest position error; "
+         "largest time "
+         "error for `time`), in `worst/<implementation>__<family>.jsonl` (`^` written as `p`). Each line is "
+         "a scene "
+         "with every number a hexfloat, plus `implementation`, `family`, `metric`, `score`, `scalar`, `seed` "
+         "and "
+         "`case`: replay it with `tilesweep resolve --scalar <scalar> FILE` (add `--resolver exact` for the "
+         "exact "
          "answer, `--resolver seed` or `--resolver substep-float:N` for the naive ones) or draw it with "
          "`tilesweep render`.\n\n";
     for (std::size_t i = 0; i < r.implementations.size(); ++i) {
@@ -332,7 +389,8 @@ std::string markdown(const AuditResult& r) {
             if (runs(r.implementations[i], r.families[c]) && cellFailed(r.cells[i][c]))
                 files.push_back(worstFileName(r.implementations[i], r.families[c]));
         s << "- " << r.implementations[i].name << ": "
-          << (files.empty() ? std::string("none (no failure)") : std::to_string(files.size()) + " files") << '\n';
+          << (files.empty() ? std::string("none (no failure)") : std::to_string(files.size()) + " files")
+          << '\n';
     }
 
     s << "\n## Plots\n\n![error against magnitude](error_vs_magnitude.svg)\n\n"
@@ -361,24 +419,26 @@ json reportJson(const AuditResult& r) {
         for (std::size_t k = 0; k < 2; ++k) {
             const Coverage& cv = r.coverage[c][k];
             fam["coverage"][k == 0 ? "float" : "double"] = {
-                {"scenes", cv.scenes},         {"hit", cv.hit},
-                {"two_step", cv.twoStep},      {"tie", cv.tie},
+                {"scenes", cv.scenes},          {"hit", cv.hit},
+                {"two_step", cv.twoStep},       {"tie", cv.tie},
                 {"corner_clip", cv.cornerClip}, {"corner_miss", cv.cornerMiss},
                 {"corner_pass", cv.cornerPass}, {"start_overlap", cv.startOverlap},
-                {"resting", cv.resting},       {"filtered", cv.filtered},
+                {"resting", cv.resting},        {"filtered", cv.filtered},
                 {"exact_path", cv.exactPath}};
         }
         j["families"].push_back(fam);
     }
     for (std::size_t i = 0; i < r.implementations.size(); ++i) {
         const Implementation& impl = r.implementations[i];
-        json row = {{"name", impl.name}, {"scalar", impl.isDouble ? "double" : "float"}, {"substeps", impl.substeps}};
+        json row = {
+            {"name", impl.name}, {"scalar", impl.isDouble ? "double" : "float"}, {"substeps", impl.substeps}};
         for (std::size_t c = 0; c < r.families.size(); ++c) {
             if (!runs(impl, r.families[c])) continue;
             const CellStats& cell = r.cells[i][c];
             json cj;
             cj["scenes"] = cell.scenes;
-            for (std::size_t m = 0; m < kMetricCount; ++m) cj["failures"][metricName(static_cast<Metric>(m))] = cell.failures[m];
+            for (std::size_t m = 0; m < kMetricCount; ++m)
+                cj["failures"][metricName(static_cast<Metric>(m))] = cell.failures[m];
             cj["eligible"] = {{"clip-miss", cell.clipEligible},
                               {"corner-hit", cell.cornerEligible},
                               {"snag", cell.restingEligible}};
@@ -387,9 +447,11 @@ json reportJson(const AuditResult& r) {
                 {"p99", ulpsJson(quantile(cell.positionUlps, 0.99))},
                 {"p50", ulpsJson(quantile(cell.positionUlps, 0.5))},
                 {"histogram", histogramOf(cell.positionUlps)}};
-            cj["time_error"] = {{"scenes", cell.timeErrors.size()},
-                                {"max", cell.timeErrors.empty() ? json(nullptr) : finiteOrString(cell.timeErrors.back())},
-                                {"p99", cell.timeErrors.empty() ? json(nullptr) : finiteOrString(quantile(cell.timeErrors, 0.99))}};
+            cj["time_error"] = {
+                {"scenes", cell.timeErrors.size()},
+                {"max", cell.timeErrors.empty() ? json(nullptr) : finiteOrString(cell.timeErrors.back())},
+                {"p99",
+                 cell.timeErrors.empty() ? json(nullptr) : finiteOrString(quantile(cell.timeErrors, 0.99))}};
             if (!cell.epsilonMismatches.empty()) {
                 cj["epsilon_mismatches"] = cell.epsilonMismatches;
                 cj["smallest_fixing_epsilon"] = smallestFixingEpsilon(cell);
@@ -398,7 +460,8 @@ json reportJson(const AuditResult& r) {
                 const WorstCase& w = cell.worst[m];
                 if (!w.found) continue;
                 cj["worst"][metricName(static_cast<Metric>(m))] = {
-                    {"case", w.caseIndex}, {"score", finiteOrString(w.score)},
+                    {"case", w.caseIndex},
+                    {"score", finiteOrString(w.score)},
                     {"file", worstFileName(impl, r.families[c])}};
             }
             row["families"][r.families[c].name] = cj;
@@ -426,9 +489,10 @@ void writeAuditReport(const AuditResult& result, const std::string& directory) {
             std::string lines;
             for (std::size_t m = 0; m < kMetricCount; ++m) {
                 if (cell.failures[m] == 0 || !cell.worst[m].found) continue;
-                lines += impl.isDouble
-                             ? worstLine<double>(family, impl, static_cast<Metric>(m), cell.worst[m], result.config.seed)
-                             : worstLine<float>(family, impl, static_cast<Metric>(m), cell.worst[m], result.config.seed);
+                lines += impl.isDouble ? worstLine<double>(family, impl, static_cast<Metric>(m),
+                                                           cell.worst[m], result.config.seed)
+                                       : worstLine<float>(family, impl, static_cast<Metric>(m), cell.worst[m],
+                                                          result.config.seed);
                 lines += '\n';
             }
             if (!lines.empty()) writeText(dir / worstFileName(impl, family), lines);

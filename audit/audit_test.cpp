@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 // The audit on a tiny budget: the production rows read zero, the naive rows show their known
 // flaws, and every generated scene is replayable (it survives formatScene/parseScene bit for bit).
+#include "audit/audit.h"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
 #include <string>
-
-#include "audit/audit.h"
 
 namespace tilesweep::audit {
 namespace {
@@ -35,7 +35,8 @@ TEST(Audit, productionRowsReadZeroOnEveryFamily) {
             const CellStats& c = r.cell(impl, f.name);
             EXPECT_EQ(c.scenes, kTinyCases) << impl << " " << f.name;
             for (std::size_t m = 0; m < kMetricCount; ++m)
-                EXPECT_EQ(c.failures[m], 0u) << impl << " " << f.name << " " << metricName(static_cast<Metric>(m));
+                EXPECT_EQ(c.failures[m], 0u)
+                    << impl << " " << f.name << " " << metricName(static_cast<Metric>(m));
             ASSERT_FALSE(c.positionUlps.empty());
             EXPECT_EQ(c.positionUlps.back(), 0u) << impl << " " << f.name;
         }
@@ -47,7 +48,8 @@ TEST(Audit, seedVariantShowsItsKnownFlaws) {
     for (const std::string impl : {"seed-float", "seed-double"}) {
         // Moving left or up it never hits anything; without a slide it never matches a two-step frame.
         EXPECT_GT(failures(r.cell(impl, "uniform"), Metric::Decision), 0u) << impl;
-        EXPECT_GT(failures(r.cell(impl, "uniform"), Metric::Tunnel) + failures(r.cell(impl, "uniform"), Metric::Inside),
+        EXPECT_GT(failures(r.cell(impl, "uniform"), Metric::Tunnel) +
+                      failures(r.cell(impl, "uniform"), Metric::Inside),
                   0u)
             << impl;
         // A box falling straight onto a floor divides by zero and falls through.

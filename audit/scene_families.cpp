@@ -30,19 +30,27 @@ std::uint64_t hashName(const std::string& name) {
 
 std::vector<Family> auditFamilies() {
     std::vector<Family> f = {
-        {"uniform", FamilyKind::Uniform, 0, true},       {"near-corner", FamilyKind::NearCorner, 0, true},
-        {"tie", FamilyKind::Tie, 0, true},               {"seam", FamilyKind::Seam, 0, true},
-        {"tiny", FamilyKind::Tiny, 0, true},             {"high-speed", FamilyKind::HighSpeed, 0, true},
-        {"far-1", FamilyKind::Far, 1, true},             {"far-1e3", FamilyKind::Far, 1e3, true},
-        {"far-1e5", FamilyKind::Far, 1e5, true},         {"far-1e6", FamilyKind::Far, 1e6, true},
-        {"far-2^23", FamilyKind::Far, 8388608.0, true},  {"far-1e9", FamilyKind::Far, 1e9, false},
-        {"far-1e12", FamilyKind::Far, 1e12, false},      {"far-2^52", FamilyKind::Far, 4503599627370496.0, false},
+        {"uniform", FamilyKind::Uniform, 0, true},
+        {"near-corner", FamilyKind::NearCorner, 0, true},
+        {"tie", FamilyKind::Tie, 0, true},
+        {"seam", FamilyKind::Seam, 0, true},
+        {"tiny", FamilyKind::Tiny, 0, true},
+        {"high-speed", FamilyKind::HighSpeed, 0, true},
+        {"far-1", FamilyKind::Far, 1, true},
+        {"far-1e3", FamilyKind::Far, 1e3, true},
+        {"far-1e5", FamilyKind::Far, 1e5, true},
+        {"far-1e6", FamilyKind::Far, 1e6, true},
+        {"far-2^23", FamilyKind::Far, 8388608.0, true},
+        {"far-1e9", FamilyKind::Far, 1e9, false},
+        {"far-1e12", FamilyKind::Far, 1e12, false},
+        {"far-2^52", FamilyKind::Far, 4503599627370496.0, false},
     };
     // Every family of the property suite but `extreme`, whose moves of up to the largest finite
     // value would send the grid and substep baselines through billions of cells.
     for (const scenarios::Family suite : scenarios::allFamilies()) {
         if (suite == scenarios::Family::Extreme) continue;
-        f.push_back({std::string("suite:") + scenarios::familyName(suite), FamilyKind::Suite, 0, true, suite});
+        f.push_back(
+            {std::string("suite:") + scenarios::familyName(suite), FamilyKind::Suite, 0, true, suite});
     }
     return f;
 }
@@ -57,19 +65,33 @@ Scene<T> generateScene(const Family& family, std::uint64_t seed, std::uint64_t c
     const double m = family.magnitude;
     Scene<T> s;
     switch (family.kind) {
-        case FamilyKind::Uniform: s = scenarios::drawScene<T>(DrawnFamily::Uniform, sceneSeed, m); break;
-        case FamilyKind::NearCorner: s = scenarios::drawScene<T>(DrawnFamily::NearCorner, sceneSeed, m); break;
-        case FamilyKind::Tie: s = scenarios::drawScene<T>(DrawnFamily::Tie, sceneSeed, m); break;
-        case FamilyKind::Seam: s = scenarios::drawScene<T>(DrawnFamily::Seam, sceneSeed, m); break;
-        case FamilyKind::Tiny: s = scenarios::drawScene<T>(DrawnFamily::Tiny, sceneSeed, m); break;
-        case FamilyKind::HighSpeed: s = scenarios::drawScene<T>(DrawnFamily::HighSpeed, sceneSeed, m); break;
+        case FamilyKind::Uniform:
+            s = scenarios::drawScene<T>(DrawnFamily::Uniform, sceneSeed, m);
+            break;
+        case FamilyKind::NearCorner:
+            s = scenarios::drawScene<T>(DrawnFamily::NearCorner, sceneSeed, m);
+            break;
+        case FamilyKind::Tie:
+            s = scenarios::drawScene<T>(DrawnFamily::Tie, sceneSeed, m);
+            break;
+        case FamilyKind::Seam:
+            s = scenarios::drawScene<T>(DrawnFamily::Seam, sceneSeed, m);
+            break;
+        case FamilyKind::Tiny:
+            s = scenarios::drawScene<T>(DrawnFamily::Tiny, sceneSeed, m);
+            break;
+        case FamilyKind::HighSpeed:
+            s = scenarios::drawScene<T>(DrawnFamily::HighSpeed, sceneSeed, m);
+            break;
         case FamilyKind::Far: {
-            static constexpr DrawnFamily kFar[] = {DrawnFamily::Uniform, DrawnFamily::NearCorner, DrawnFamily::Tie,
-                                                   DrawnFamily::Seam};
+            static constexpr DrawnFamily kFar[] = {DrawnFamily::Uniform, DrawnFamily::NearCorner,
+                                                   DrawnFamily::Tie, DrawnFamily::Seam};
             s = scenarios::drawScene<T>(kFar[caseIndex % 4], sceneSeed, m);
             break;
         }
-        case FamilyKind::Suite: s = scenarios::buildScene<T>(family.suite, sceneSeed).scene; break;
+        case FamilyKind::Suite:
+            s = scenarios::buildScene<T>(family.suite, sceneSeed).scene;
+            break;
     }
     s.name = "audit/" + family.name + "/" + std::to_string(caseIndex);
     return s;

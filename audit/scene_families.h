@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cstdint>
-#include <string>
-#include <vector>
-
 #include "tilesweep/scenarios/drawn_families.h"
 #include "tilesweep/scenarios/families.h"
 #include "tilesweep/scene/scene.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
 
 // The columns of the audit, over the scenario library (scenarios/): its drawn families, the
 // same scenes translated far from the origin, and every family of the property suite, so that
@@ -31,10 +31,10 @@ enum class FamilyKind : std::uint8_t {
 
 /// One column of the report.
 struct Family {
-    std::string name;       ///< "uniform", "near-corner", ..., "far-1e6"
+    std::string name;  ///< "uniform", "near-corner", ..., "far-1e6"
     FamilyKind kind = FamilyKind::Uniform;
-    double magnitude = 0;   ///< the translation of the scene (rounded down to whole tiles)
-    bool floatToo = true;   ///< false: only the double implementations run it (beyond 2^23)
+    double magnitude = 0;  ///< the translation of the scene (rounded down to whole tiles)
+    bool floatToo = true;  ///< false: only the double implementations run it (beyond 2^23)
     scenarios::Family suite = scenarios::Family::Mixed;  ///< for FamilyKind::Suite
 };
 

@@ -12,13 +12,13 @@
 //   walking  on a floor, 1.5 px a frame sideways plus gravity
 //   falling  in open air, 5 px a frame down (the cheap exit: no solid cell in the swept bounds)
 //   fast     dashing 30 px a frame along a floor toward the walls
+#include "tilesweep/batch.h"
+
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
 #include <random>
 #include <vector>
-
-#include "tilesweep/batch.h"
 
 namespace {
 
@@ -39,7 +39,7 @@ struct World {
     World() : cells(static_cast<std::size_t>(kSize) * kSize, 0) {
         for (int j = 0; j < kSize; ++j)
             for (int i = 0; i < kSize; ++i) {
-                const bool floor = isFloor(j) && i % 24 != 7;              // one-tile gaps
+                const bool floor = isFloor(j) && i % 24 != 7;                   // one-tile gaps
                 const bool wall = i % 32 == 31 && j % 16 >= 11 && j % 16 < 15;  // on the floors
                 cells[static_cast<std::size_t>(j) * kSize + static_cast<std::size_t>(i)] = floor || wall;
             }
@@ -48,7 +48,8 @@ struct World {
         auto column = [&](bool nearWall) {
             for (;;) {
                 const int i = std::uniform_int_distribution<int>(1, kSize - 3)(rng);
-                if (i % 24 == 7 || i % 24 == 6 || i % 24 == 8 || i % 32 == 31) continue;  // not over a gap or in a wall
+                if (i % 24 == 7 || i % 24 == 6 || i % 24 == 8 || i % 32 == 31)
+                    continue;  // not over a gap or in a wall
                 if (nearWall || (i % 32 != 30 && i % 32 != 0)) return i;
             }
         };
@@ -63,7 +64,8 @@ struct World {
             walking.push_back({{{x, onFloor}, {12, 14}}, {k % 2 ? T(1.5) : T(-1.5), gravity}});
             const int air = 16 * (f / 16) + std::uniform_int_distribution<int>(2, 8)(rng);
             falling.push_back({{{x, static_cast<T>(16 * air + 1)}, {12, 14}}, {k % 2 ? T(1) : T(-1), 5}});
-            fast.push_back({{{static_cast<T>(16 * column(true) + 2), onFloor}, {12, 14}}, {k % 2 ? T(30) : T(-30), gravity}});
+            fast.push_back({{{static_cast<T>(16 * column(true) + 2), onFloor}, {12, 14}},
+                            {k % 2 ? T(30) : T(-30), gravity}});
         }
         for (int k = 0; k < kMovers / 4; ++k) {
             mix.push_back(resting[static_cast<std::size_t>(k)]);

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "twin_resolve.h"
+
 #include <algorithm>
 #include <cstdint>
-
-#include "twin_resolve.h"
 
 // The swept-bounds grid resolver: the inexact twin's tile test and frame loop (twin_resolve.h),
 // with the broadphase most tile-game tutorials use instead of a path walk: every cell of the
@@ -18,7 +18,8 @@ namespace detail {
 
 /// Every solid cell of the step's swept bounds, row by row.
 template <class T>
-inline void findHitsInSweptBounds(const TileMapView<T>& map, const StepFrame<T>& f, StepHits<T>& hits) noexcept {
+inline void findHitsInSweptBounds(const TileMapView<T>& map, const StepFrame<T>& f,
+                                  StepHits<T>& hits) noexcept {
     std::int64_t first[2];
     std::int64_t last[2];
     for (int a = 0; a < 2; ++a) {
@@ -38,10 +39,11 @@ inline void findHitsInSweptBounds(const TileMapView<T>& map, const StepFrame<T>&
 template <class T>
 [[nodiscard]] inline SweepResult<T> resolveMoveGrid(const SweepInput<T>& input,
                                                     const ResolveOutput<T>& output) noexcept {
-    return detail::resolveFrame(input, output, [](const TileMapView<T>& map, const detail::StepFrame<T>& f,
-                                                  detail::StepHits<T>& hits) {
-        detail::findHitsInSweptBounds(map, f, hits);
-    });
+    return detail::resolveFrame(
+        input, output,
+        [](const TileMapView<T>& map, const detail::StepFrame<T>& f, detail::StepHits<T>& hits) {
+            detail::findHitsInSweptBounds(map, f, hits);
+        });
 }
 
 }  // namespace tilesweep::bench

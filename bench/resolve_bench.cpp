@@ -20,15 +20,16 @@
 #include <box2d/b2_time_of_impact.h>
 #endif
 
+#include "frame_scenarios.h"
+#include "grid_resolve.h"
 #include "oracle/exact/exact_geometry.h"
 #include "oracle/exact/exact_resolve.h"
 #include "oracle/seed/seed_resolve.h"
 #include "oracle/substep/substep_float.h"
+#include "twin_resolve.h"
+
 #include "tilesweep/scene/scene.h"
 #include "tilesweep/sweep.h"
-#include "frame_scenarios.h"
-#include "grid_resolve.h"
-#include "twin_resolve.h"
 
 namespace {
 
@@ -49,7 +50,8 @@ template <class T>
 Scenario<T> makeScenario(int size, Level level, double tilesPerFrame, std::uint32_t seed = 12345) {
     using tilesweep::scenarios::FrameKind;
     return tilesweep::scenarios::makeMapScenario<T>(
-        size, level == Level::Random30 ? FrameKind::Random30 : FrameKind::FloorAndWalls, tilesPerFrame, kSamples, seed);
+        size, level == Level::Random30 ? FrameKind::Random30 : FrameKind::FloorAndWalls, tilesPerFrame,
+        kSamples, seed);
 }
 
 template <class T>
@@ -70,7 +72,8 @@ void resolveLoop(benchmark::State& state, const Scenario<T>& s) {
     tilesweep::Cell overlaps[64];
     std::size_t k = 0;
     for (auto _ : state) {
-        benchmark::DoNotOptimize(tilesweep::resolveMove<T>({view, s.boxes[k], s.moves[k]}, {contacts, 64, overlaps, 64}));
+        benchmark::DoNotOptimize(
+            tilesweep::resolveMove<T>({view, s.boxes[k], s.moves[k]}, {contacts, 64, overlaps, 64}));
         k = (k + 1) % s.boxes.size();
     }
     state.SetItemsProcessed(state.iterations());
@@ -106,12 +109,14 @@ void BM_BruteForce_EveryTile(benchmark::State& state) {
     for (int j = 0; j < s.map.rows; ++j)
         for (int i = 0; i < s.map.columns; ++i)
             if (s.map.solid[static_cast<std::size_t>(j * s.map.columns + i)] != 0)
-                tiles.push_back({{float(i * kTile), float(j * kTile)}, {float((i + 1) * kTile), float((j + 1) * kTile)}});
+                tiles.push_back(
+                    {{float(i * kTile), float(j * kTile)}, {float((i + 1) * kTile), float((j + 1) * kTile)}});
     std::size_t k = 0;
     for (auto _ : state) {
         int hits = 0;
         for (const auto& [lo, hi] : tiles)
-            hits += tilesweep::sweepBox<float>({s.boxes[k], s.moves[k], lo, hi}).state == tilesweep::BoxSweepState::Blocks;
+            hits += tilesweep::sweepBox<float>({s.boxes[k], s.moves[k], lo, hi}).state ==
+                    tilesweep::BoxSweepState::Blocks;
         benchmark::DoNotOptimize(hits);
         k = (k + 1) % s.boxes.size();
     }
@@ -141,7 +146,8 @@ void BM_SubstepFloat_Random30(benchmark::State& state) {
     for (std::size_t k = 0; k < 64; ++k) scenes.push_back({"", s.map, s.boxes[k], {s.moves[k]}});
     std::size_t k = 0;
     for (auto _ : state) {
-        benchmark::DoNotOptimize(tilesweep::oracle::resolveSceneSubstepFloat<float>(scenes[k], state.range(1)));
+        benchmark::DoNotOptimize(
+            tilesweep::oracle::resolveSceneSubstepFloat<float>(scenes[k], state.range(1)));
         k = (k + 1) % scenes.size();
     }
     state.SetItemsProcessed(state.iterations());
@@ -155,8 +161,8 @@ void BM_ExactReference_Random30(benchmark::State& state) {
     const tilesweep::oracle::ExactTileMap map = tilesweep::oracle::toExact(s.map);
     std::size_t k = 0;
     for (auto _ : state) {
-        benchmark::DoNotOptimize(tilesweep::oracle::resolveFrameExact(map, tilesweep::oracle::toExact(s.boxes[k]),
-                                                                      tilesweep::oracle::toExact(s.moves[k])));
+        benchmark::DoNotOptimize(tilesweep::oracle::resolveFrameExact(
+            map, tilesweep::oracle::toExact(s.boxes[k]), tilesweep::oracle::toExact(s.moves[k])));
         k = (k + 1) % 64;
     }
     state.SetItemsProcessed(state.iterations());
@@ -242,7 +248,8 @@ enum class Impl { Tilesweep, Twin, Grid };
 template <class T>
 const tilesweep::bench::FrameScenario<T>& frameScenario(tilesweep::bench::FrameKind kind, int speedArg) {
     // Built once per parameter set, outside the timed loop; kept for the whole run.
-    static std::vector<std::pair<std::pair<int, int>, std::unique_ptr<tilesweep::bench::FrameScenario<T>>>> cache;
+    static std::vector<std::pair<std::pair<int, int>, std::unique_ptr<tilesweep::bench::FrameScenario<T>>>>
+        cache;
     const auto key = std::make_pair(static_cast<int>(kind), speedArg);
     for (const auto& entry : cache)
         if (entry.first == key) return *entry.second;
@@ -275,12 +282,12 @@ void frameLoop(benchmark::State& state, tilesweep::bench::FrameKind kind, int sp
 }
 
 template <class T, Impl I>
-void registerFrameBenchmark(const char* impl, const char* scalar, tilesweep::bench::FrameKind kind, int speedArg) {
+void registerFrameBenchmark(const char* impl, const char* scalar, tilesweep::bench::FrameKind kind,
+                            int speedArg) {
     std::string name = std::string("BM_") + impl + "_" + tilesweep::bench::nameOf(kind) + "<" + scalar + ">";
     if (speedArg > 0) name += "/" + std::to_string(speedArg);
-    benchmark::RegisterBenchmark(name.c_str(), [kind, speedArg](benchmark::State& state) {
-        frameLoop<T, I>(state, kind, speedArg);
-    });
+    benchmark::RegisterBenchmark(
+        name.c_str(), [kind, speedArg](benchmark::State& state) { frameLoop<T, I>(state, kind, speedArg); });
 }
 
 template <class T>

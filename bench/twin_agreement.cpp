@@ -14,14 +14,14 @@
 //                     of these are one ulp apart: "> 1 ulp" counts the rest;
 //   ends inside       the final box overlaps (open, evaluated exactly) a solid tile it did not
 //                     overlap at the start: the failure the contract's rounding rule rules out.
+#include "frame_scenarios.h"
+#include "grid_resolve.h"
+#include "twin_resolve.h"
+
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <limits>
-
-#include "frame_scenarios.h"
-#include "grid_resolve.h"
-#include "twin_resolve.h"
 
 namespace {
 
@@ -56,7 +56,8 @@ bool sameDecisions(const FrameOutput<T>& a, const FrameOutput<T>& b) {
     if (a.result.startOverlapCount != b.result.startOverlapCount) return false;
     const std::int32_t n = a.result.contactCount < kCapacity ? a.result.contactCount : kCapacity;
     for (std::int32_t k = 0; k < n; ++k)
-        if (a.contacts[k].tile != b.contacts[k].tile || a.contacts[k].normal != b.contacts[k].normal) return false;
+        if (a.contacts[k].tile != b.contacts[k].tile || a.contacts[k].normal != b.contacts[k].normal)
+            return false;
     const std::int32_t m = a.result.startOverlapCount < kCapacity ? a.result.startOverlapCount : kCapacity;
     for (std::int32_t k = 0; k < m; ++k)
         if (a.overlaps[k] != b.overlaps[k]) return false;
@@ -70,7 +71,8 @@ template <class T>
 bool endsInside(const TileMapView<T>& map, const Box<T>& start, Vec2<T> pos) {
     using L = long double;
     const auto overlaps = [&](L x, L y, std::int64_t i, std::int64_t j) {
-        const L x0 = L(map.origin.x) + L(i) * L(map.tileSize.x), y0 = L(map.origin.y) + L(j) * L(map.tileSize.y);
+        const L x0 = L(map.origin.x) + L(i) * L(map.tileSize.x),
+                y0 = L(map.origin.y) + L(j) * L(map.tileSize.y);
         return x < x0 + L(map.tileSize.x) && x + L(start.size.x) > x0 && y < y0 + L(map.tileSize.y) &&
                y + L(start.size.y) > y0;
     };
@@ -127,9 +129,13 @@ Counts countScenario(tb::FrameKind kind, int speedArg) {
     Counts c;
     for (std::size_t k = 0; k < s.boxes.size(); ++k) {
         const SweepInput<T> in{view, s.boxes[k], s.moves[k]};
-        runFrame(in, exact, [](const SweepInput<T>& i, const ResolveOutput<T>& o) { return tilesweep::resolveMove(i, o); });
-        runFrame(in, twin, [](const SweepInput<T>& i, const ResolveOutput<T>& o) { return tb::resolveMoveTwin(i, o); });
-        runFrame(in, grid, [](const SweepInput<T>& i, const ResolveOutput<T>& o) { return tb::resolveMoveGrid(i, o); });
+        runFrame(in, exact, [](const SweepInput<T>& i, const ResolveOutput<T>& o) {
+            return tilesweep::resolveMove(i, o);
+        });
+        runFrame(in, twin,
+                 [](const SweepInput<T>& i, const ResolveOutput<T>& o) { return tb::resolveMoveTwin(i, o); });
+        runFrame(in, grid,
+                 [](const SweepInput<T>& i, const ResolveOutput<T>& o) { return tb::resolveMoveGrid(i, o); });
         ++c.frames;
         c.blocked += exact.result.contactCount > 0;
         c.twinDecisions += !sameDecisions(exact, twin);
@@ -150,11 +156,11 @@ double percent(long part, long whole) {
 }
 
 void printRow(const char* name, const Counts& c) {
-    std::printf("%-26s %7ld %6.2f%% | %8.4f%% %8.3f%% %8.4f%% %5ld | %8.4f%% %8.3f%% %8.4f%% %5ld | %5ld\n", name,
-                c.frames, percent(c.blocked, c.frames), percent(c.twinDecisions, c.frames),
+    std::printf("%-26s %7ld %6.2f%% | %8.4f%% %8.3f%% %8.4f%% %5ld | %8.4f%% %8.3f%% %8.4f%% %5ld | %5ld\n",
+                name, c.frames, percent(c.blocked, c.frames), percent(c.twinDecisions, c.frames),
                 percent(c.twinPositions, c.frames), percent(c.twinUlp, c.frames), c.twinInside,
-                percent(c.gridDecisions, c.frames), percent(c.gridPositions, c.frames), percent(c.gridUlp, c.frames),
-                c.gridInside, c.tilesweepInside);
+                percent(c.gridDecisions, c.frames), percent(c.gridPositions, c.frames),
+                percent(c.gridUlp, c.frames), c.gridInside, c.tilesweepInside);
 }
 
 template <class T>

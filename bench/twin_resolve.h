@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "tilesweep/resolve.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
-
-#include "tilesweep/resolve.h"
 
 // The inexact twin: the move-and-slide a competent game developer writes, in plain T arithmetic,
 // as the baseline tilesweep::resolveMove has to be measured against (issue 10, "Exact at the
@@ -58,11 +58,11 @@ template <class T>
 /// One step's geometry, per axis (0 = x, 1 = y), computed once per step.
 template <class T>
 struct StepFrame {
-    T lo[2];      ///< box min edge at the step's start
-    T hi[2];      ///< box max edge at the step's start (lo + size, rounded)
-    T r[2];       ///< the step's motion
-    T origin[2];  ///< map origin
-    T tile[2];    ///< tile size
+    T lo[2];                ///< box min edge at the step's start
+    T hi[2];                ///< box max edge at the step's start (lo + size, rounded)
+    T r[2];                 ///< the step's motion
+    T origin[2];            ///< map origin
+    T tile[2];              ///< tile size
     std::int64_t cells[2];  ///< columns, rows
 
     /// floor((v - origin) / tile), clamped to [-1, cells]: the cell holding v on axis a.
@@ -94,7 +94,7 @@ struct StepHits {
     std::int32_t capacity;
     std::int32_t count = 0;  ///< hits at `time`, stored or not
     bool any = false;
-    T time = T(0);           ///< the step's time of impact, fraction of the step
+    T time = T(0);  ///< the step's time of impact, fraction of the step
     bool axisHit[2] = {false, false};
     T face[2] = {T(0), T(0)};  ///< the box position touching the hit face, per contact axis
 
@@ -147,8 +147,8 @@ inline void testTile(const TileMapView<T>& map, const StepFrame<T>& f, std::int6
     const bool forward = f.r[axis] > T(0);
     const auto against = static_cast<std::int8_t>(forward ? -1 : 1);
     const Normal normal = axis == 0 ? Normal{against, 0} : Normal{0, against};
-    hits.add({static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)}, axis, normal, std::max(entry, T(0)),
-             forward ? lo - size : hi);
+    hits.add({static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)}, axis, normal,
+             std::max(entry, T(0)), forward ? lo - size : hi);
 }
 
 /// Solid cells the box overlaps (open) at the frame's start, by row then column.
@@ -177,12 +177,10 @@ template <class T, class FindHits>
 [[nodiscard]] inline SweepResult<T> resolveFrame(const SweepInput<T>& in, const ResolveOutput<T>& out,
                                                  FindHits findHits) noexcept {
     const TileMapView<T>& map = in.map;
-    StepFrame<T> f{{in.box.pos.x, in.box.pos.y},
-                   {in.box.pos.x + in.box.size.x, in.box.pos.y + in.box.size.y},
-                   {in.displacement.x, in.displacement.y},
-                   {map.origin.x, map.origin.y},
-                   {map.tileSize.x, map.tileSize.y},
-                   {map.columns, map.rows}};
+    StepFrame<T> f{
+        {in.box.pos.x, in.box.pos.y},           {in.box.pos.x + in.box.size.x, in.box.pos.y + in.box.size.y},
+        {in.displacement.x, in.displacement.y}, {map.origin.x, map.origin.y},
+        {map.tileSize.x, map.tileSize.y},       {map.columns, map.rows}};
     const T size[2] = {in.box.size.x, in.box.size.y};
     SweepResult<T> result;
     result.status = Status::Moved;
@@ -234,7 +232,8 @@ template <class T, class FindHits>
 
 /// The twin's broadphase: cells in path order along the primary axis, with the early exit.
 template <class T>
-inline void findHitsInPathOrder(const TileMapView<T>& map, const StepFrame<T>& f, StepHits<T>& hits) noexcept {
+inline void findHitsInPathOrder(const TileMapView<T>& map, const StepFrame<T>& f,
+                                StepHits<T>& hits) noexcept {
     // Primary: the axis whose motion crosses more cells, |r_x| / tile_x >= |r_y| / tile_y.
     const int p = std::abs(f.r[0]) * f.tile[1] >= std::abs(f.r[1]) * f.tile[0] ? 0 : 1;
     const int s = 1 - p;
@@ -282,10 +281,9 @@ inline void findHitsInPathOrder(const TileMapView<T>& map, const StepFrame<T>& f
 template <class T>
 [[nodiscard]] inline SweepResult<T> resolveMoveTwin(const SweepInput<T>& input,
                                                     const ResolveOutput<T>& output) noexcept {
-    return detail::resolveFrame(input, output, [](const TileMapView<T>& map, const detail::StepFrame<T>& f,
-                                                  detail::StepHits<T>& hits) {
-        detail::findHitsInPathOrder(map, f, hits);
-    });
+    return detail::resolveFrame(input, output,
+                                [](const TileMapView<T>& map, const detail::StepFrame<T>& f,
+                                   detail::StepHits<T>& hits) { detail::findHitsInPathOrder(map, f, hits); });
 }
 
 }  // namespace tilesweep::bench

@@ -1,6 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "exact_sum.h"
+#include "grid_line.h"
+
+#include "tilesweep/resolve.h"
+#include "tilesweep/tile_map.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -8,11 +14,6 @@
 #include <optional>
 #include <string>
 #include <vector>
-
-#include "exact_sum.h"
-#include "grid_line.h"
-#include "tilesweep/resolve.h"
-#include "tilesweep/tile_map.h"
 
 // The contract's safety rules for one resolved frame, checked exactly: the one checker that the
 // property suite, the fuzz targets, the soak and the audit all use (CONTRACT.md, "Positions").
@@ -90,7 +91,8 @@ template <class T>
     if (cells <= 0) return {};
     using W = long double;
     const W lo = (static_cast<W>(pos) - static_cast<W>(origin)) / static_cast<W>(tile) - 1;
-    const W hi = (static_cast<W>(pos) + static_cast<W>(size) - static_cast<W>(origin)) / static_cast<W>(tile) + 1;
+    const W hi =
+        (static_cast<W>(pos) + static_cast<W>(size) - static_cast<W>(origin)) / static_cast<W>(tile) + 1;
     const auto top = static_cast<long double>(cells - 1);
     if (hi < 0 || lo > top) return {};
     CellRange range{0, cells - 1};
@@ -136,8 +138,8 @@ struct SafetyScratch {
 /// The first solid tile the box at `end` overlaps that it did not overlap at `start` (same size),
 /// or nothing. `scratch.atStart` and `scratch.atEnd` are left holding both lists.
 template <class T>
-[[nodiscard]] std::optional<Cell> findNewOverlap(const TileMapView<T>& map, const MapEdges<T>& edges, Box<T> start,
-                                                 Vec2<T> end, SafetyScratch& scratch) {
+[[nodiscard]] std::optional<Cell> findNewOverlap(const TileMapView<T>& map, const MapEdges<T>& edges,
+                                                 Box<T> start, Vec2<T> end, SafetyScratch& scratch) {
     listOverlaps(map, edges, start.pos, start.size, scratch.atStart);
     listOverlaps(map, edges, end, start.size, scratch.atEnd);
     for (const Cell c : scratch.atEnd)
@@ -165,7 +167,8 @@ template <class T>
     if (r.status == Status::InvalidInput) return "valid input refused as InvalidInput";
     if (!std::isfinite(r.position.x) || !std::isfinite(r.position.y)) return "non-finite final position";
     if (r.contactCount < 0 || r.startOverlapCount < 0) return "negative list count";
-    if ((r.status == Status::Blocked) != (r.contactCount > 0)) return "status Blocked does not match the contact count";
+    if ((r.status == Status::Blocked) != (r.contactCount > 0))
+        return "status Blocked does not match the contact count";
     for (std::int32_t k = 0; k < r.contactCount; ++k) {
         const Contact<T>& c = frame.contacts[k];
         if (!frame.map.isSolid(c.tile.i, c.tile.j))
@@ -255,9 +258,11 @@ template <class T>
         if (endVsQ > 0) {
             const T up = std::nextafter(q, inf);
             const bool justBelow = signOfSumMinus(a, b, up) < 0;
-            if (!justBelow || !gridLineIn<T>({a, b, z}, {up, z}, onX ? frame.map.origin.x : frame.map.origin.y,
-                                             onX ? frame.map.tileSize.x : frame.map.tileSize.y))
-                return std::string("moved past the exact end on ") + name + " where the rounding rule does not allow it";
+            if (!justBelow ||
+                !gridLineIn<T>({a, b, z}, {up, z}, onX ? frame.map.origin.x : frame.map.origin.y,
+                               onX ? frame.map.tileSize.x : frame.map.tileSize.y))
+                return std::string("moved past the exact end on ") + name +
+                       " where the rounding rule does not allow it";
             ++scratch.roundedDown;
             continue;
         }
@@ -280,7 +285,8 @@ template <class T>
     if (std::string why = checkWellFormed(frame); !why.empty()) return {SafetyRule::WellFormed, why};
     const SweepResult<T>& r = frame.result;
     if (std::optional<Cell> entered = findNewOverlap(frame.map, edges, frame.start, r.position, scratch))
-        return {SafetyRule::EndsInsideNewTile, "ends inside solid tile " + describeCell(*entered) + " it did not start in"};
+        return {SafetyRule::EndsInsideNewTile,
+                "ends inside solid tile " + describeCell(*entered) + " it did not start in"};
     const bool sameStart = scratch.atStart.size() == static_cast<std::size_t>(r.startOverlapCount) &&
                            std::equal(scratch.atStart.begin(), scratch.atStart.end(), frame.startOverlaps);
     if (!sameStart)
@@ -297,12 +303,18 @@ template <class T>
 /// The rule's name, as the reports print it.
 [[nodiscard]] inline const char* ruleName(SafetyRule rule) noexcept {
     switch (rule) {
-        case SafetyRule::None: return "none";
-        case SafetyRule::WellFormed: return "wellFormed";
-        case SafetyRule::StartOverlaps: return "startOverlaps";
-        case SafetyRule::EndsInsideNewTile: return "endsInsideNewTile";
-        case SafetyRule::LeavesHitTileTouching: return "leavesHitTileTouching";
-        case SafetyRule::StaysWithinExactMotion: return "staysWithinExactMotion";
+        case SafetyRule::None:
+            return "none";
+        case SafetyRule::WellFormed:
+            return "wellFormed";
+        case SafetyRule::StartOverlaps:
+            return "startOverlaps";
+        case SafetyRule::EndsInsideNewTile:
+            return "endsInsideNewTile";
+        case SafetyRule::LeavesHitTileTouching:
+            return "leavesHitTileTouching";
+        case SafetyRule::StaysWithinExactMotion:
+            return "staysWithinExactMotion";
     }
     return "?";
 }

@@ -30,7 +30,8 @@ BigInt scaled(Split s, int lowest) {
 
 }  // namespace
 
-bool gridLineInExact(const Split* low, int lowCount, const Split* high, int highCount, Split origin, Split tile) {
+bool gridLineInExact(const Split* low, int lowCount, const Split* high, int highCount, Split origin,
+                     Split tile) {
     // Every value is an integer multiple of 2^lowest.
     int lowest = tile.exponent;
     const auto note = [&lowest](Split s) {

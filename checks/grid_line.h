@@ -35,8 +35,8 @@ template <class T>
 
 /// The exact test in integers (grid_line.cpp): whether a line origin + k*tile lies in
 /// [sum(low), sum(high)), at most four terms each.
-[[nodiscard]] bool gridLineInExact(const Split* low, int lowCount, const Split* high, int highCount, Split origin,
-                                   Split tile);
+[[nodiscard]] bool gridLineInExact(const Split* low, int lowCount, const Split* high, int highCount,
+                                   Split origin, Split tile);
 
 }  // namespace detail
 
@@ -72,7 +72,8 @@ template <class T>
         if (lowCount < 4) lows[lowCount++] = detail::split(v);
     for (const T v : high)
         if (highCount < 4) highs[highCount++] = detail::split(v);
-    return detail::gridLineInExact(lows, lowCount, highs, highCount, detail::split(origin), detail::split(tile));
+    return detail::gridLineInExact(lows, lowCount, highs, highCount, detail::split(origin),
+                                   detail::split(tile));
 }
 
 }  // namespace tilesweep::checks

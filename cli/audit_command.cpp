@@ -4,16 +4,15 @@
 // production row (core-float, core-double) is not zero: that is a bug in the core.
 #include "audit_command.h"
 
-#include <unistd.h>
+#include "audit/audit.h"
 
 #include <chrono>
-#include <filesystem>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <string>
-
-#include "audit/audit.h"
+#include <unistd.h>
 #if TILESWEEP_HAVE_CHECK
 #include "check_command.h"
 #include "conformance_report.h"
@@ -23,31 +22,41 @@ namespace tilesweep::cli {
 
 CLI::App* addAuditCommand(CLI::App& app, AuditOptions& options) {
     CLI::App* command = app.add_subcommand(
-        "audit", "Hold every implementation against the exact reference over scenario families; write a report");
+        "audit",
+        "Hold every implementation against the exact reference over scenario families; write a report");
     command->add_option("--cases", options.cases, "Scenes per family per scalar type")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
     command->add_option("--seed", options.seed, "The seed every scene derives from")->capture_default_str();
-    command->add_option("--out", options.outDir,
-                        "Directory for report.md, report.json and worst/ (scripts/plots.py audit DIR draws the charts)")
+    command
+        ->add_option(
+            "--out", options.outDir,
+            "Directory for report.md, report.json and worst/ (scripts/plots.py audit DIR draws the charts)")
         ->type_name("DIR")
         ->capture_default_str();
-    command->add_option("--jobs", options.jobs, "Worker threads (default: all cores)")->check(CLI::PositiveNumber);
-    command->add_option("--resolver-cmd", options.resolverCmds,
-                        "Conformance mode: hold this outside resolver (repeatable) to every claim about\n"
-                        "results, instead of the tolerance audit; writes --report")
+    command->add_option("--jobs", options.jobs, "Worker threads (default: all cores)")
+        ->check(CLI::PositiveNumber);
+    command
+        ->add_option("--resolver-cmd", options.resolverCmds,
+                     "Conformance mode: hold this outside resolver (repeatable) to every claim about\n"
+                     "results, instead of the tolerance audit; writes --report")
         ->type_name("CMD");
     command->add_option("--resolver-name", options.resolverNames, "A label per --resolver-cmd, in order");
-    command->add_option("--report", options.report, "Conformance mode: the Markdown report")->capture_default_str();
+    command->add_option("--report", options.report, "Conformance mode: the Markdown report")
+        ->capture_default_str();
     command->add_option("--pictures", options.pictures, "Conformance mode: where counterexample pictures go")
         ->capture_default_str();
-    command->add_option("--seconds", options.secondsPerResolver, "Conformance mode: check budget per resolver")
+    command
+        ->add_option("--seconds", options.secondsPerResolver, "Conformance mode: check budget per resolver")
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
-    command->add_option("--property-cases", options.propertyCases, "Conformance mode: cases per property per round")
+    command
+        ->add_option("--property-cases", options.propertyCases,
+                     "Conformance mode: cases per property per round")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
-    command->add_option("--claims", options.claims, "Conformance mode: all, or safety (no bit-for-bit claims)")
+    command
+        ->add_option("--claims", options.claims, "Conformance mode: all, or safety (no bit-for-bit claims)")
         ->check(CLI::IsMember(std::vector<std::string>{"all", "safety"}))
         ->capture_default_str();
     command->add_option("--scalar", options.scalar, "Conformance mode: the resolvers' scalar type")
@@ -99,7 +108,8 @@ int runConformance(const AuditOptions& options) {
         entry.run = runChecks(check);
         int failed = 0;
         for (const CheckRow& r : entry.run.rows) failed += r.failures > 0 ? 1 : 0;
-        std::printf("%-24s %3zu properties, %3d failed\n", entry.label.c_str(), entry.run.rows.size(), failed);
+        std::printf("%-24s %3zu properties, %3d failed\n", entry.label.c_str(), entry.run.rows.size(),
+                    failed);
         allHeld = allHeld && failed == 0;
         entries.push_back(std::move(entry));
     }
@@ -129,16 +139,18 @@ int runAuditCommand(const AuditOptions& options) {
                              : options.commandLine;
     const auto started = std::chrono::steady_clock::now();
     config.progress = [started](std::uint64_t done, std::uint64_t total) {
-        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        const double elapsed =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         const double share = total == 0 ? 1.0 : static_cast<double>(done) / static_cast<double>(total);
         const double left = share > 0 ? elapsed / share - elapsed : 0.0;
         std::fprintf(stderr, "\rtilesweep audit: %llu/%llu cases (%3.0f%%), %.0f s, about %.0f s left   ",
-                     static_cast<unsigned long long>(done), static_cast<unsigned long long>(total), 100.0 * share,
-                     elapsed, left);
+                     static_cast<unsigned long long>(done), static_cast<unsigned long long>(total),
+                     100.0 * share, elapsed, left);
         if (done == total) std::fprintf(stderr, "\n");
         std::fflush(stderr);
     };
-    std::fprintf(stderr, "tilesweep audit: %llu scenes per family per scalar type, %zu families, seed %llu -> %s\n",
+    std::fprintf(stderr,
+                 "tilesweep audit: %llu scenes per family per scalar type, %zu families, seed %llu -> %s\n",
                  static_cast<unsigned long long>(options.cases), audit::auditFamilies().size(),
                  static_cast<unsigned long long>(options.seed), options.outDir.c_str());
     const audit::AuditResult result = audit::runAudit(config);
@@ -150,7 +162,8 @@ int runAuditCommand(const AuditOptions& options) {
     }
 
     // Headline: per implementation, over all families.
-    std::printf("%-18s %10s %10s %10s %14s\n", "implementation", "decision", "tunnel", "inside", "max pos ulps");
+    std::printf("%-18s %10s %10s %10s %14s\n", "implementation", "decision", "tunnel", "inside",
+                "max pos ulps");
     bool productionClean = true;
     for (std::size_t i = 0; i < result.implementations.size(); ++i) {
         std::uint64_t scenes = 0, decision = 0, tunnel = 0, inside = 0, worstUlps = 0;
@@ -160,14 +173,19 @@ int runAuditCommand(const AuditOptions& options) {
             decision += cell.failures[static_cast<std::size_t>(audit::Metric::Decision)];
             tunnel += cell.failures[static_cast<std::size_t>(audit::Metric::Tunnel)];
             inside += cell.failures[static_cast<std::size_t>(audit::Metric::Inside)];
-            if (!cell.positionUlps.empty() && cell.positionUlps.back() > worstUlps) worstUlps = cell.positionUlps.back();
+            if (!cell.positionUlps.empty() && cell.positionUlps.back() > worstUlps)
+                worstUlps = cell.positionUlps.back();
             for (const std::uint64_t f : cell.failures) anyFailure = anyFailure || f > 0;
         }
-        auto pct = [&](std::uint64_t n) { return scenes == 0 ? 0.0 : 100.0 * static_cast<double>(n) / static_cast<double>(scenes); };
-        const std::string ulps = worstUlps == audit::kNonFiniteUlps ? std::string("inf") : std::to_string(worstUlps);
-        std::printf("%-18s %9.2f%% %9.2f%% %9.2f%% %14s\n", result.implementations[i].name.c_str(), pct(decision),
-                    pct(tunnel), pct(inside), ulps.c_str());
-        if (result.implementations[i].kind == audit::ImplementationKind::Core && anyFailure) productionClean = false;
+        auto pct = [&](std::uint64_t n) {
+            return scenes == 0 ? 0.0 : 100.0 * static_cast<double>(n) / static_cast<double>(scenes);
+        };
+        const std::string ulps =
+            worstUlps == audit::kNonFiniteUlps ? std::string("inf") : std::to_string(worstUlps);
+        std::printf("%-18s %9.2f%% %9.2f%% %9.2f%% %14s\n", result.implementations[i].name.c_str(),
+                    pct(decision), pct(tunnel), pct(inside), ulps.c_str());
+        if (result.implementations[i].kind == audit::ImplementationKind::Core && anyFailure)
+            productionClean = false;
     }
     std::printf("\n%s\nreport: %s/report.md (%.1f s, %d thread%s)\n",
                 productionClean ? "production rows: zero everywhere"

@@ -14,22 +14,22 @@ namespace tilesweep::cli {
 
 /// The options of `tilesweep audit`.
 struct AuditOptions {
-    std::uint64_t cases = 5000;            ///< scenes per family per scalar type
+    std::uint64_t cases = 5000;           ///< scenes per family per scalar type
     std::uint64_t seed = 20261122;        ///< every scene derives from it
     std::string outDir = "audit-report";  ///< where report.md, report.json, the plots and worst/ go
     int jobs = 0;                         ///< worker threads; 0: all cores
     std::string commandLine;              ///< the command as typed, recorded in the report
     // Conformance mode (--resolver-cmd): the property suite against outside resolvers, one
     // `tilesweep check` per command, written as one report (conformance_report.h).
-    std::vector<std::string> resolverCmds;   ///< outside resolvers; empty: the tolerance audit
-    std::vector<std::string> resolverNames;  ///< a label per command (default: the command)
-    std::string report = "docs/conformance.md";    ///< the conformance report
-    std::string pictures = "docs/conformance";     ///< its pictures and regression files
-    double secondsPerResolver = 60;          ///< check budget per resolver
-    int propertyCases = 200;                 ///< cases per property per round
-    std::string claims = "all";              ///< "all" or "safety"
-    std::string scalar = "float";            ///< the scalar type the resolvers work in
-    double resolverTimeout = 10;             ///< seconds per batch before a resolver counts as hung
+    std::vector<std::string> resolverCmds;       ///< outside resolvers; empty: the tolerance audit
+    std::vector<std::string> resolverNames;      ///< a label per command (default: the command)
+    std::string report = "docs/conformance.md";  ///< the conformance report
+    std::string pictures = "docs/conformance";   ///< its pictures and regression files
+    double secondsPerResolver = 60;              ///< check budget per resolver
+    int propertyCases = 200;                     ///< cases per property per round
+    std::string claims = "all";                  ///< "all" or "safety"
+    std::string scalar = "float";                ///< the scalar type the resolvers work in
+    double resolverTimeout = 10;                 ///< seconds per batch before a resolver counts as hung
 };
 
 /// Declares the subcommand and its options.

@@ -14,9 +14,9 @@
 // the properties and reports one JSON line per finished run through a pipe.
 #include "check_command.h"
 
-#include <poll.h>
-#include <sys/wait.h>
-#include <unistd.h>
+#include "conformance_report.h"
+#include "property_suite.h"
+#include "scene_runner.h"
 
 #include <nlohmann/json.hpp>
 
@@ -26,14 +26,13 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <poll.h>
 #include <stdexcept>
 #include <string>
+#include <sys/wait.h>
 #include <thread>
+#include <unistd.h>
 #include <vector>
-
-#include "conformance_report.h"
-#include "property_suite.h"
-#include "scene_runner.h"
 
 namespace tilesweep::cli {
 namespace {
@@ -42,8 +41,8 @@ using properties::Property;
 using properties::PropertyOutcome;
 
 /// The coverage classes shown in the table, in order.
-const std::vector<std::string> kTableTags = {"hit", "miss", "tie", "touch-at-0", "two-step", "seam", "far-origin",
-                                              "family:corner-pass"};
+const std::vector<std::string> kTableTags = {"hit",      "miss", "tie",        "touch-at-0",
+                                             "two-step", "seam", "far-origin", "family:corner-pass"};
 
 std::vector<const Property*> selectProperties(const CheckOptions& options) {
     const bool outside = !options.resolverCmd.empty();
@@ -67,7 +66,8 @@ std::string corpusDirOf(const CheckOptions& options) {
 
 /// A worker's rounds: properties index % jobs == worker, round after round with a new seed each
 /// round, until the deadline (at least one round), each run reported on `out`.
-void runRounds(const std::vector<const Property*>& work, int worker, int jobs, const CheckOptions& options, int out) {
+void runRounds(const std::vector<const Property*>& work, int worker, int jobs, const CheckOptions& options,
+               int out) {
     // The outside resolver, one process per worker, shared by the float and double runners.
     std::shared_ptr<properties::ResolverProcess> process;
     std::unique_ptr<properties::OutsideSceneRunner<float>> floatRunner;
@@ -93,19 +93,27 @@ void runRounds(const std::vector<const Property*>& work, int worker, int jobs, c
             run.corpusDir = corpusDirOf(options);
             const PropertyOutcome o = work[k]->run(run);
             anyFailed = anyFailed || !o.passed;
-            const nlohmann::json report = {{"index", k},          {"passed", o.passed},     {"cases", o.cases},
-                                           {"tags", o.tagCounts},   {"message", o.message},   {"corpus", o.corpusFile},
-                                           {"picture", o.pictureFile}, {"seconds", o.seconds}, {"seed", run.seed},
-                                           {"scene", o.sceneLine},  {"failure", o.failure}};
-            const std::string line = report.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+            const nlohmann::json report = {{"index", k},
+                                           {"passed", o.passed},
+                                           {"cases", o.cases},
+                                           {"tags", o.tagCounts},
+                                           {"message", o.message},
+                                           {"corpus", o.corpusFile},
+                                           {"picture", o.pictureFile},
+                                           {"seconds", o.seconds},
+                                           {"seed", run.seed},
+                                           {"scene", o.sceneLine},
+                                           {"failure", o.failure}};
+            const std::string line =
+                report.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
             if (write(out, line.data(), line.size()) < 0) _exit(3);
         }
         if ((anyFailed && !options.keepGoing) || std::chrono::steady_clock::now() >= deadline) break;
     }
 }
 
-[[noreturn]] void runWorker(const std::vector<const Property*>& work, int worker, int jobs, const CheckOptions& options,
-                            int out) {
+[[noreturn]] void runWorker(const std::vector<const Property*>& work, int worker, int jobs,
+                            const CheckOptions& options, int out) {
     runRounds(work, worker, jobs, options, out);  // its destructors stop the outside process
     close(out);
     _exit(0);
@@ -116,8 +124,8 @@ void printTable(const CheckRun& run) {
     for (const std::string& tag : kTableTags) std::printf(" %8.8s", tag.c_str());
     std::printf(" %8s\n", "time s");
     for (const CheckRow& r : run.rows) {
-        std::printf("%-52s %-7s %9d %5d %9.0f", r.property.c_str(), r.failures == 0 ? "ok" : "FAILED", r.cases,
-                    r.failures, r.seconds > 0 ? r.cases / r.seconds : 0.0);
+        std::printf("%-52s %-7s %9d %5d %9.0f", r.property.c_str(), r.failures == 0 ? "ok" : "FAILED",
+                    r.cases, r.failures, r.seconds > 0 ? r.cases / r.seconds : 0.0);
         for (const std::string& tag : kTableTags) {
             const auto it = r.tags.find(tag);
             const double share = r.cases > 0 && it != r.tags.end() ? 100.0 * it->second / r.cases : 0.0;
@@ -130,30 +138,37 @@ void printTable(const CheckRun& run) {
 }  // namespace
 
 CLI::App* addCheckCommand(CLI::App& app, CheckOptions& options) {
-    CLI::App* command = app.add_subcommand("check", "Run the property suite: every claim against the oracles");
-    command->add_option("--cases", options.cases, "Cases per property per round")->check(CLI::PositiveNumber)->capture_default_str();
+    CLI::App* command =
+        app.add_subcommand("check", "Run the property suite: every claim against the oracles");
+    command->add_option("--cases", options.cases, "Cases per property per round")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     command->add_option("--seconds", options.seconds, "Keep running rounds (new seed each) for this long")
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
     command->add_option("--seed", options.seed, "RapidCheck seed of the first round")->capture_default_str();
     command->add_option("--property", options.property, "Run only properties whose name contains this");
-    command->add_option("--jobs", options.jobs, "Worker processes (default: all cores)")->check(CLI::PositiveNumber);
+    command->add_option("--jobs", options.jobs, "Worker processes (default: all cores)")
+        ->check(CLI::PositiveNumber);
     command->add_option("--corpus", options.corpusDir,
                         "Where a failing case's regression file and picture go (default: properties/corpus;\n"
                         "resolver-corpus with --resolver-cmd)");
-    command->add_option("--resolver-cmd", options.resolverCmd,
-                        "Check an outside resolver: a shell command that reads scene lines on stdin and writes\n"
-                        "one result line per scene, as `tilesweep resolve` does")
+    command
+        ->add_option("--resolver-cmd", options.resolverCmd,
+                     "Check an outside resolver: a shell command that reads scene lines on stdin and writes\n"
+                     "one result line per scene, as `tilesweep resolve` does")
         ->type_name("CMD");
-    command->add_option("--resolver-timeout", options.resolverTimeout,
-                        "Seconds a batch of scenes may take before the outside resolver counts as hung")
+    command
+        ->add_option("--resolver-timeout", options.resolverTimeout,
+                     "Seconds a batch of scenes may take before the outside resolver counts as hung")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
     command->add_option("--claims", options.claims, "all, or safety: leave out the bit-for-bit claims")
         ->check(CLI::IsMember(std::vector<std::string>{"all", "safety"}))
         ->capture_default_str();
-    command->add_option("--scalar", options.scalar,
-                        "Only the properties in this scalar type (default: both; float with --resolver-cmd)")
+    command
+        ->add_option("--scalar", options.scalar,
+                     "Only the properties in this scalar type (default: both; float with --resolver-cmd)")
         ->check(CLI::IsMember(std::vector<std::string>{"float", "double"}));
     command->add_option("--report", options.report, "Also write a conformance report (Markdown) to this file")
         ->type_name("FILE.md");
@@ -191,10 +206,12 @@ CheckRun runChecks(const CheckOptions& options) {
         run.rows.push_back(row);
     }
     if (!options.quiet) {
-        std::printf("tilesweep check: %zu properties, %d cases each per round, seed %llu, %d job%s, %.0f s budget%s%s\n",
-                    work.size(), options.cases, static_cast<unsigned long long>(options.seed), jobs,
-                    jobs == 1 ? "" : "s", options.seconds, options.resolverCmd.empty() ? "" : ", resolver: ",
-                    options.resolverCmd.c_str());
+        std::printf(
+            "tilesweep check: %zu properties, %d cases each per round, seed %llu, %d job%s, %.0f s "
+            "budget%s%s\n",
+            work.size(), options.cases, static_cast<unsigned long long>(options.seed), jobs,
+            jobs == 1 ? "" : "s", options.seconds,
+            options.resolverCmd.empty() ? "" : ", resolver: ", options.resolverCmd.c_str());
         std::fflush(stdout);
     }
 
@@ -228,7 +245,8 @@ CheckRun runChecks(const CheckOptions& options) {
             if (!(p.revents & (POLLIN | POLLHUP))) continue;
             char buffer[65536];
             const ssize_t n = read(p.fd, buffer, sizeof buffer);
-            const std::size_t w = static_cast<std::size_t>(std::find(pipes.begin(), pipes.end(), p.fd) - pipes.begin());
+            const std::size_t w =
+                static_cast<std::size_t>(std::find(pipes.begin(), pipes.end(), p.fd) - pipes.begin());
             if (n <= 0) {
                 close(p.fd);
                 pipes[w] = -1;
@@ -252,11 +270,13 @@ CheckRun runChecks(const CheckOptions& options) {
                     ++row.failures;
                     const std::string corpus = r["corpus"].get<std::string>();
                     row.messages.push_back(r["message"].get<std::string>() +
-                                           (corpus.empty() ? std::string()
-                                                           : "\n  regression file: " + corpus +
-                                                                 "\n  picture: " + r["picture"].get<std::string>()));
+                                           (corpus.empty()
+                                                ? std::string()
+                                                : "\n  regression file: " + corpus +
+                                                      "\n  picture: " + r["picture"].get<std::string>()));
                     const std::string scene = r["scene"].get<std::string>();
-                    if (!scene.empty() && (row.smallestScene.empty() || scene.size() < row.smallestScene.size())) {
+                    if (!scene.empty() &&
+                        (row.smallestScene.empty() || scene.size() < row.smallestScene.size())) {
                         row.smallestScene = scene;
                         row.smallestFailure = r["failure"].get<std::string>();
                         row.smallestCorpus = corpus;
@@ -266,7 +286,8 @@ CheckRun runChecks(const CheckOptions& options) {
                         row.smallestFailure = r["message"].get<std::string>();  // a coverage shortfall
                 }
                 if (!options.quiet) {
-                    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+                    const double elapsed =
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
                     std::printf("[%6.1f s] %-52s %s  %d cases  (run %d)\n", elapsed, row.property.c_str(),
                                 passed ? "ok    " : "FAILED", r["cases"].get<int>(), runsDone);
                     std::fflush(stdout);
@@ -312,7 +333,8 @@ int runCheckCommand(const CheckOptions& options) {
         entry.options = options;
         entry.run = run;
         const std::string dir = std::filesystem::path(options.report).parent_path().string();
-        writeConformanceReport({entry}, options.report, (dir.empty() ? std::string(".") : dir) + "/conformance");
+        writeConformanceReport({entry}, options.report,
+                               (dir.empty() ? std::string(".") : dir) + "/conformance");
         std::printf("report: %s\n", options.report.c_str());
     }
     const bool ok = failures == 0 && !run.workerFailed;

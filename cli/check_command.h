@@ -16,20 +16,20 @@ namespace tilesweep::cli {
 
 /// The options of `tilesweep check`.
 struct CheckOptions {
-    int cases = 1000;                 ///< cases per property per round
-    double seconds = 60;              ///< keep running rounds until this budget is spent
-    std::uint64_t seed = 20261122;    ///< seed of the first round
-    std::string property;             ///< substring filter on property names; empty: all
-    int jobs = 0;                     ///< worker processes; 0: all cores
-    std::string corpusDir;            ///< where failing cases are written; empty: the default
-                                      ///< (properties/corpus, or resolver-corpus for an outside resolver)
-    std::string resolverCmd;          ///< outside resolver (sh -c); empty: tilesweep's own
-    double resolverTimeout = 10;      ///< seconds one batch may take before the process counts as hung
-    std::string claims = "all";       ///< "all" or "safety" (leaves out the bit-for-bit claims)
-    std::string scalar;               ///< "float" or "double"; empty: both (built-in), float (outside)
-    std::string report;               ///< a conformance report (Markdown) to write; empty: none
-    bool keepGoing = false;           ///< keep running rounds after a failure (failure rates)
-    bool quiet = false;               ///< no per-run progress lines
+    int cases = 1000;               ///< cases per property per round
+    double seconds = 60;            ///< keep running rounds until this budget is spent
+    std::uint64_t seed = 20261122;  ///< seed of the first round
+    std::string property;           ///< substring filter on property names; empty: all
+    int jobs = 0;                   ///< worker processes; 0: all cores
+    std::string corpusDir;          ///< where failing cases are written; empty: the default
+                                    ///< (properties/corpus, or resolver-corpus for an outside resolver)
+    std::string resolverCmd;        ///< outside resolver (sh -c); empty: tilesweep's own
+    double resolverTimeout = 10;    ///< seconds one batch may take before the process counts as hung
+    std::string claims = "all";     ///< "all" or "safety" (leaves out the bit-for-bit claims)
+    std::string scalar;             ///< "float" or "double"; empty: both (built-in), float (outside)
+    std::string report;             ///< a conformance report (Markdown) to write; empty: none
+    bool keepGoing = false;         ///< keep running rounds after a failure (failure rates)
+    bool quiet = false;             ///< no per-run progress lines
 };
 
 /// What one property did over all its runs.
@@ -37,8 +37,8 @@ struct CheckRow {
     std::string property;
     std::string claim;
     int runs = 0;
-    int cases = 0;      ///< cases that passed
-    int failures = 0;   ///< runs that ended in a (shrunk) counterexample or a coverage shortfall
+    int cases = 0;     ///< cases that passed
+    int failures = 0;  ///< runs that ended in a (shrunk) counterexample or a coverage shortfall
     double seconds = 0;
     double secondsToFirstFailure = 0;  ///< run time of the first failing run (generation + shrinking)
     std::map<std::string, int> tags;

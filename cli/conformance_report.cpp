@@ -63,9 +63,12 @@ void writeConformanceReport(const std::vector<ConformanceEntry>& entries, const 
           "protocol; every claim about results of the property suite runs against it, RapidCheck shrinks "
           "each failure, and the smallest counterexample of each property is shown with its picture. "
           "A failure rate is failing cases over cases run (a run stops at its first failure; rounds go on "
-          "with a new seed until the budget is spent). Time includes shrinking, which asks the resolver again at "
-          "every step; the first counterexample's time is that of the first failing run, shrinking included.\n\n";
-    md << "| resolver | properties held | properties failed | cases run | cases/s |\n|---|---:|---:|---:|---:|\n";
+          "with a new seed until the budget is spent). Time includes shrinking, which asks the resolver "
+          "again at "
+          "every step; the first counterexample's time is that of the first failing run, shrinking "
+          "included.\n\n";
+    md << "| resolver | properties held | properties failed | cases run | cases/s "
+          "|\n|---|---:|---:|---:|---:|\n";
     for (const ConformanceEntry& e : entries) {
         int held = 0, failed = 0, cases = 0;
         for (const CheckRow& r : e.run.rows) {
@@ -78,16 +81,18 @@ void writeConformanceReport(const std::vector<ConformanceEntry>& entries, const 
     for (const ConformanceEntry& e : entries) {
         const CheckOptions& o = e.options;
         md << "\n## " << e.label << "\n\n";
-        md << "- command: `" << (o.resolverCmd.empty() ? std::string("(built-in resolver)") : o.resolverCmd) << "`\n";
-        md << "- claims: " << o.claims << ", scalar: " << (o.scalar.empty() ? "float" : o.scalar) << ", " << o.cases
-           << " cases per property per round, first seed " << o.seed << ", budget " << fixed(o.seconds, 0) << " s on "
-           << e.run.jobs << " job" << (e.run.jobs == 1 ? "" : "s") << " (" << fixed(e.run.wallSeconds, 1)
-           << " s wall)\n\n";
-        md << "| property | claim | verdict | cases run | failures | failure rate | cases/s | time s | first counterexample after |\n"
+        md << "- command: `" << (o.resolverCmd.empty() ? std::string("(built-in resolver)") : o.resolverCmd)
+           << "`\n";
+        md << "- claims: " << o.claims << ", scalar: " << (o.scalar.empty() ? "float" : o.scalar) << ", "
+           << o.cases << " cases per property per round, first seed " << o.seed << ", budget "
+           << fixed(o.seconds, 0) << " s on " << e.run.jobs << " job" << (e.run.jobs == 1 ? "" : "s") << " ("
+           << fixed(e.run.wallSeconds, 1) << " s wall)\n\n";
+        md << "| property | claim | verdict | cases run | failures | failure rate | cases/s | time s | first "
+              "counterexample after |\n"
               "|---|---|---|---:|---:|---|---:|---:|---:|\n";
         for (const CheckRow& r : e.run.rows)
-            md << "| " << r.property << " | " << r.claim << " | " << (r.failures == 0 ? "holds" : "**fails**") << " | "
-               << r.cases + r.failures << " | " << r.failures << " | " << failureRate(r) << " | "
+            md << "| " << r.property << " | " << r.claim << " | " << (r.failures == 0 ? "holds" : "**fails**")
+               << " | " << r.cases + r.failures << " | " << r.failures << " | " << failureRate(r) << " | "
                << fixed(r.seconds > 0 ? r.cases / r.seconds : 0.0, 0) << " | " << fixed(r.seconds, 1) << " | "
                << (r.failures == 0 ? std::string("") : fixed(r.secondsToFirstFailure, 1) + " s") << " |\n";
         bool anyFailure = false;
@@ -102,14 +107,19 @@ void writeConformanceReport(const std::vector<ConformanceEntry>& entries, const 
             if (!r.smallestPicture.empty() && std::filesystem::exists(r.smallestPicture)) {
                 const std::filesystem::path picture =
                     std::filesystem::path(pictureDir) / (slug(e.label) + "-" + r.property + ".svg");
-                std::filesystem::copy_file(r.smallestPicture, picture, std::filesystem::copy_options::overwrite_existing);
+                std::filesystem::copy_file(r.smallestPicture, picture,
+                                           std::filesystem::copy_options::overwrite_existing);
                 const std::filesystem::path corpus = std::filesystem::path(r.smallestCorpus);
-                const std::filesystem::path corpusCopy = picture.parent_path() / (picture.stem().string() + ".jsonl");
+                const std::filesystem::path corpusCopy =
+                    picture.parent_path() / (picture.stem().string() + ".jsonl");
                 if (!r.smallestCorpus.empty() && std::filesystem::exists(corpus))
-                    std::filesystem::copy_file(corpus, corpusCopy, std::filesystem::copy_options::overwrite_existing);
+                    std::filesystem::copy_file(corpus, corpusCopy,
+                                               std::filesystem::copy_options::overwrite_existing);
                 const std::string relative = std::filesystem::relative(picture, reportDir).generic_string();
-                const std::string relativeCorpus = std::filesystem::relative(corpusCopy, reportDir).generic_string();
-                md << "\n![" << r.property << "](" << relative << ")\n\nRegression file (with the resolver's answer "
+                const std::string relativeCorpus =
+                    std::filesystem::relative(corpusCopy, reportDir).generic_string();
+                md << "\n![" << r.property << "](" << relative
+                   << ")\n\nRegression file (with the resolver's answer "
                    << "beside the exact one): [" << relativeCorpus << "](" << relativeCorpus << ")\n";
             }
         }

@@ -5,10 +5,10 @@
 // verdict, cases run, failure rate and smallest counterexample with its picture. Written by
 // `tilesweep audit --resolver-cmd ...` (several resolvers) and `tilesweep check --report`.
 
+#include "check_command.h"
+
 #include <string>
 #include <vector>
-
-#include "check_command.h"
 
 namespace tilesweep::cli {
 

@@ -3,6 +3,8 @@
 // happens here. A subcommand is a pair of functions, add<Name>Command (its options) and
 // run<Name>Command (its work), and main only dispatches, so adding `check`, `render` or
 // `audit` touches neither `resolve` nor main's structure.
+#include "tilesweep/scene/render.h"
+
 #include <CLI/CLI.hpp>
 
 #include <cerrno>
@@ -18,8 +20,6 @@
 #include <string_view>
 #include <utility>
 #include <vector>
-
-#include "tilesweep/scene/render.h"
 #if TILESWEEP_HAVE_CHECK
 #include "check_command.h"
 #include "replay_command.h"
@@ -29,6 +29,7 @@
 #include "audit_command.h"
 #endif
 #include "resolvers.h"
+
 #include "tilesweep/scene/scene.h"
 
 #ifndef TILESWEEP_VERSION
@@ -54,8 +55,8 @@ struct ResolveOptions {
     std::string scalar = "float";
     std::string resolver = "core";
     std::string file = "-";
-    std::string resolverCmd;       // an outside resolver to pass every scene through
-    double resolverTimeout = 10;   // seconds per scene before it counts as hung
+    std::string resolverCmd;      // an outside resolver to pass every scene through
+    double resolverTimeout = 10;  // seconds per scene before it counts as hung
 };
 
 /// One output line for one scene line: the frames, or an error naming the field at fault.
@@ -91,20 +92,21 @@ int resolveLines(std::istream& in, std::ostream& out, const Resolver<T>& resolve
 
 CLI::App* addResolveCommand(CLI::App& app, ResolveOptions& options) {
     CLI::App* command = app.add_subcommand(
-        "resolve",
-        "Resolve scene lines (JSON Lines): one result line per scene, in order");
+        "resolve", "Resolve scene lines (JSON Lines): one result line per scene, in order");
     command->add_option("--scalar", options.scalar, "The scalar type every number is rounded to")
         ->check(CLI::IsMember(std::vector<std::string>{"float", "double"}))
         ->capture_default_str();
-    command->add_option("--resolver", options.resolver,
-                        "The implementation: core (production, in --scalar), float, double (production in that\n"
-                        "type), exact (rational reference), substep:N, substep-float:N, seed (the article's)")
+    command
+        ->add_option("--resolver", options.resolver,
+                     "The implementation: core (production, in --scalar), float, double (production in that\n"
+                     "type), exact (rational reference), substep:N, substep-float:N, seed (the article's)")
         ->check(CLI::Validator(tilesweep::cli::checkResolverName, "NAME", "resolver"))
         ->capture_default_str();
 #if TILESWEEP_HAVE_CHECK
-    command->add_option("--resolver-cmd", options.resolverCmd,
-                        "Pass every scene through an outside resolver (a shell command speaking this\n"
-                        "protocol) and print its answers, checked and re-printed in this format")
+    command
+        ->add_option("--resolver-cmd", options.resolverCmd,
+                     "Pass every scene through an outside resolver (a shell command speaking this\n"
+                     "protocol) and print its answers, checked and re-printed in this format")
         ->type_name("CMD");
     command->add_option("--resolver-timeout", options.resolverTimeout, "Seconds per scene for --resolver-cmd")
         ->check(CLI::PositiveNumber)
@@ -140,8 +142,8 @@ int runResolveCommand(const ResolveOptions& options) {
         // A directory opens but cannot be read; peek() makes the first read fail here instead.
         if (file.is_open()) file.peek();
         if (!file.is_open() || file.bad()) {
-            std::cerr << "tilesweep resolve: cannot read '" << options.file
-                      << "': " << std::strerror(errno) << '\n';
+            std::cerr << "tilesweep resolve: cannot read '" << options.file << "': " << std::strerror(errno)
+                      << '\n';
             return kExitUsage;
         }
     }
@@ -157,11 +159,16 @@ int runResolveCommand(const ResolveOptions& options) {
     // again, so a malformed answer becomes an error line naming what is wrong.
     std::shared_ptr<tilesweep::properties::ResolverProcess> process;
     if (!options.resolverCmd.empty()) {
-        process = std::make_shared<tilesweep::properties::ResolverProcess>(options.resolverCmd, options.resolverTimeout);
+        process = std::make_shared<tilesweep::properties::ResolverProcess>(options.resolverCmd,
+                                                                           options.resolverTimeout);
         auto floatOutside = std::make_shared<tilesweep::properties::OutsideSceneRunner<float>>(process);
         auto doubleOutside = std::make_shared<tilesweep::properties::OutsideSceneRunner<double>>(process);
-        floatResolver = [floatOutside](const tilesweep::Scene<float>& s) { return floatOutside->runAll({&s}).front(); };
-        doubleResolver = [doubleOutside](const tilesweep::Scene<double>& s) { return doubleOutside->runAll({&s}).front(); };
+        floatResolver = [floatOutside](const tilesweep::Scene<float>& s) {
+            return floatOutside->runAll({&s}).front();
+        };
+        doubleResolver = [doubleOutside](const tilesweep::Scene<double>& s) {
+            return doubleOutside->runAll({&s}).front();
+        };
     }
 #endif
     const int status = scalar == "double" ? resolveLines<double>(in, std::cout, doubleResolver)
@@ -320,7 +327,8 @@ int main(int argc, char** argv) {
 #if TILESWEEP_HAVE_AUDIT
     tilesweep::cli::AuditOptions auditOptions;
     CLI::App* auditCommand = tilesweep::cli::addAuditCommand(app, auditOptions);
-    for (int k = 0; k < argc; ++k) auditOptions.commandLine += (k == 0 ? "tilesweep" : std::string(" ") + argv[k]);
+    for (int k = 0; k < argc; ++k)
+        auditOptions.commandLine += (k == 0 ? "tilesweep" : std::string(" ") + argv[k]);
 #endif
 
     try {

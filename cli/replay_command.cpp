@@ -5,6 +5,9 @@
 // claim fails, so a team's CI keeps its counterexamples fixed.
 #include "replay_command.h"
 
+#include "scene_checks.h"
+#include "scene_runner.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -13,9 +16,6 @@
 #include <fstream>
 #include <memory>
 #include <string>
-
-#include "scene_checks.h"
-#include "scene_runner.h"
 
 namespace tilesweep::cli {
 namespace {
@@ -63,12 +63,18 @@ bool replayLine(const std::string& where, const std::string& line, bool outside,
 }  // namespace
 
 CLI::App* addReplayCommand(CLI::App& app, ReplayOptions& options) {
-    CLI::App* command = app.add_subcommand("replay", "Replay regression files against every claim that applies");
-    command->add_option("PATH", options.paths, "Regression files (.jsonl), or directories of them")->required();
-    command->add_option("--resolver-cmd", options.resolverCmd,
-                        "Replay against an outside resolver (a shell command speaking `tilesweep resolve`'s protocol)")
+    CLI::App* command =
+        app.add_subcommand("replay", "Replay regression files against every claim that applies");
+    command->add_option("PATH", options.paths, "Regression files (.jsonl), or directories of them")
+        ->required();
+    command
+        ->add_option(
+            "--resolver-cmd", options.resolverCmd,
+            "Replay against an outside resolver (a shell command speaking `tilesweep resolve`'s protocol)")
         ->type_name("CMD");
-    command->add_option("--resolver-timeout", options.resolverTimeout, "Seconds per scene before it counts as hung")
+    command
+        ->add_option("--resolver-timeout", options.resolverTimeout,
+                     "Seconds per scene before it counts as hung")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
     command->add_option("--claims", options.claims, "all, or safety: leave out the bit-for-bit claims")
@@ -109,8 +115,9 @@ int runReplayCommand(const ReplayOptions& options) {
             if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
             const auto json = nlohmann::json::parse(line, nullptr, false);
             const std::string scalar =
-                json.is_object() && json.contains("scalar") && json["scalar"].is_string() ? json["scalar"].get<std::string>()
-                                                                                           : "float";
+                json.is_object() && json.contains("scalar") && json["scalar"].is_string()
+                    ? json["scalar"].get<std::string>()
+                    : "float";
             const std::string where = file + ":" + std::to_string(number);
             const bool ok = scalar == "double" ? replayLine<double>(where, line, outside, safetyOnly)
                                                : replayLine<float>(where, line, outside, safetyOnly);

@@ -19,7 +19,8 @@ namespace {
 std::int64_t substepCount(const std::string& name, const std::string& prefix) {
     if (name.rfind(prefix + ":", 0) != 0) return 0;
     const std::string digits = name.substr(prefix.size() + 1);
-    if (digits.empty() || digits.size() > 7 || digits.find_first_not_of("0123456789") != std::string::npos) return 0;
+    if (digits.empty() || digits.size() > 7 || digits.find_first_not_of("0123456789") != std::string::npos)
+        return 0;
     const std::int64_t n = std::stoll(digits);
     return n >= 1 && n <= (std::int64_t{1} << 20) ? n : 0;
 }
@@ -58,7 +59,9 @@ std::string checkResolverName(const std::string& name) {
         ;
 }
 
-std::string scalarForcedBy(const std::string& name) { return name == "float" || name == "double" ? name : ""; }
+std::string scalarForcedBy(const std::string& name) {
+    return name == "float" || name == "double" ? name : "";
+}
 
 template Resolver<float> findResolver<float>(const std::string&);
 template Resolver<double> findResolver<double>(const std::string&);

@@ -11,11 +11,11 @@
 //   substep-float:N  the game-style substep loop, positions accumulated in --scalar
 //   seed             the seed article's algorithm as written (a baseline, not a reference)
 
+#include "tilesweep/scene/scene.h"
+
 #include <functional>
 #include <string>
 #include <vector>
-
-#include "tilesweep/scene/scene.h"
 
 namespace tilesweep::cli {
 

@@ -9,6 +9,12 @@
 // Input layout (missing bytes read as zero): 1 byte scalar type (bit 0: double), 1 byte
 // columns, 1 byte rows, ceil(columns*rows/8) bytes of solid bits, then 10 scalars (origin,
 // tile size, box position, box size, displacement), then 1 byte of list capacities.
+#include "frame_safety.h"  // checks/
+#include "fuzz_check.h"
+
+#include "tilesweep/resolve.h"
+#include "tilesweep/tile_map.h"
+
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -18,11 +24,6 @@
 #include <string>
 #include <type_traits>
 #include <vector>
-
-#include "frame_safety.h"  // checks/
-#include "fuzz_check.h"
-#include "tilesweep/resolve.h"
-#include "tilesweep/tile_map.h"
 
 namespace {
 
@@ -40,7 +41,8 @@ public:
     template <class U>
     U word() noexcept {
         U value = 0;
-        for (std::size_t k = 0; k < sizeof(U); ++k) value = static_cast<U>(static_cast<U>(value << 8) | byte());
+        for (std::size_t k = 0; k < sizeof(U); ++k)
+            value = static_cast<U>(static_cast<U>(value << 8) | byte());
         return value;
     }
 
@@ -64,13 +66,26 @@ T fromBits(BitsOf<T> bits) noexcept {
 template <class T>
 T specialValue(std::uint8_t pick) noexcept {
     using L = std::numeric_limits<T>;
-    const T table[] = {L::quiet_NaN(),  -L::quiet_NaN(),  L::signaling_NaN(),
-                       L::infinity(),   -L::infinity(),   T(0),
-                       -T(0),           L::denorm_min(),  -L::denorm_min(),
-                       L::min(),        -L::min(),        L::max(),
-                       L::lowest(),     L::epsilon(),     T(1) / T(3),
-                       T(0.1),          std::ldexp(T(1), L::digits),  std::ldexp(T(1), L::digits) + T(2),
-                       std::ldexp(T(1), L::max_exponent - 2), std::ldexp(T(1), L::min_exponent - 1)};
+    const T table[] = {L::quiet_NaN(),
+                       -L::quiet_NaN(),
+                       L::signaling_NaN(),
+                       L::infinity(),
+                       -L::infinity(),
+                       T(0),
+                       -T(0),
+                       L::denorm_min(),
+                       -L::denorm_min(),
+                       L::min(),
+                       -L::min(),
+                       L::max(),
+                       L::lowest(),
+                       L::epsilon(),
+                       T(1) / T(3),
+                       T(0.1),
+                       std::ldexp(T(1), L::digits),
+                       std::ldexp(T(1), L::digits) + T(2),
+                       std::ldexp(T(1), L::max_exponent - 2),
+                       std::ldexp(T(1), L::min_exponent - 1)};
     return table[pick % (sizeof table / sizeof table[0])];
 }
 
@@ -90,13 +105,15 @@ T decodeScalar(ByteReader& in) {
         case 4: {  // a multiple of 4 (a tile edge, often), nudged by -3..3 ulps
             T value = static_cast<T>(static_cast<std::int8_t>(in.byte())) * T(4);
             const int steps = in.byte() % 7 - 3;
-            const T toward = steps < 0 ? -std::numeric_limits<T>::infinity() : std::numeric_limits<T>::infinity();
+            const T toward =
+                steps < 0 ? -std::numeric_limits<T>::infinity() : std::numeric_limits<T>::infinity();
             for (int k = 0; k < (steps < 0 ? -steps : steps); ++k) value = std::nextafter(value, toward);
             return value;
         }
         case 5: {  // a small integer scaled by any power of two: far from the origin, or tiny
             const T mantissa = static_cast<T>(static_cast<std::int8_t>(in.byte()));
-            return std::ldexp(mantissa, static_cast<int>(static_cast<std::int16_t>(in.word<std::uint16_t>()) % 1200));
+            return std::ldexp(mantissa,
+                              static_cast<int>(static_cast<std::int16_t>(in.word<std::uint16_t>()) % 1200));
         }
         default:  // a small multiple of 16: the usual tile size
             return static_cast<T>(static_cast<std::int8_t>(in.byte())) * T(16);
@@ -122,9 +139,9 @@ std::string describeInput(const SweepInput<T>& in, const std::vector<std::uint8_
                        std::to_string(in.map.columns) + "x" + std::to_string(in.map.rows) + " origin (" +
                        hexfloat(in.map.origin.x) + ", " + hexfloat(in.map.origin.y) + ") tile (" +
                        hexfloat(in.map.tileSize.x) + ", " + hexfloat(in.map.tileSize.y) + ") box (" +
-                       hexfloat(in.box.pos.x) + ", " + hexfloat(in.box.pos.y) + ", " + hexfloat(in.box.size.x) +
-                       ", " + hexfloat(in.box.size.y) + ") d (" + hexfloat(in.displacement.x) + ", " +
-                       hexfloat(in.displacement.y) + ") rows";
+                       hexfloat(in.box.pos.x) + ", " + hexfloat(in.box.pos.y) + ", " +
+                       hexfloat(in.box.size.x) + ", " + hexfloat(in.box.size.y) + ") d (" +
+                       hexfloat(in.displacement.x) + ", " + hexfloat(in.displacement.y) + ") rows";
     for (std::int32_t j = 0; j < in.map.rows; ++j) {
         text += ' ';
         for (std::int32_t i = 0; i < in.map.columns; ++i)
@@ -141,7 +158,8 @@ struct Lists {
     std::vector<Cell> overlaps;
 
     Lists(std::int32_t contactCapacity, std::int32_t overlapCapacity)
-        : contacts(static_cast<std::size_t>(contactCapacity)), overlaps(static_cast<std::size_t>(overlapCapacity)) {}
+        : contacts(static_cast<std::size_t>(contactCapacity)),
+          overlaps(static_cast<std::size_t>(overlapCapacity)) {}
 
     ResolveOutput<T> output() noexcept {
         return {contacts.empty() ? nullptr : contacts.data(), static_cast<std::int32_t>(contacts.size()),
@@ -199,8 +217,8 @@ void fuzzResolver(ByteReader& in) {
 
     const checks::MapEdges<T> edges = checks::computeEdges(map);
     checks::SafetyScratch scratch;
-    const checks::FrameRecord<T> frame{map, input.box, input.displacement, r, full.contacts.data(),
-                                     full.overlaps.data()};
+    const checks::FrameRecord<T> frame{
+        map, input.box, input.displacement, r, full.contacts.data(), full.overlaps.data()};
     const checks::SafetyViolation violation = checks::checkFrameSafety(frame, edges, scratch);
     if (violation) fuzz::failCheck(kTarget, violation.detail, describeInput(input, solid));
 }

@@ -5,16 +5,17 @@
 // resolver accepts, must survive formatScene -> parseScene with the same bits and format back to
 // the same text, and runScene on it must return one frame per move, each obeying the safety
 // rules (frame_safety.h). Resolving is skipped for scenes too big to run many times a second.
+#include "frame_safety.h"  // checks/
+#include "fuzz_check.h"
+
+#include "tilesweep/scene/scene.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <exception>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include "frame_safety.h"  // checks/
-#include "fuzz_check.h"
-#include "tilesweep/scene/scene.h"
 
 namespace {
 
@@ -77,7 +78,8 @@ void checkFrames(const Scene<T>& scene, std::string_view line) {
     try {
         frames = runScene(scene);
     } catch (const std::exception& error) {
-        fuzz::failCheck(kTarget, std::string("runScene threw on a parsed scene: ") + error.what(), excerpt(line));
+        fuzz::failCheck(kTarget, std::string("runScene threw on a parsed scene: ") + error.what(),
+                        excerpt(line));
     }
     if (frames.size() != scene.moves.size())
         fuzz::failCheck(kTarget, "runScene did not return one frame per move", excerpt(line));
@@ -93,10 +95,11 @@ void checkFrames(const Scene<T>& scene, std::string_view line) {
         result.position = f.position;
         result.contactCount = static_cast<std::int32_t>(f.contacts.size());
         result.startOverlapCount = static_cast<std::int32_t>(f.startOverlaps.size());
-        const checks::FrameRecord<T> frame{map, box, scene.moves[k], result, f.contacts.data(),
-                                         f.startOverlaps.data()};
+        const checks::FrameRecord<T> frame{
+            map, box, scene.moves[k], result, f.contacts.data(), f.startOverlaps.data()};
         const checks::SafetyViolation violation = checks::checkFrameSafety(frame, edges, scratch);
-        if (violation) fuzz::failCheck(kTarget, "frame " + std::to_string(k) + ": " + violation.detail, excerpt(line));
+        if (violation)
+            fuzz::failCheck(kTarget, "frame " + std::to_string(k) + ": " + violation.detail, excerpt(line));
         box.pos = f.position;
     }
 }
@@ -114,7 +117,8 @@ void fuzzSceneReader(std::string_view line) {
 
     const Scene<T>& scene = *parsed.scene;
     if (scene.moves.empty() ||
-        scene.map.solid.size() != static_cast<std::size_t>(scene.map.columns) * static_cast<std::size_t>(scene.map.rows) ||
+        scene.map.solid.size() !=
+            static_cast<std::size_t>(scene.map.columns) * static_cast<std::size_t>(scene.map.rows) ||
         validateTileMap(scene.map.view()) != MapError::None)
         fuzz::failCheck(kTarget, "parsed scene without moves, or with an invalid map", excerpt(line));
     for (const Vec2<T> move : scene.moves)
@@ -125,11 +129,14 @@ void fuzzSceneReader(std::string_view line) {
     try {
         text = formatScene(scene);
     } catch (const std::exception& error) {
-        fuzz::failCheck(kTarget, std::string("formatScene threw on a parsed scene: ") + error.what(), excerpt(line));
+        fuzz::failCheck(kTarget, std::string("formatScene threw on a parsed scene: ") + error.what(),
+                        excerpt(line));
     }
     const SceneParse<T> again = parseScene<T>(text);
-    if (!again.scene) fuzz::failCheck(kTarget, "formatScene wrote a line parseScene refuses: " + again.error, text);
-    if (!sameScene(scene, *again.scene)) fuzz::failCheck(kTarget, "formatScene -> parseScene changed the scene", text);
+    if (!again.scene)
+        fuzz::failCheck(kTarget, "formatScene wrote a line parseScene refuses: " + again.error, text);
+    if (!sameScene(scene, *again.scene))
+        fuzz::failCheck(kTarget, "formatScene -> parseScene changed the scene", text);
     if (formatScene(*again.scene) != text) fuzz::failCheck(kTarget, "formatScene is not stable", text);
 
     checkFrames(scene, line);

@@ -2,16 +2,17 @@
 // Bad input is rejected with an error, never a result: tile sizes whose multiples are not
 // representable. (NaN, infinities and sizes that are not > 0 in every field are the suite's claim
 // badInputIsRejected, scene_checks.cpp, which `tilesweep check` runs too.)
+#include "generators.h"
+
+#include "tilesweep/resolve.h"
+
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
 
 #include <cmath>
 #include <limits>
-#include <nlohmann/json.hpp>
-
-#include "generators.h"
-#include "tilesweep/resolve.h"
 
 namespace tilesweep::properties {
 namespace {

@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: MIT
 // Replays every regression scene in properties/corpus/ against every claim, for ever: each file
 // is a named test case. A file is a scene line with the property, seed and scalar that found it.
+#include "scene_checks.h"
+
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include "scene_checks.h"
 
 namespace tilesweep::properties {
 namespace {

@@ -2,11 +2,11 @@
 // Every property of the suite as one GoogleTest case, so ctest runs them, GoogleTest sharding
 // (GTEST_TOTAL_SHARDS, GTEST_SHARD_INDEX) fans them out, and --gtest_filter picks one.
 // TILESWEEP_PROPERTY_SEED / TILESWEEP_PROPERTY_CASES / TILESWEEP_CORPUS_DIR set the run.
+#include "property_suite.h"
+
 #include <gtest/gtest.h>
 
 #include <iostream>
-
-#include "property_suite.h"
 
 namespace tilesweep::properties {
 namespace {
@@ -22,7 +22,8 @@ TEST_P(Property, holds) {
     for (const auto& [tag, count] : outcome.tagCounts)
         std::cout << "  " << tag << ": " << 100.0 * count / std::max(outcome.cases, 1) << "%\n";
     EXPECT_TRUE(outcome.passed) << outcome.message
-                                << (outcome.corpusFile.empty() ? "" : "\nregression file: " + outcome.corpusFile)
+                                << (outcome.corpusFile.empty() ? ""
+                                                               : "\nregression file: " + outcome.corpusFile)
                                 << (outcome.pictureFile.empty() ? "" : "\npicture: " + outcome.pictureFile);
 }
 

@@ -1,6 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "property_suite.h"
 
+#include "generators.h"
+#include "oracle/exact/exact_resolve.h"
+#include "scene_checks.h"
+#include "scene_runner.h"
+
+#include "tilesweep/scene/render.h"
+
+#include <nlohmann/json.hpp>
 #include <rapidcheck.h>
 
 #include <chrono>
@@ -9,13 +17,6 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <nlohmann/json.hpp>
-
-#include "generators.h"
-#include "oracle/exact/exact_resolve.h"
-#include "scene_checks.h"
-#include "scene_runner.h"
-#include "tilesweep/scene/render.h"
 
 namespace tilesweep::properties {
 namespace {
@@ -39,7 +40,9 @@ void writeAtomically(const std::filesystem::path& path, const std::string& text)
 }
 
 template <class T>
-const char* scalarName() { return std::is_same<T, float>::value ? "float" : "double"; }
+const char* scalarName() {
+    return std::is_same<T, float>::value ? "float" : "double";
+}
 
 template <class T>
 PropertyOutcome runClaim(const std::string& propertyName, const Claim<T>& claim, Family family,
@@ -91,11 +94,13 @@ PropertyOutcome runClaim(const std::string& propertyName, const Claim<T>& claim,
             }
         outcome.passed = true;
         for (const CoverageFloor& floor : floors) {
-            const double seen = outcome.cases > 0 ? double(outcome.tagCounts[floor.tag]) / outcome.cases : 0.0;
+            const double seen =
+                outcome.cases > 0 ? double(outcome.tagCounts[floor.tag]) / outcome.cases : 0.0;
             if (seen < floor.fraction) {
                 outcome.passed = false;
                 char text[200];
-                std::snprintf(text, sizeof text, "coverage: '%s' in %.1f%% of cases, below the floor of %.1f%%; ",
+                std::snprintf(text, sizeof text,
+                              "coverage: '%s' in %.1f%% of cases, below the floor of %.1f%%; ",
                               floor.tag.c_str(), 100 * seen, 100 * floor.fraction);
                 outcome.message += text;
             }
@@ -103,9 +108,10 @@ PropertyOutcome runClaim(const std::string& propertyName, const Claim<T>& claim,
     } else if (result.template is<rc::detail::FailureResult>()) {
         const auto failure = result.template get<rc::detail::FailureResult>();
         outcome.cases = failure.numSuccess;
-        outcome.message = lastMessage + "\n" + (failed ? familyName(lastFailure.family) + std::string(" scene: ") +
-                                                             formatScene(lastFailure.scene)
-                                                       : std::string());
+        outcome.message = lastMessage + "\n" +
+                          (failed ? familyName(lastFailure.family) + std::string(" scene: ") +
+                                        formatScene(lastFailure.scene)
+                                  : std::string());
         if (failed) {
             outcome.sceneLine = formatScene(lastFailure.scene);
             outcome.failure = lastMessage;
@@ -114,8 +120,8 @@ PropertyOutcome runClaim(const std::string& propertyName, const Claim<T>& claim,
             const std::string sceneLine = formatScene(lastFailure.scene);
             char hash[17];
             std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(fnv1a(sceneLine)));
-            const std::filesystem::path file =
-                std::filesystem::path(options.corpusDir) / (propertyName + "-" + std::string(hash, 8) + ".jsonl");
+            const std::filesystem::path file = std::filesystem::path(options.corpusDir) /
+                                               (propertyName + "-" + std::string(hash, 8) + ".jsonl");
             // An outside resolver's failure carries its command and its answer beside the exact
             // one; the picture shows what it did, or the exact frames when it gave no answer.
             std::string extra;
@@ -124,8 +130,10 @@ PropertyOutcome runClaim(const std::string& propertyName, const Claim<T>& claim,
                 nlohmann::ordered_json fields;
                 fields["resolver_cmd"] = outside->name();
                 const std::string answer = outside->answerText(lastFailure.scene);
-                const nlohmann::ordered_json parsedAnswer = nlohmann::ordered_json::parse(answer, nullptr, false);
-                fields["resolver_answer"] = parsedAnswer.is_discarded() ? nlohmann::ordered_json(answer) : parsedAnswer;
+                const nlohmann::ordered_json parsedAnswer =
+                    nlohmann::ordered_json::parse(answer, nullptr, false);
+                fields["resolver_answer"] =
+                    parsedAnswer.is_discarded() ? nlohmann::ordered_json(answer) : parsedAnswer;
                 const std::vector<FrameResult<T>> exact = oracle::resolveSceneExactRounded(lastFailure.scene);
                 fields["exact_answer"] = nlohmann::ordered_json::parse(formatFrames(exact));
                 extra = fields.dump();
@@ -137,7 +145,9 @@ PropertyOutcome runClaim(const std::string& propertyName, const Claim<T>& claim,
             } else {
                 pictured = runScene(lastFailure.scene);
             }
-            writeAtomically(file, corpusLine(sceneLine, propertyName, options.seed, scalarName<T>(), lastMessage, extra) + "\n");
+            writeAtomically(
+                file, corpusLine(sceneLine, propertyName, options.seed, scalarName<T>(), lastMessage, extra) +
+                          "\n");
             outcome.corpusFile = file.string();
             std::filesystem::path picture = file;
             picture.replace_extension(".svg");
@@ -166,18 +176,25 @@ template <class T>
 void addAll(std::vector<Property>& out) {
     // The floors say what a run must have seen for its pass to mean something.
     addClaim<T>(out, "matchesExactReferenceBitForBit", "matchesExactReferenceBitForBit", Family::Mixed,
-                {{"hit", 0.2}, {"miss", 0.1}, {"tie", 0.03}, {"touch-at-0", 0.03}, {"two-step", 0.005}, {"family:corner-pass", 0.05},
-                 {"seam", 0.02}, {"far-origin", 0.03}});
+                {{"hit", 0.2},
+                 {"miss", 0.1},
+                 {"tie", 0.03},
+                 {"touch-at-0", 0.03},
+                 {"two-step", 0.005},
+                 {"family:corner-pass", 0.05},
+                 {"seam", 0.02},
+                 {"far-origin", 0.03}});
     // The corner, tie and far-origin families must reach the band where the resolver's fast path
     // cannot decide alone ("fallback": a filtered refinement or the exact lattice).
     addClaim<T>(out, "decidesCornerPassesExactly", "matchesExactReferenceBitForBit", Family::CornerPass,
                 {{"hit", 0.1}, {"miss", 0.1}, {"fallback", 0.05}});
     addClaim<T>(out, "settlesCornerTiesByExposedFace", "matchesExactReferenceBitForBit", Family::CornerTie,
                 {{"tie", 0.3}, {"fallback", 0.05}});
-    addClaim<T>(out, "broadphaseOffersEveryBlockingTile", "matchesExactReferenceBitForBit", Family::Random,
-                {{"hit", 0.10}, {"two-step", 0.02}});  // about 18.6% on average, 14.4% in the worst of 4,700 rounds
-    addClaim<T>(out, "neverEndsInsideATileItDidNotStartIn", "neverEndsInsideATileItDidNotStartIn", Family::Mixed,
-                {{"hit", 0.2}, {"rounded-down", 0.002}});
+    addClaim<T>(
+        out, "broadphaseOffersEveryBlockingTile", "matchesExactReferenceBitForBit", Family::Random,
+        {{"hit", 0.10}, {"two-step", 0.02}});  // about 18.6% on average, 14.4% in the worst of 4,700 rounds
+    addClaim<T>(out, "neverEndsInsideATileItDidNotStartIn", "neverEndsInsideATileItDidNotStartIn",
+                Family::Mixed, {{"hit", 0.2}, {"rounded-down", 0.002}});
     addClaim<T>(out, "stopsJustTouching", "stopsJustTouching", Family::Mixed, {{"hit", 0.2}});
     addClaim<T>(out, "obeysTheSafetyRules", "obeysTheSafetyRules", Family::Mixed, {{"hit", 0.2}});
     // The rounding rule's family: the exception must change the result in a good share of it.
@@ -187,11 +204,13 @@ void addAll(std::vector<Property>& out) {
     // Events the other families do not aim at: each has its floor.
     addClaim<T>(out, "decidesTiesInsideTheFilterBand", "matchesExactReferenceBitForBit", Family::FilterBand,
                 {{"tie", 0.5}, {"fallback", 0.5}});
-    addClaim<T>(out, "decidesFineBitsExactly", "matchesExactReferenceBitForBit", Family::FineBits,
-                {{"time-tie", 0.05}, {"reaches-at-end", 0.05}, {"lattice-wide", 0.05}, {"lattice-192", 0.03}});
+    addClaim<T>(
+        out, "decidesFineBitsExactly", "matchesExactReferenceBitForBit", Family::FineBits,
+        {{"time-tie", 0.05}, {"reaches-at-end", 0.05}, {"lattice-wide", 0.05}, {"lattice-192", 0.03}});
     addClaim<T>(out, "farEdgesNeverEndInsideATile", "neverEndsInsideATileItDidNotStartIn", Family::FarEdge,
                 {{"rounded-down", 0.05}, {"fallback", 0.05}});
-    addClaim<T>(out, "farEdgesObeyTheSafetyRules", "obeysTheSafetyRules", Family::FarEdge, {{"rounded-down", 0.05}});
+    addClaim<T>(out, "farEdgesObeyTheSafetyRules", "obeysTheSafetyRules", Family::FarEdge,
+                {{"rounded-down", 0.05}});
     addClaim<T>(out, "substepOracleFindsNoMissedContact", "substepOracleFindsNoMissedContact", Family::Mixed,
                 {{"hit", 0.2}});
     addClaim<T>(out, "exactReferenceAgreesWithSubsteps", "exactReferenceAgreesWithSubsteps", Family::Mixed,
@@ -205,17 +224,20 @@ void addAll(std::vector<Property>& out) {
                 {{"empty-map", 0.2}, {"huge-move", 0.3}});
     addClaim<T>(out, "extremeScenesObeyTheSafetyRules", "obeysTheSafetyRules", Family::Extreme,
                 {{"empty-map", 0.2}, {"huge-move", 0.3}});
-    addClaim<T>(out, "scalingByPowerOfTwoScalesTheResult", "scalingByPowerOfTwoScalesTheResult", Family::Mixed,
-                {{"hit", 0.2}, {"tie", 0.02}});
-    addClaim<T>(out, "mirroringXMirrorsTheResult", "mirroringXMirrorsTheResult", Family::Mixed, {{"hit", 0.2}});
-    addClaim<T>(out, "mirroringYMirrorsTheResult", "mirroringYMirrorsTheResult", Family::Mixed, {{"hit", 0.2}});
-    addClaim<T>(out, "translatingByWholeTilesKeepsDecisions", "translatingByWholeTilesKeepsDecisions", Family::Mixed,
+    addClaim<T>(out, "scalingByPowerOfTwoScalesTheResult", "scalingByPowerOfTwoScalesTheResult",
+                Family::Mixed, {{"hit", 0.2}, {"tie", 0.02}});
+    addClaim<T>(out, "mirroringXMirrorsTheResult", "mirroringXMirrorsTheResult", Family::Mixed,
                 {{"hit", 0.2}});
+    addClaim<T>(out, "mirroringYMirrorsTheResult", "mirroringYMirrorsTheResult", Family::Mixed,
+                {{"hit", 0.2}});
+    addClaim<T>(out, "translatingByWholeTilesKeepsDecisions", "translatingByWholeTilesKeepsDecisions",
+                Family::Mixed, {{"hit", 0.2}});
     addClaim<T>(out, "roundingNearFarCornersStaysOutOfHitTiles", "neverEndsInsideATileItDidNotStartIn",
                 Family::FarSubUlp, {{"far-origin", 0.9}, {"fallback", 0.05}});
     addClaim<T>(out, "neverTunnelsAtHighSpeed", "matchesExactReferenceBitForBit", Family::HighSpeed,
                 {{"hit", 0.5}});
-    addClaim<T>(out, "restingContactIsStable", "restingContactIsStable", Family::Resting, {{"touch-at-0", 0.3}});
+    addClaim<T>(out, "restingContactIsStable", "restingContactIsStable", Family::Resting,
+                {{"touch-at-0", 0.3}});
     addClaim<T>(out, "slidingAlongFloorNeverSnags", "slidingAlongFloorNeverSnags", Family::SeamLanding,
                 {{"seam", 0.1}, {"touch-at-0", 0.2}});
 }
@@ -234,8 +256,10 @@ const std::vector<Property>& allProperties() {
 
 RunOptions optionsFromEnvironment() {
     RunOptions options;
-    if (const char* seed = std::getenv("TILESWEEP_PROPERTY_DEFAULT_SEED")) options.seed = std::strtoull(seed, nullptr, 10);
-    if (const char* seed = std::getenv("TILESWEEP_PROPERTY_SEED")) options.seed = std::strtoull(seed, nullptr, 10);
+    if (const char* seed = std::getenv("TILESWEEP_PROPERTY_DEFAULT_SEED"))
+        options.seed = std::strtoull(seed, nullptr, 10);
+    if (const char* seed = std::getenv("TILESWEEP_PROPERTY_SEED"))
+        options.seed = std::strtoull(seed, nullptr, 10);
     if (const char* cases = std::getenv("TILESWEEP_PROPERTY_CASES")) options.cases = std::atoi(cases);
     if (const char* dir = std::getenv("TILESWEEP_CORPUS_DIR")) options.corpusDir = dir;
     return options;

@@ -6,14 +6,14 @@
 // `tilesweep check` both run these; a failure shrinks (RapidCheck) and the minimal scene is
 // written to the regression corpus with the property and seed that found it.
 
+#include "scene_checks.h"
+
 #include <cstdint>
 #include <functional>
 #include <map>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include "scene_checks.h"
 
 namespace tilesweep::properties {
 
@@ -27,13 +27,13 @@ struct RunOptions {
 /// What one run of a property found.
 struct PropertyOutcome {
     bool passed = false;
-    int cases = 0;                          ///< cases that passed
-    std::map<std::string, int> tagCounts;   ///< cases per coverage tag
-    std::string message;                    ///< why it failed (counterexample, or coverage)
-    std::string corpusFile;                 ///< the regression file written, if any
-    std::string pictureFile;                ///< its picture (SVG), if any
-    std::string sceneLine;                  ///< the minimal failing scene (hexfloats), if any
-    std::string failure;                    ///< the claim's message on it, if any
+    int cases = 0;                         ///< cases that passed
+    std::map<std::string, int> tagCounts;  ///< cases per coverage tag
+    std::string message;                   ///< why it failed (counterexample, or coverage)
+    std::string corpusFile;                ///< the regression file written, if any
+    std::string pictureFile;               ///< its picture (SVG), if any
+    std::string sceneLine;                 ///< the minimal failing scene (hexfloats), if any
+    std::string failure;                   ///< the claim's message on it, if any
     double seconds = 0;
 };
 
@@ -45,10 +45,10 @@ struct CoverageFloor {
 
 /// One property: a claim, in one scalar type, over one scene family.
 struct Property {
-    std::string name;    ///< claim name and scalar, e.g. "matchesExactReferenceBitForBit_float"
-    std::string claim;   ///< the claim it checks (scene_checks.h), e.g. "matchesExactReferenceBitForBit"
+    std::string name;   ///< claim name and scalar, e.g. "matchesExactReferenceBitForBit_float"
+    std::string claim;  ///< the claim it checks (scene_checks.h), e.g. "matchesExactReferenceBitForBit"
     ClaimScope scope = ClaimScope::Internal;  ///< the claim's scope: which resolvers it applies to
-    std::string scalar;  ///< "float" or "double"
+    std::string scalar;                       ///< "float" or "double"
     std::vector<CoverageFloor> floors;
     std::function<PropertyOutcome(const RunOptions&)> run;
 };
@@ -66,7 +66,7 @@ struct Property {
 /// text when not empty, adds its members (an outside resolver's "resolver_cmd",
 /// "resolver_answer" and "exact_answer").
 [[nodiscard]] std::string corpusLine(const std::string& sceneLine, const std::string& property,
-                                     std::uint64_t seed, const std::string& scalar, const std::string& failure,
-                                     const std::string& extra = {});
+                                     std::uint64_t seed, const std::string& scalar,
+                                     const std::string& failure, const std::string& extra = {});
 
 }  // namespace tilesweep::properties

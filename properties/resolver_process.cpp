@@ -1,17 +1,16 @@
 // SPDX-License-Identifier: MIT
 #include "resolver_process.h"
 
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/wait.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstdio>
-#include <chrono>
-#include <cstring>
 #include <thread>
+#include <unistd.h>
 #include <utility>
 
 namespace tilesweep::properties {
@@ -34,7 +33,8 @@ std::string describeStatus(int status) {
     if (WIFSIGNALED(status)) {
         const int s = WTERMSIG(status);
         const char* name = strsignal(s);
-        return "killed by signal " + std::to_string(s) + (name ? std::string(" (") + name + ")" : std::string());
+        return "killed by signal " + std::to_string(s) +
+               (name ? std::string(" (") + name + ")" : std::string());
     }
     return "stopped";
 }
@@ -134,7 +134,8 @@ std::string ResolverProcess::exitDescription() {
     }
     // Whatever it still wrote to standard error explains the exit best.
     char buffer[4096];
-    for (ssize_t n; err_ >= 0 && (n = read(err_, buffer, sizeof buffer)) > 0;) errorTail_.append(buffer, static_cast<std::size_t>(n));
+    for (ssize_t n; err_ >= 0 && (n = read(err_, buffer, sizeof buffer)) > 0;)
+        errorTail_.append(buffer, static_cast<std::size_t>(n));
     if (errorTail_.size() > kErrorTailBytes) errorTail_.erase(0, errorTail_.size() - kErrorTailBytes);
     return what;
 }
@@ -148,7 +149,8 @@ std::size_t ResolverProcess::exchangeFrom(const std::vector<std::string>& lines,
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutSeconds_);
     char buffer[65536];
     while (next < lines.size()) {
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+            deadline - std::chrono::steady_clock::now());
         pollfd fds[3];
         nfds_t count = 0;
         const int writing = in_ >= 0 && written < text.size() ? static_cast<int>(count++) : -1;
@@ -178,7 +180,8 @@ std::size_t ResolverProcess::exchangeFrom(const std::vector<std::string>& lines,
             const ssize_t n = read(err_, buffer, sizeof buffer);
             if (n > 0) {
                 errorTail_.append(buffer, static_cast<std::size_t>(n));
-                if (errorTail_.size() > kErrorTailBytes) errorTail_.erase(0, errorTail_.size() - kErrorTailBytes);
+                if (errorTail_.size() > kErrorTailBytes)
+                    errorTail_.erase(0, errorTail_.size() - kErrorTailBytes);
             } else if (n == 0) {
                 closeFd(err_);
             }
@@ -188,15 +191,16 @@ std::size_t ResolverProcess::exchangeFrom(const std::vector<std::string>& lines,
             if (n < 0 && (errno == EAGAIN || errno == EINTR)) continue;
             if (n <= 0) {
                 replies[next].failure = "the resolver " + exitDescription() + " after answering " +
-                                        std::to_string(next - from) + " of the " + std::to_string(lines.size() - from) +
-                                        " scenes sent" + errorTail();
+                                        std::to_string(next - from) + " of the " +
+                                        std::to_string(lines.size() - from) + " scenes sent" + errorTail();
                 return next;
             }
             pending_.append(buffer, static_cast<std::size_t>(n));
             std::size_t end;
             while (next < lines.size() && (end = pending_.find('\n')) != std::string::npos) {
                 replies[next].line = pending_.substr(0, end);
-                if (!replies[next].line.empty() && replies[next].line.back() == '\r') replies[next].line.pop_back();
+                if (!replies[next].line.empty() && replies[next].line.back() == '\r')
+                    replies[next].line.pop_back();
                 pending_.erase(0, end + 1);
                 ++next;
             }
@@ -238,7 +242,8 @@ std::vector<ResolverReply> ResolverProcess::exchange(const std::vector<std::stri
         if (pid_ <= 0) {
             std::string why;
             if (!start(why)) {
-                for (std::size_t k = from; k < lines.size(); ++k) replies[k].failure = "cannot start the resolver: " + why;
+                for (std::size_t k = from; k < lines.size(); ++k)
+                    replies[k].failure = "cannot start the resolver: " + why;
                 return replies;
             }
         }

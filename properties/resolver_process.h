@@ -52,16 +52,17 @@ private:
     bool start(std::string& why);
     /// Exchanges lines[from..] with the running process; fills replies; returns the index of
     /// the first line not answered (== lines.size() when all were), with its failure set.
-    std::size_t exchangeFrom(const std::vector<std::string>& lines, std::size_t from, std::vector<ResolverReply>& replies);
+    std::size_t exchangeFrom(const std::vector<std::string>& lines, std::size_t from,
+                             std::vector<ResolverReply>& replies);
     std::string exitDescription();
     [[nodiscard]] std::string errorTail() const;  ///< "; its standard error ends: ..." or empty
 
     std::string command_;
     double timeoutSeconds_;
     pid_t pid_ = -1;
-    int in_ = -1;   ///< the process's standard input (we write)
-    int out_ = -1;  ///< its standard output (we read)
-    int err_ = -1;  ///< its standard error (we keep the tail, for messages)
+    int in_ = -1;            ///< the process's standard input (we write)
+    int out_ = -1;           ///< its standard output (we read)
+    int err_ = -1;           ///< its standard error (we keep the tail, for messages)
     std::string pending_;    ///< output read but not yet a whole line
     std::string errorTail_;  ///< the last bytes of its standard error
     int starts_ = 0;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "result_reader.h"
 
+#include "scene/scalar_text.h"  // scene/: exact number text, shared with the scene reader
+
 #include <nlohmann/json.hpp>
 
 #include <charconv>
@@ -8,8 +10,6 @@
 #include <cstdint>
 #include <stdexcept>
 #include <utility>
-
-#include "scene/scalar_text.h"  // scene/: exact number text, shared with the scene reader
 
 namespace tilesweep::properties {
 namespace {
@@ -21,9 +21,9 @@ namespace {
 /// One JSON value with numbers kept as their text.
 struct Node {
     enum class Kind { Null, Bool, Number, String, Array, Object } kind = Kind::Null;
-    std::string text;                                   ///< a number's lexeme, or a string
-    std::vector<Node> items;                            ///< an array's elements, an object's values
-    std::vector<std::string> keys;                      ///< an object's keys, beside `items`
+    std::string text;               ///< a number's lexeme, or a string
+    std::vector<Node> items;        ///< an array's elements, an object's values
+    std::vector<std::string> keys;  ///< an object's keys, beside `items`
 
     [[nodiscard]] const Node* member(const std::string& key) const {
         for (std::size_t k = 0; k < keys.size(); ++k)
@@ -39,9 +39,15 @@ public:
 
     bool null() { return add({}); }
     bool boolean(bool) { return add(Node{Node::Kind::Bool, {}, {}, {}}); }
-    bool number_integer(json::number_integer_t v) { return add(Node{Node::Kind::Number, std::to_string(v), {}, {}}); }
-    bool number_unsigned(json::number_unsigned_t v) { return add(Node{Node::Kind::Number, std::to_string(v), {}, {}}); }
-    bool number_float(json::number_float_t, const json::string_t& text) { return add(Node{Node::Kind::Number, text, {}, {}}); }
+    bool number_integer(json::number_integer_t v) {
+        return add(Node{Node::Kind::Number, std::to_string(v), {}, {}});
+    }
+    bool number_unsigned(json::number_unsigned_t v) {
+        return add(Node{Node::Kind::Number, std::to_string(v), {}, {}});
+    }
+    bool number_float(json::number_float_t, const json::string_t& text) {
+        return add(Node{Node::Kind::Number, text, {}, {}});
+    }
     bool string(json::string_t& s) { return add(Node{Node::Kind::String, s, {}, {}}); }
     bool binary(json::binary_t&) { return false; }
     bool start_object(std::size_t) {
@@ -106,7 +112,8 @@ const Node& field(const Node& object, const std::string& key, const std::string&
 const Node& arrayOf(const Node& n, const std::string& path, std::size_t size = 0) {
     if (n.kind != Node::Kind::Array) throw ReadError(path + ": expected an array");
     if (size > 0 && n.items.size() != size)
-        throw ReadError(path + ": expected " + std::to_string(size) + " elements, got " + std::to_string(n.items.size()));
+        throw ReadError(path + ": expected " + std::to_string(size) + " elements, got " +
+                        std::to_string(n.items.size()));
     return n;
 }
 
@@ -120,7 +127,8 @@ T scalarOf(const Node& n, const std::string& path) {
     else
         throw ReadError(path + ": expected a number or a hexfloat string");
     if (read.status != detail::ScalarTextStatus::Ok || !std::isfinite(read.value))
-        throw ReadError(path + ": not a finite " + std::string(detail::scalarName<T>()) + ": '" + n.text.substr(0, 40) + "'");
+        throw ReadError(path + ": not a finite " + std::string(detail::scalarName<T>()) + ": '" +
+                        n.text.substr(0, 40) + "'");
     return read.value;
 }
 
@@ -142,7 +150,8 @@ FrameResult<T> frameOf(const Node& n, const std::string& path) {
     if (n.kind != Node::Kind::Object) throw ReadError(path + ": expected an object");
     FrameResult<T> frame;
     const Node& pos = arrayOf(field(n, "pos", path), path + ".pos", 2);
-    frame.position = {scalarOf<T>(pos.items[0], path + ".pos[0]"), scalarOf<T>(pos.items[1], path + ".pos[1]")};
+    frame.position = {scalarOf<T>(pos.items[0], path + ".pos[0]"),
+                      scalarOf<T>(pos.items[1], path + ".pos[1]")};
     const Node& contacts = arrayOf(field(n, "contacts", path), path + ".contacts");
     for (std::size_t k = 0; k < contacts.items.size(); ++k) {
         const std::string at = path + ".contacts[" + std::to_string(k) + "]";
@@ -151,7 +160,8 @@ FrameResult<T> frameOf(const Node& n, const std::string& path) {
         Contact<T> contact{};
         contact.tile = cellOf(field(c, "tile", at), at + ".tile");
         const Cell normal = cellOf(field(c, "normal", at), at + ".normal");
-        const bool axisNormal = (std::abs(normal.i) == 1 && normal.j == 0) || (normal.i == 0 && std::abs(normal.j) == 1);
+        const bool axisNormal =
+            (std::abs(normal.i) == 1 && normal.j == 0) || (normal.i == 0 && std::abs(normal.j) == 1);
         if (!axisNormal) throw ReadError(at + ".normal: expected one of [1, 0], [-1, 0], [0, 1], [0, -1]");
         contact.normal = {static_cast<std::int8_t>(normal.i), static_cast<std::int8_t>(normal.j)};
         contact.time = scalarOf<T>(field(c, "t", at), at + ".t");
@@ -159,7 +169,8 @@ FrameResult<T> frameOf(const Node& n, const std::string& path) {
     }
     const Node& overlaps = arrayOf(field(n, "started_overlapping", path), path + ".started_overlapping");
     for (std::size_t k = 0; k < overlaps.items.size(); ++k)
-        frame.startOverlaps.push_back(cellOf(overlaps.items[k], path + ".started_overlapping[" + std::to_string(k) + "]"));
+        frame.startOverlaps.push_back(
+            cellOf(overlaps.items[k], path + ".started_overlapping[" + std::to_string(k) + "]"));
     return frame;
 }
 
@@ -177,12 +188,13 @@ ResultParse<T> parseResultLine(std::string_view line, std::size_t frameCount) {
         const Node& root = builder.root;
         if (root.kind != Node::Kind::Object) throw ReadError("result: expected a JSON object");
         if (const Node* error = root.member("error"))
-            throw ReadError("the resolver answered with an error: " +
-                            (error->kind == Node::Kind::String ? error->text : std::string("(not a string)")));
+            throw ReadError("the resolver answered with an error: " + (error->kind == Node::Kind::String
+                                                                           ? error->text
+                                                                           : std::string("(not a string)")));
         const Node& frames = arrayOf(field(root, "frames", "result"), "result.frames");
         if (frames.items.size() != frameCount)
-            throw ReadError("result.frames: " + std::to_string(frames.items.size()) + " frames for a scene of " +
-                            std::to_string(frameCount));
+            throw ReadError("result.frames: " + std::to_string(frames.items.size()) +
+                            " frames for a scene of " + std::to_string(frameCount));
         std::vector<FrameResult<T>> result;
         for (std::size_t f = 0; f < frames.items.size(); ++f)
             result.push_back(frameOf<T>(frames.items[f], "frames[" + std::to_string(f) + "]"));

@@ -12,13 +12,13 @@
 // form reads back to the same bits. The reader is strict: it is the judge of a process that
 // may print anything, and whatever it cannot read exactly is the resolver's failure.
 
+#include "tilesweep/scene/scene.h"
+
 #include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include "tilesweep/scene/scene.h"
 
 namespace tilesweep::properties {
 

@@ -1,22 +1,23 @@
 // SPDX-License-Identifier: MIT
 #include "scene_checks.h"
 
+#include "frame_safety.h"  // checks/
+#include "oracle/exact/exact_geometry.h"
+#include "oracle/exact/exact_resolve.h"
+#include "oracle/exact/exact_sweep.h"
+#include "oracle/exact/rational_convert.h"
+#include "oracle/substep/substep_oracle.h"
+#include "scene_runner.h"
+#include "src/decision_path.h"
+
+#include "tilesweep/box_sweep.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <sstream>
 #include <tuple>
-
-#include "oracle/exact/exact_geometry.h"
-#include "oracle/exact/exact_resolve.h"
-#include "oracle/exact/rational_convert.h"
-#include "oracle/substep/substep_oracle.h"
-#include "frame_safety.h"  // checks/
-#include "oracle/exact/exact_sweep.h"
-#include "src/decision_path.h"
-#include "scene_runner.h"
-#include "tilesweep/box_sweep.h"
 
 namespace tilesweep::properties {
 namespace {
@@ -47,7 +48,8 @@ struct Compare {
 template <class T>
 std::string diffFrames(const std::vector<FrameResult<T>>& got, const std::vector<FrameResult<T>>& want,
                        Compare what = {}) {
-    if (got.size() != want.size()) return "frame count " + std::to_string(got.size()) + " != " + std::to_string(want.size());
+    if (got.size() != want.size())
+        return "frame count " + std::to_string(got.size()) + " != " + std::to_string(want.size());
     for (std::size_t f = 0; f < got.size(); ++f) {
         const FrameResult<T>& a = got[f];
         const FrameResult<T>& b = want[f];
@@ -57,7 +59,8 @@ std::string diffFrames(const std::vector<FrameResult<T>>& got, const std::vector
         if (what.positionY && !sameBits(a.position.y, b.position.y))
             return at + "y " + hex(a.position.y) + " != " + hex(b.position.y);
         if (a.contacts.size() != b.contacts.size())
-            return at + std::to_string(a.contacts.size()) + " contacts != " + std::to_string(b.contacts.size());
+            return at + std::to_string(a.contacts.size()) +
+                   " contacts != " + std::to_string(b.contacts.size());
         std::vector<Contact<T>> ca = a.contacts;
         std::vector<Contact<T>> cb = b.contacts;
         if (!what.orderWithinTime) {
@@ -68,9 +71,13 @@ std::string diffFrames(const std::vector<FrameResult<T>>& got, const std::vector
             std::sort(cb.begin(), cb.end(), byTime);
         }
         for (std::size_t k = 0; k < ca.size(); ++k) {
-            if (ca[k].tile != cb[k].tile) return at + "contact " + std::to_string(k) + " tile " + cellText(ca[k].tile) + " != " + cellText(cb[k].tile);
+            if (ca[k].tile != cb[k].tile)
+                return at + "contact " + std::to_string(k) + " tile " + cellText(ca[k].tile) +
+                       " != " + cellText(cb[k].tile);
             if (ca[k].normal != cb[k].normal) return at + "contact " + std::to_string(k) + " normal differs";
-            if (!sameBits(ca[k].time, cb[k].time)) return at + "contact " + std::to_string(k) + " t " + hex(ca[k].time) + " != " + hex(cb[k].time);
+            if (!sameBits(ca[k].time, cb[k].time))
+                return at + "contact " + std::to_string(k) + " t " + hex(ca[k].time) +
+                       " != " + hex(cb[k].time);
         }
         if (a.startOverlaps.size() != b.startOverlaps.size()) return at + "started_overlapping count differs";
         std::vector<Cell> oa = a.startOverlaps;
@@ -91,7 +98,6 @@ std::vector<Vec2<T>> frameStarts(const Scene<T>& scene, const std::vector<FrameR
     for (std::size_t f = 0; f + 1 < frames.size(); ++f) starts.push_back(frames[f].position);
     return starts;
 }
-
 
 // ---------------------------------------------------------------------------------------------
 // The claims.
@@ -127,8 +133,8 @@ checks::FrameRecord<T> recordOf(const Scene<T>& scene, const CheckedFrames<T>& c
     result.position = r.position;
     result.contactCount = static_cast<std::int32_t>(r.contacts.size());
     result.startOverlapCount = static_cast<std::int32_t>(r.startOverlaps.size());
-    return {scene.map.view(), {c.starts[f], scene.box.size}, scene.moves[f], result, r.contacts.data(),
-            r.startOverlaps.data()};
+    return {scene.map.view(),  {c.starts[f], scene.box.size}, scene.moves[f], result,
+            r.contacts.data(), r.startOverlaps.data()};
 }
 
 /// At the end of every frame, the box overlaps no solid tile it did not overlap at the frame's
@@ -138,9 +144,11 @@ std::string neverEndsInsideATileItDidNotStartIn(const Scene<T>& scene) {
     const CheckedFrames<T> c = checkedFrames(scene);
     checks::SafetyScratch scratch;
     for (std::size_t f = 0; f < c.frames.size(); ++f)
-        if (const auto cell = checks::findNewOverlap(scene.map.view(), c.edges, Box<T>{c.starts[f], scene.box.size},
-                                                     c.frames[f].position, scratch))
-            return "frame " + std::to_string(f) + ": ends inside tile " + cellText(*cell) + ", which it did not start in";
+        if (const auto cell =
+                checks::findNewOverlap(scene.map.view(), c.edges, Box<T>{c.starts[f], scene.box.size},
+                                       c.frames[f].position, scratch))
+            return "frame " + std::to_string(f) + ": ends inside tile " + cellText(*cell) +
+                   ", which it did not start in";
     return {};
 }
 
@@ -180,7 +188,8 @@ std::string obeysTheSafetyRules(const Scene<T>& scene) {
     const CheckedFrames<T> c = checkedFrames(scene);
     checks::SafetyScratch scratch;
     for (std::size_t f = 0; f < c.frames.size(); ++f)
-        if (const checks::SafetyViolation v = checks::checkFrameSafety(recordOf(scene, c, f), c.edges, scratch))
+        if (const checks::SafetyViolation v =
+                checks::checkFrameSafety(recordOf(scene, c, f), c.edges, scratch))
             return "frame " + std::to_string(f) + ": " + checks::ruleName(v.rule) + ": " + v.detail;
     return {};
 }
@@ -194,8 +203,9 @@ std::string missedContactSeenBySubsteps(const Scene<T>& scene, const std::vector
     const std::vector<Vec2<T>> starts = frameStarts(scene, frames);
     const oracle::ExactTileMap map = oracle::toExact(scene.map);
     for (std::size_t f = 0; f < frames.size(); ++f) {
-        const auto seen = oracle::findFirstOverlapExact(map, oracle::toExact(Box<T>{starts[f], scene.box.size}),
-                                                        oracle::toExact(scene.moves[f]), kSubsteps);
+        const auto seen =
+            oracle::findFirstOverlapExact(map, oracle::toExact(Box<T>{starts[f], scene.box.size}),
+                                          oracle::toExact(scene.moves[f]), kSubsteps);
         if (!seen.found()) continue;
         const T bound = oracle::fromRational<T>(seen.bracketHigh(), oracle::Rounding::NearestEven);
         if (frames[f].contacts.empty() || frames[f].contacts.front().time > bound)
@@ -230,12 +240,14 @@ std::string zeroMoveChangesNothingAt(const Scene<T>& scene) {
     for (auto& m : still.moves) m = {0, 0};
     const std::vector<FrameResult<T>> frames = resolveUnderTest(still);
     std::vector<Cell> overlapping;
-    checks::listOverlaps(scene.map.view(), checks::computeEdges(scene.map.view()), scene.box.pos, scene.box.size,
-                         overlapping);
+    checks::listOverlaps(scene.map.view(), checks::computeEdges(scene.map.view()), scene.box.pos,
+                         scene.box.size, overlapping);
     for (std::size_t f = 0; f < frames.size(); ++f) {
-        if (!sameBits(frames[f].position.x, scene.box.pos.x) || !sameBits(frames[f].position.y, scene.box.pos.y))
+        if (!sameBits(frames[f].position.x, scene.box.pos.x) ||
+            !sameBits(frames[f].position.y, scene.box.pos.y))
             return "frame " + std::to_string(f) + ": a zero move changed the position";
-        if (!frames[f].contacts.empty()) return "frame " + std::to_string(f) + ": a zero move reported a contact";
+        if (!frames[f].contacts.empty())
+            return "frame " + std::to_string(f) + ": a zero move reported a contact";
         if (frames[f].startOverlaps.size() != overlapping.size() ||
             !std::equal(overlapping.begin(), overlapping.end(), frames[f].startOverlaps.begin()))
             return "frame " + std::to_string(f) + ": start overlaps differ from the tiles the box overlaps";
@@ -255,7 +267,8 @@ std::string zeroMoveChangesNothing(const Scene<T>& scene) {
     inside.box.pos = {scene.map.origin.x + (i + T(0.25)) * scene.map.tileSize.x,
                       scene.map.origin.y + (j + T(0.25)) * scene.map.tileSize.y};
     if (!std::isfinite(inside.box.pos.x) || !std::isfinite(inside.box.pos.y)) return {};
-    if (std::string why = zeroMoveChangesNothingAt(inside); !why.empty()) return "inside a solid tile: " + why;
+    if (std::string why = zeroMoveChangesNothingAt(inside); !why.empty())
+        return "inside a solid tile: " + why;
     return {};
 }
 
@@ -275,8 +288,8 @@ std::string scalingByPowerOfTwoScalesTheResult(const Scene<T>& scene) {
     // Away from overflow only: a scaled value that is no longer finite makes another scene.
     bool finite = std::isfinite(big.map.origin.x) && std::isfinite(big.map.origin.y) &&
                   std::isfinite(big.map.tileSize.x) && std::isfinite(big.map.tileSize.y) &&
-                  std::isfinite(big.box.pos.x) && std::isfinite(big.box.pos.y) && std::isfinite(big.box.size.x) &&
-                  std::isfinite(big.box.size.y);
+                  std::isfinite(big.box.pos.x) && std::isfinite(big.box.pos.y) &&
+                  std::isfinite(big.box.size.x) && std::isfinite(big.box.size.y);
     for (const auto& m : big.moves) finite = finite && std::isfinite(m.x) && std::isfinite(m.y);
     if (!finite || validateTileMap(big.map.view()) != MapError::None) return {};
     std::vector<std::vector<FrameResult<T>>> both = resolveUnderTest(scene, big);
@@ -293,7 +306,8 @@ std::string mirroringMirrorsTheResult(const Scene<T>& scene) {
     const T pos = onX ? scene.box.pos.x : scene.box.pos.y;
     const T size = onX ? scene.box.size.x : scene.box.size.y;
     const T mirroredPos = -(pos + size);
-    if (oracle::toRational(mirroredPos) != -(oracle::toRational(pos) + oracle::toRational(size))) return {};  // not exact: no claim
+    if (oracle::toRational(mirroredPos) != -(oracle::toRational(pos) + oracle::toRational(size)))
+        return {};  // not exact: no claim
     Scene<T> m = scene;
     const std::int32_t count = onX ? scene.map.columns : scene.map.rows;
     const T origin = onX ? scene.map.origin.x : scene.map.origin.y;
@@ -327,7 +341,8 @@ std::string mirroringMirrorsTheResult(const Scene<T>& scene) {
                 c.normal.y = static_cast<std::int8_t>(-c.normal.y);
             }
         }
-        for (auto& c : f.startOverlaps) (onX ? c.i : c.j) = (onX ? scene.map.columns - 1 - c.i : scene.map.rows - 1 - c.j);
+        for (auto& c : f.startOverlaps)
+            (onX ? c.i : c.j) = (onX ? scene.map.columns - 1 - c.i : scene.map.rows - 1 - c.j);
     }
     // The mirrored axis's position is rounded toward the mirrored start, which is a different
     // rounding of a different sum: only the other axis is compared bit for bit. Frames after the
@@ -353,8 +368,9 @@ std::string translatingByWholeTilesKeepsDecisions(const Scene<T>& scene) {
     };
     const T bx = 3 * scene.map.tileSize.x;
     const T by = 3 * scene.map.tileSize.y;
-    if (!shift(scene.map.origin.x, bx, moved.map.origin.x) || !shift(scene.map.origin.y, by, moved.map.origin.y) ||
-        !shift(scene.box.pos.x, bx, moved.box.pos.x) || !shift(scene.box.pos.y, by, moved.box.pos.y))
+    if (!shift(scene.map.origin.x, bx, moved.map.origin.x) ||
+        !shift(scene.map.origin.y, by, moved.map.origin.y) || !shift(scene.box.pos.x, bx, moved.box.pos.x) ||
+        !shift(scene.box.pos.y, by, moved.box.pos.y))
         return {};
     if (validateTileMap(moved.map.view()) != MapError::None) return {};
     Compare what;
@@ -395,10 +411,13 @@ std::string restingContactIsStable(const Scene<T>& scene) {
         const auto& hits = frames[f].contacts;
         const bool landed = std::any_of(hits.begin(), hits.end(),
                                         [](const Contact<T>& c) { return c.normal.y == -1 && c.time == 0; });
-        if (!landed) return "frame " + std::to_string(f) + ": standing on a floor, no floor contact at time 0";
-        if (!sameBits(frames[f].position.y, starts[f].y) || (m.x == 0 && !sameBits(frames[f].position.x, starts[f].x)))
+        if (!landed)
+            return "frame " + std::to_string(f) + ": standing on a floor, no floor contact at time 0";
+        if (!sameBits(frames[f].position.y, starts[f].y) ||
+            (m.x == 0 && !sameBits(frames[f].position.x, starts[f].x)))
             return "frame " + std::to_string(f) + ": resting box moved from (" + hex(starts[f].x) + ", " +
-                   hex(starts[f].y) + ") to (" + hex(frames[f].position.x) + ", " + hex(frames[f].position.y) + ")";
+                   hex(starts[f].y) + ") to (" + hex(frames[f].position.x) + ", " +
+                   hex(frames[f].position.y) + ")";
     }
     return {};
 }
@@ -425,7 +444,8 @@ std::string slidingAlongFloorNeverSnags(const Scene<T>& scene) {
             return "frame " + std::to_string(f) + ": left the floor it stood on, moving down";
         for (const Contact<T>& c : frames[f].contacts)
             if (c.normal.x != 0 && map.tileRect(c.tile.i, c.tile.j).min.y == box.max.y)
-                return "frame " + std::to_string(f) + ": snagged on the side of floor tile " + cellText(c.tile);
+                return "frame " + std::to_string(f) + ": snagged on the side of floor tile " +
+                       cellText(c.tile);
     }
     return {};
 }
@@ -444,29 +464,47 @@ std::string badInputIsRejected(const Scene<T>& scene) {
             if (!nonFinite && field != 1) continue;  // zero and -1 are only bad as sizes
             Scene<T> s = scene;
             switch (field) {
-                case 0: s.box.pos.x = bad; break;
-                case 1: s.box.size.y = bad; break;
-                case 2: s.moves.back().x = bad; break;
-                default: s.box.pos.y = bad; break;
+                case 0:
+                    s.box.pos.x = bad;
+                    break;
+                case 1:
+                    s.box.size.y = bad;
+                    break;
+                case 2:
+                    s.moves.back().x = bad;
+                    break;
+                default:
+                    s.box.pos.y = bad;
+                    break;
             }
             Contact<T> contacts[8];
             Cell overlaps[8];
-            const SweepResult<T> r = resolveMove<T>({s.map.view(), s.box, s.moves.back()}, {contacts, 8, overlaps, 8});
+            const SweepResult<T> r =
+                resolveMove<T>({s.map.view(), s.box, s.moves.back()}, {contacts, 8, overlaps, 8});
             const std::string at = std::string(fields[field]) + " = " + hex(bad) + ": ";
             if (r.status != Status::InvalidInput) return at + "not refused as InvalidInput";
             if (r.contactCount != 0 || std::isnan(r.position.x) || std::isnan(r.position.y))
                 return at + "a refused frame reported contacts or NaN";
             // The scene reader, on the same field written as the format would carry it.
             std::string line = formatScene(scene);
-            const std::string text = nonFinite ? std::string(std::isnan(bad) ? "\"nan\"" : (bad > 0 ? "\"inf\"" : "\"-inf\""))
-                                               : std::string(bad == 0 ? "0" : "-1");
+            const std::string text =
+                nonFinite ? std::string(std::isnan(bad) ? "\"nan\"" : (bad > 0 ? "\"inf\"" : "\"-inf\""))
+                          : std::string(bad == 0 ? "0" : "-1");
             Scene<T> marked = scene;  // find the field's text by writing a marker there
             const T marker = T(1234567);
             switch (field) {
-                case 0: marked.box.pos.x = marker; break;
-                case 1: marked.box.size.y = marker; break;
-                case 2: marked.moves.back().x = marker; break;
-                default: marked.box.pos.y = marker; break;
+                case 0:
+                    marked.box.pos.x = marker;
+                    break;
+                case 1:
+                    marked.box.size.y = marker;
+                    break;
+                case 2:
+                    marked.moves.back().x = marker;
+                    break;
+                default:
+                    marked.box.pos.y = marker;
+                    break;
             }
             line = formatScene(marked);
             const std::string markerText = "\"" + std::string(hex(marker)) + "\"";
@@ -506,8 +544,9 @@ std::string sweepBoxMatchesTheReference(const Scene<T>& scene) {
                 {oracle::toExact(scene.box), oracle::toExact(d), map.tileRect(i, j), xExposed, yExposed});
             const std::string at = "tile " + cellText({i, j}) + ": ";
             const BoxSweepState state = want.state == oracle::ExactSweepState::Blocks ? BoxSweepState::Blocks
-                                        : want.state == oracle::ExactSweepState::Misses ? BoxSweepState::Misses
-                                                                                        : BoxSweepState::StartsOverlapping;
+                                        : want.state == oracle::ExactSweepState::Misses
+                                            ? BoxSweepState::Misses
+                                            : BoxSweepState::StartsOverlapping;
             if (got.state != state) return at + "sweepBox state differs from the reference";
             if (state != BoxSweepState::Blocks) continue;
             if (got.axis != want.axis) return at + "contact axis differs";
@@ -597,7 +636,8 @@ bool reachesATileAtTheEnd(const Scene<T>& scene, const std::vector<oracle::Exact
                 if (!map.isSolid(i, j)) continue;
                 const oracle::ExactSweepOutput sweep =
                     oracle::sweepTileExact({{frames[f].start, frames[f].size}, d, map.tileRect(i, j)});
-                if (!sweep.overlap.empty && sweep.overlap.low.isFinite() && sweep.overlap.low.value == 1) return true;
+                if (!sweep.overlap.empty && sweep.overlap.low.isFinite() && sweep.overlap.low.value == 1)
+                    return true;
             }
     }
     return false;
@@ -681,7 +721,8 @@ std::vector<std::string> classifyScene(const Scene<T>& scene) {
             touch0 = touch0 || c.time == 0;
             twoStep = twoStep || c.step == 2;
             timeTie = timeTie || halfwayBetweenValues<T>(c.time);
-            if (k > 0 && f.contacts[k - 1].step == c.step && f.contacts[k - 1].normal == c.normal) seam = true;
+            if (k > 0 && f.contacts[k - 1].step == c.step && f.contacts[k - 1].normal == c.normal)
+                seam = true;
         }
     }
     tags.push_back(hit ? "hit" : "miss");
@@ -702,7 +743,8 @@ std::vector<std::string> classifyScene(const Scene<T>& scene) {
     const int span = latticeSpan(scene);
     if (span > 60) tags.push_back("lattice-wide");
     if (span > 92) tags.push_back("lattice-192");
-    if (std::fabs(scene.map.origin.x) >= T(1048576) || std::fabs(scene.map.origin.y) >= T(1048576)) tags.push_back("far-origin");
+    if (std::fabs(scene.map.origin.x) >= T(1048576) || std::fabs(scene.map.origin.y) >= T(1048576))
+        tags.push_back("far-origin");
     const std::string path = decisionPathOf(scene);
     tags.push_back("path:" + path);
     if (path != "fast") tags.push_back("fallback");

@@ -6,11 +6,11 @@
 // RapidCheck properties, the regression corpus replay and `tilesweep check` all call these, so a
 // shrunk counterexample is replayed against every claim, for ever.
 
+#include "tilesweep/scene/scene.h"
+
 #include <cstdint>
 #include <string>
 #include <vector>
-
-#include "tilesweep/scene/scene.h"
 
 namespace tilesweep::properties {
 
@@ -26,8 +26,8 @@ enum class ClaimScope : std::uint8_t {
 /// resolveUnderTest (scene_runner.h): tilesweep's resolver, or the outside one installed.
 template <class T>
 struct Claim {
-    const char* name;                         ///< the claim, camelCase (the property's name)
-    std::string (*check)(const Scene<T>&);    ///< empty when it holds
+    const char* name;                       ///< the claim, camelCase (the property's name)
+    std::string (*check)(const Scene<T>&);  ///< empty when it holds
     ClaimScope scope = ClaimScope::Internal;
 };
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "scene_runner.h"
 
-#include <utility>
-
 #include "result_reader.h"
+
+#include <utility>
 
 namespace tilesweep::properties {
 namespace {
@@ -46,7 +46,8 @@ std::vector<std::vector<FrameResult<T>>> resolveUnderTest(const Scene<T>& a, con
 }
 
 template <class T>
-std::vector<std::vector<FrameResult<T>>> OutsideSceneRunner<T>::runAll(const std::vector<const Scene<T>*>& scenes) {
+std::vector<std::vector<FrameResult<T>>> OutsideSceneRunner<T>::runAll(
+    const std::vector<const Scene<T>*>& scenes) {
     std::vector<std::string> lines;
     lines.reserve(scenes.size());
     for (const Scene<T>* s : scenes) lines.push_back(formatScene(*s));
@@ -54,11 +55,13 @@ std::vector<std::vector<FrameResult<T>>> OutsideSceneRunner<T>::runAll(const std
     std::vector<std::vector<FrameResult<T>>> out;
     out.reserve(scenes.size());
     for (std::size_t k = 0; k < scenes.size(); ++k) {
-        const std::string which = scenes.size() == 1 ? std::string() : " (scene " + std::to_string(k + 1) + " of the batch)";
+        const std::string which =
+            scenes.size() == 1 ? std::string() : " (scene " + std::to_string(k + 1) + " of the batch)";
         if (!replies[k].failure.empty()) throw ResolverFailure(replies[k].failure + which);
         ResultParse<T> parsed = parseResultLine<T>(replies[k].line, scenes[k]->moves.size());
         if (!parsed.frames)
-            throw ResolverFailure("unreadable answer" + which + ": " + parsed.error + " in '" + replies[k].line.substr(0, 200) + "'");
+            throw ResolverFailure("unreadable answer" + which + ": " + parsed.error + " in '" +
+                                  replies[k].line.substr(0, 200) + "'");
         out.push_back(std::move(*parsed.frames));
     }
     return out;
@@ -77,8 +80,10 @@ template class ScopedSceneRunner<float>;
 template class ScopedSceneRunner<double>;
 template std::vector<FrameResult<float>> resolveUnderTest<float>(const Scene<float>&);
 template std::vector<FrameResult<double>> resolveUnderTest<double>(const Scene<double>&);
-template std::vector<std::vector<FrameResult<float>>> resolveUnderTest<float>(const Scene<float>&, const Scene<float>&);
-template std::vector<std::vector<FrameResult<double>>> resolveUnderTest<double>(const Scene<double>&, const Scene<double>&);
+template std::vector<std::vector<FrameResult<float>>> resolveUnderTest<float>(const Scene<float>&,
+                                                                              const Scene<float>&);
+template std::vector<std::vector<FrameResult<double>>> resolveUnderTest<double>(const Scene<double>&,
+                                                                                const Scene<double>&);
 template class OutsideSceneRunner<float>;
 template class OutsideSceneRunner<double>;
 

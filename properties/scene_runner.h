@@ -15,13 +15,14 @@
 // that is not a valid answer, refused the scene) throws ResolverFailure; the property runner
 // turns that into a failure of the claim with that scene as its counterexample.
 
+#include "resolver_process.h"
+
+#include "tilesweep/scene/scene.h"
+
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include "resolver_process.h"
-#include "tilesweep/scene/scene.h"
 
 namespace tilesweep::properties {
 
@@ -37,7 +38,8 @@ public:
     virtual ~SceneRunner() = default;
     /// The frames of each scene, in order; throws ResolverFailure naming the first scene that
     /// could not be answered.
-    [[nodiscard]] virtual std::vector<std::vector<FrameResult<T>>> runAll(const std::vector<const Scene<T>*>& scenes) = 0;
+    [[nodiscard]] virtual std::vector<std::vector<FrameResult<T>>> runAll(
+        const std::vector<const Scene<T>*>& scenes) = 0;
     /// What the resolver answered for one scene, as text for a report: its result line, or why
     /// there is none. Never throws.
     [[nodiscard]] virtual std::string answerText(const Scene<T>& scene) = 0;
@@ -78,7 +80,8 @@ template <class T>
 class OutsideSceneRunner final : public SceneRunner<T> {
 public:
     explicit OutsideSceneRunner(std::shared_ptr<ResolverProcess> process) : process_(std::move(process)) {}
-    [[nodiscard]] std::vector<std::vector<FrameResult<T>>> runAll(const std::vector<const Scene<T>*>& scenes) override;
+    [[nodiscard]] std::vector<std::vector<FrameResult<T>>> runAll(
+        const std::vector<const Scene<T>*>& scenes) override;
     [[nodiscard]] std::string answerText(const Scene<T>& scene) override;
     [[nodiscard]] std::string name() const override { return process_->command(); }
 
@@ -92,7 +95,8 @@ extern template class ScopedSceneRunner<float>;
 extern template class ScopedSceneRunner<double>;
 extern template std::vector<FrameResult<float>> resolveUnderTest<float>(const Scene<float>&);
 extern template std::vector<FrameResult<double>> resolveUnderTest<double>(const Scene<double>&);
-extern template std::vector<std::vector<FrameResult<float>>> resolveUnderTest<float>(const Scene<float>&, const Scene<float>&);
+extern template std::vector<std::vector<FrameResult<float>>> resolveUnderTest<float>(const Scene<float>&,
+                                                                                     const Scene<float>&);
 extern template std::vector<std::vector<FrameResult<double>>> resolveUnderTest<double>(const Scene<double>&,
                                                                                        const Scene<double>&);
 extern template class OutsideSceneRunner<float>;

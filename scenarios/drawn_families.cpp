@@ -56,8 +56,8 @@ TileMap<T> emptyMap(double origin, double tile, std::int32_t columns, std::int32
 template <class T>
 void setSolid(TileMap<T>& map, std::int32_t i, std::int32_t j, bool solid = true) {
     if (i < 0 || j < 0 || i >= map.columns || j >= map.rows) return;
-    map.solid[static_cast<std::size_t>(j) * static_cast<std::size_t>(map.columns) + static_cast<std::size_t>(i)] =
-        solid ? 1 : 0;
+    map.solid[static_cast<std::size_t>(j) * static_cast<std::size_t>(map.columns) +
+              static_cast<std::size_t>(i)] = solid ? 1 : 0;
 }
 
 template <class T>
@@ -149,10 +149,18 @@ Scene<T> cornerScene(Draw<T>& d, bool tie) {
     if (perturb) {
         const int k = tie ? d.sign() : d.sign() * d.integer(1, 4);
         switch (d.integer(0, 3)) {
-            case 0: move.x = Draw<T>::nudge(move.x, k); break;
-            case 1: move.y = Draw<T>::nudge(move.y, k); break;
-            case 2: s.box.pos.x = Draw<T>::nudge(s.box.pos.x, k); break;
-            default: s.box.pos.y = Draw<T>::nudge(s.box.pos.y, k); break;
+            case 0:
+                move.x = Draw<T>::nudge(move.x, k);
+                break;
+            case 1:
+                move.y = Draw<T>::nudge(move.y, k);
+                break;
+            case 2:
+                s.box.pos.x = Draw<T>::nudge(s.box.pos.x, k);
+                break;
+            default:
+                s.box.pos.y = Draw<T>::nudge(s.box.pos.y, k);
+                break;
         }
     }
     s.moves.push_back(move);
@@ -172,7 +180,8 @@ Scene<T> seamScene(Draw<T>& d) {
     for (std::int32_t i = 0; i < columns; ++i) setSolid(s.map, i, rows - 1);
     if (d.chance(0.4)) setSolid(s.map, d.integer(0, columns - 1), rows - 2);  // a step
     const T floorTop = static_cast<T>(origin + (rows - 1) * tile);
-    const double w = d.chance(0.5) ? Draw<T>::snap(d.uniform(0.4, 1.5) * tile, tile / 8) : d.uniform(0.4, 1.5) * tile;
+    const double w =
+        d.chance(0.5) ? Draw<T>::snap(d.uniform(0.4, 1.5) * tile, tile / 8) : d.uniform(0.4, 1.5) * tile;
     double h = d.uniform(0.4, 1.5) * tile;
     T x;
     if (d.chance(0.3)) {
@@ -200,14 +209,16 @@ Scene<T> seamScene(Draw<T>& d) {
         for (int k = 0; k < frames; ++k) {
             const double dx = direction * d.uniform(0.1, 4) * tile;
             const double dy = gravity ? (d.chance(0.5) ? Draw<T>::snap(d.uniform(0.01, 0.5) * tile, tile / 64)
-                                                        : d.uniform(0.01, 0.5) * tile)
+                                                       : d.uniform(0.01, 0.5) * tile)
                                       : 0.0;
             s.moves.push_back({static_cast<T>(dx), static_cast<T>(dy)});
         }
     } else {
-        const double gap = d.chance(0.3) ? Draw<T>::snap(d.uniform(0, 2) * tile, tile / 4) : d.uniform(0, 2) * tile;
+        const double gap =
+            d.chance(0.3) ? Draw<T>::snap(d.uniform(0, 2) * tile, tile / 4) : d.uniform(0, 2) * tile;
         h = d.chance(0.5) ? Draw<T>::snap(h, tile / 8) : h;
-        s.box = {{x, static_cast<T>(origin + (rows - 1) * tile - h - gap)}, {static_cast<T>(w), static_cast<T>(h)}};
+        s.box = {{x, static_cast<T>(origin + (rows - 1) * tile - h - gap)},
+                 {static_cast<T>(w), static_cast<T>(h)}};
         const int frames = d.integer(1, 3);
         for (int k = 0; k < frames; ++k) {
             const double dy = gap + d.uniform(0.1, 2) * tile;
@@ -226,11 +237,13 @@ Scene<T> tinyScene(Draw<T>& d) {
     Scene<T> s = uniformScene(d);
     s.moves.resize(1);
     const auto below = [&](T position) {
-        const T ulp = std::nextafter(std::fabs(position), std::numeric_limits<T>::infinity()) - std::fabs(position);
+        const T ulp =
+            std::nextafter(std::fabs(position), std::numeric_limits<T>::infinity()) - std::fabs(position);
         const T scale = static_cast<T>(std::ldexp(d.uniform(0.5, 1.0), -d.integer(1, 8)));
         return static_cast<T>(ulp * scale);
     };
-    Vec2<T> move{static_cast<T>(d.sign()) * below(s.box.pos.x), static_cast<T>(d.sign()) * below(s.box.pos.y)};
+    Vec2<T> move{static_cast<T>(d.sign()) * below(s.box.pos.x),
+                 static_cast<T>(d.sign()) * below(s.box.pos.y)};
     if (d.chance(0.2)) move.x = T(0);
     if (d.chance(0.2)) move.y = T(0);
     if (d.chance(0.5)) {
@@ -296,12 +309,18 @@ template <class T>
 Scene<T> drawScene(DrawnFamily family, std::uint64_t seed, double magnitude) {
     Draw<T> d(seed, magnitude);
     switch (family) {
-        case DrawnFamily::Uniform: return uniformScene(d);
-        case DrawnFamily::NearCorner: return cornerScene(d, false);
-        case DrawnFamily::Tie: return cornerScene(d, true);
-        case DrawnFamily::Seam: return seamScene(d);
-        case DrawnFamily::Tiny: return tinyScene(d);
-        case DrawnFamily::HighSpeed: return highSpeedScene(d);
+        case DrawnFamily::Uniform:
+            return uniformScene(d);
+        case DrawnFamily::NearCorner:
+            return cornerScene(d, false);
+        case DrawnFamily::Tie:
+            return cornerScene(d, true);
+        case DrawnFamily::Seam:
+            return seamScene(d);
+        case DrawnFamily::Tiny:
+            return tinyScene(d);
+        case DrawnFamily::HighSpeed:
+            return highSpeedScene(d);
     }
     return uniformScene(d);
 }

@@ -200,12 +200,18 @@ JsonParse parseJson(std::string_view text) {
 
 const char* describe(JsonValue::Kind kind) noexcept {
     switch (kind) {
-        case JsonValue::Kind::Null: return "null";
-        case JsonValue::Kind::Boolean: return "a boolean";
-        case JsonValue::Kind::Number: return "a number";
-        case JsonValue::Kind::String: return "a string";
-        case JsonValue::Kind::Array: return "an array";
-        case JsonValue::Kind::Object: return "an object";
+        case JsonValue::Kind::Null:
+            return "null";
+        case JsonValue::Kind::Boolean:
+            return "a boolean";
+        case JsonValue::Kind::Number:
+            return "a number";
+        case JsonValue::Kind::String:
+            return "a string";
+        case JsonValue::Kind::Array:
+            return "an array";
+        case JsonValue::Kind::Object:
+            return "an object";
     }
     return "an unknown value";
 }

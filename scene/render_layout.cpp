@@ -9,7 +9,7 @@ namespace tilesweep::detail {
 
 template <class T>
 SceneLayout<T>::SceneLayout(const Scene<T>& scene_, const std::vector<FrameResult<T>>& frames_)
-: scene(scene_), frames(frames_) {
+    : scene(scene_), frames(frames_) {
     const TileMap<T>& map = scene.map;
     if (map.columns < 0 || map.rows < 0 ||
         map.solid.size() != static_cast<std::size_t>(map.columns) * static_cast<std::size_t>(map.rows))
@@ -48,8 +48,7 @@ void SceneLayout<T>::fit(std::size_t titleCodePoints, std::size_t captionCodePoi
                          const std::vector<std::string>& listing, std::size_t legendItems) {
     Bounds bounds;
     if (hasMap())
-        bounds.add({0, 0, static_cast<Real>(scene.map.columns) * tw,
-                    static_cast<Real>(scene.map.rows) * th});
+        bounds.add({0, 0, static_cast<Real>(scene.map.columns) * tw, static_cast<Real>(scene.map.rows) * th});
     bounds.add(boxRect(startX, startY));
     for (std::size_t k = 0; k < plans.size(); ++k) {
         const FramePlan& frame = plans[k];
@@ -74,8 +73,8 @@ void SceneLayout<T>::fit(std::size_t titleCodePoints, std::size_t captionCodePoi
 
     // Canvas width: the drawing, or the text if that is wider.
     Real width = std::max(view.width + 2 * kPad, kMinCanvasWidth);
-    width = std::max(width, kTitleCharWidth * static_cast<Real>(std::min(titleCodePoints, kMaxTitleCodePoints + 1)) +
-                                32);
+    width = std::max(
+        width, kTitleCharWidth * static_cast<Real>(std::min(titleCodePoints, kMaxTitleCodePoints + 1)) + 32);
     width = std::max(width, kCaptionCharWidth * static_cast<Real>(captionCodePoints) + 32);
     for (const std::string& line : listing)
         width = std::max(width, kListingCharWidth * static_cast<Real>(countCodePoints(line)) + 32);

@@ -6,6 +6,7 @@
 // scene_render.cpp's job, and how SVG is written svg_writer's.
 
 #include "svg_writer.h"
+
 #include "tilesweep/scene/scene.h"
 
 #include <algorithm>
@@ -34,9 +35,9 @@ inline constexpr Real kLegendColumnWidth = 240;
 inline constexpr Real kLegendRowHeight = 20;
 inline constexpr Real kListingLineHeight = 15;
 // Rough glyph advances, to size the canvas around text (there is no font metrics in SVG).
-inline constexpr Real kTitleCharWidth = 10;     // 17px bold sans-serif
-inline constexpr Real kCaptionCharWidth = 6.9L; // 12px sans-serif
-inline constexpr Real kListingCharWidth = 6.7L; // 11px monospace
+inline constexpr Real kTitleCharWidth = 10;      // 17px bold sans-serif
+inline constexpr Real kCaptionCharWidth = 6.9L;  // 12px sans-serif
+inline constexpr Real kListingCharWidth = 6.7L;  // 11px monospace
 
 // Past this many frames the picture switches to its compact form: frame ends in between become
 // dots, and the per-frame extras (requested motion, box at contact) are left out.
@@ -171,8 +172,8 @@ struct SceneLayout {
 
     /// Fits the view to the map and the motion, and the canvas around it and around the text:
     /// the title and caption (in code points), the listing lines, the legend's item count.
-    void fit(std::size_t titleCodePoints, std::size_t captionCodePoints, const std::vector<std::string>& listing,
-             std::size_t legendItems);
+    void fit(std::size_t titleCodePoints, std::size_t captionCodePoints,
+             const std::vector<std::string>& listing, std::size_t legendItems);
 
     [[nodiscard]] bool hasMap() const { return scene.map.columns > 0 && scene.map.rows > 0; }
     [[nodiscard]] Real relX(T x) const {

@@ -81,8 +81,7 @@ namespace {
 // Runs from_chars on an unsigned number text and applies the sign afterwards: negation is
 // exact, so the result is still rounded once.
 template <class T>
-[[nodiscard]] ScalarText<T> readUnsigned(std::string_view text, bool negative,
-                                         std::chars_format format) {
+[[nodiscard]] ScalarText<T> readUnsigned(std::string_view text, bool negative, std::chars_format format) {
     ScalarText<T> result;
     T magnitude = 0;
     const char* const end = text.data() + text.size();
@@ -165,9 +164,13 @@ void appendShortest(std::string& out, T value) {
 }
 
 template <>
-const char* scalarName<float>() noexcept { return "float"; }
+const char* scalarName<float>() noexcept {
+    return "float";
+}
 template <>
-const char* scalarName<double>() noexcept { return "double"; }
+const char* scalarName<double>() noexcept {
+    return "double";
+}
 
 template ScalarText<float> readDecimalScalar<float>(std::string_view);
 template ScalarText<double> readDecimalScalar<double>(std::string_view);

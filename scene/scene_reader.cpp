@@ -1,5 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Reading one scene line (../shared/CONTRACT.md, "Scene files") into a Scene<T>.
+#include "json_value.h"
+#include "scalar_text.h"
+
+#include "tilesweep/scene/scene.h"
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -8,10 +13,6 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
-
-#include "json_value.h"
-#include "scalar_text.h"
-#include "tilesweep/scene/scene.h"
 
 namespace tilesweep {
 namespace {
@@ -76,8 +77,8 @@ template <class T>
     } else if (value.kind == Kind::String) {
         read = detail::readHexfloatScalar<T>(value.text);
     } else {
-        fail(field, std::string("expected a number or a hexfloat string, got ") +
-                        detail::describe(value.kind));
+        fail(field,
+             std::string("expected a number or a hexfloat string, got ") + detail::describe(value.kind));
     }
     switch (read.status) {
         case detail::ScalarTextStatus::Ok:
@@ -85,13 +86,12 @@ template <class T>
         case detail::ScalarTextStatus::NonFinite:
             fail(field, "non-finite value " + quoted(value.text));
         case detail::ScalarTextStatus::Overflow:
-            fail(field, "non-finite value " + quoted(value.text) + " (overflows " +
-                            detail::scalarName<T>() + ")");
+            fail(field,
+                 "non-finite value " + quoted(value.text) + " (overflows " + detail::scalarName<T>() + ")");
         case detail::ScalarTextStatus::Malformed:
             break;
     }
-    fail(field, "expected a number or a hexfloat string like \"0x1.8p+3\", got " +
-                    quoted(value.text));
+    fail(field, "expected a number or a hexfloat string like \"0x1.8p+3\", got " + quoted(value.text));
 }
 
 // An array of exactly N scalars.
@@ -133,8 +133,8 @@ void readRows(const JsonValue& rows, TileMap<T>& map) {
     for (std::size_t j = 0; j < rows.items.size(); ++j) {
         const JsonValue& row = rows.items[j];
         if (row.kind != Kind::String)
-            fail(indexed(field, j), std::string("expected a string of '#' and '.', got ") +
-                                        detail::describe(row.kind));
+            fail(indexed(field, j),
+                 std::string("expected a string of '#' and '.', got ") + detail::describe(row.kind));
         if (row.text.size() != rows.items.front().text.size())
             fail(field, "ragged rows (row " + std::to_string(j) + " has length " +
                             std::to_string(row.text.size()) + ", row 0 has " +
@@ -157,8 +157,7 @@ void readRows(const JsonValue& rows, TileMap<T>& map) {
         for (std::size_t i = 0; i < columns; ++i) {
             if (row[i] != '#' && row[i] != '.')
                 fail(indexed(field, j), "unknown tile character " + describeTileCharacter(row[i]) +
-                                            " at column " + std::to_string(i) +
-                                            " (expected '#' or '.')");
+                                            " at column " + std::to_string(i) + " (expected '#' or '.')");
             map.solid.push_back(row[i] == '#' ? 1 : 0);
         }
     }
@@ -196,8 +195,7 @@ template <class T>
     TileMap<T> map;
     map.origin = readVec2<T>(requireMember(value, "origin", "map.origin"), "map.origin");
     map.tileSize = readVec2<T>(requireMember(value, "tile", "map.tile"), "map.tile");
-    if (!(map.tileSize.x > 0 && map.tileSize.y > 0))
-        fail("map.tile", "tile width and height must be > 0");
+    if (!(map.tileSize.x > 0 && map.tileSize.y > 0)) fail("map.tile", "tile width and height must be > 0");
     readRows(requireMember(value, "rows", "map.rows"), map);
     checkMap(map);
     return map;
@@ -215,14 +213,13 @@ template <class T>
 [[nodiscard]] std::vector<Vec2<T>> readMoves(const JsonValue& scene) {
     const JsonValue* move = findMember(scene, "move", "move");
     const JsonValue* moves = findMember(scene, "moves", "moves");
-    if (move != nullptr && moves != nullptr)
-        fail("moves", "give either \"move\" or \"moves\", not both");
+    if (move != nullptr && moves != nullptr) fail("moves", "give either \"move\" or \"moves\", not both");
     if (move != nullptr) return {readVec2<T>(*move, "move")};
     if (moves == nullptr)
         fail("move", "missing field (give \"move\": [dx, dy] or \"moves\": [[dx, dy], ...])");
     if (moves->kind != Kind::Array)
-        fail("moves", std::string("expected an array of [dx, dy] pairs, got ") +
-                          detail::describe(moves->kind));
+        fail("moves",
+             std::string("expected an array of [dx, dy] pairs, got ") + detail::describe(moves->kind));
     if (moves->items.empty()) fail("moves", "must not be empty");
     std::vector<Vec2<T>> displacements;
     displacements.reserve(moves->items.size());
@@ -237,8 +234,8 @@ template <class T>
 void checkResolvable(const Scene<T>& scene) {
     for (std::size_t k = 0; k < scene.moves.size(); ++k) {
         if (!isValid(SweepInput<T>{scene.map.view(), scene.box, scene.moves[k]}))
-            fail("scene", "the resolver refuses the input of frame " + std::to_string(k) +
-                              " (tilesweep::isValid)");
+            fail("scene",
+                 "the resolver refuses the input of frame " + std::to_string(k) + " (tilesweep::isValid)");
     }
 }
 

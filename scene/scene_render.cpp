@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // What a scene picture shows (render.h): the map, the boxes, the path, the contacts, the legend
 // and the listing, drawn on the layout of render_layout.h with the elements of svg_writer.h.
-#include "tilesweep/scene/render.h"
-
 #include "render_layout.h"
 #include "svg_writer.h"
+
+#include "tilesweep/scene/render.h"
 
 #include <algorithm>
 #include <cmath>
@@ -81,9 +81,9 @@ public:
         listing_ = listingLines();
         layout_.fit(countCodePoints(title()), countCodePoints(caption()), listing_, kLegendItems);
         out_.reserve(8192 + frames_.size() * 512 + scene_.map.solid.size() * 96);
-        out_ += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + px(layout_.canvasWidth) +
-                "\" height=\"" + px(layout_.canvasHeight) + "\" viewBox=\"0 0 " + px(layout_.canvasWidth) + " " +
-                px(layout_.canvasHeight) + "\">\n";
+        out_ += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" +
+                px(layout_.canvasWidth) + "\" height=\"" + px(layout_.canvasHeight) + "\" viewBox=\"0 0 " +
+                px(layout_.canvasWidth) + " " + px(layout_.canvasHeight) + "\">\n";
         out_ += "<title>";
         appendXmlText(out_, title(), kMaxTitleCodePoints);
         out_ += "</title>\n";
@@ -106,8 +106,6 @@ public:
 
 private:
     // ---- planning: map-relative geometry and the view ----
-
-
 
     // ---- the parts of the picture ----
 
@@ -140,8 +138,8 @@ private:
             // Nothing to draw but the origin: mark it, so the view still says where the map is.
             const Real x = layout_.view.x(0);
             const Real y = layout_.view.y(0);
-            if (x >= layout_.view.left && x <= layout_.view.left + layout_.view.width && y >= layout_.view.top &&
-                y <= layout_.view.top + layout_.view.height) {
+            if (x >= layout_.view.left && x <= layout_.view.left + layout_.view.width &&
+                y >= layout_.view.top && y <= layout_.view.top + layout_.view.height) {
                 const std::string stroke = std::string("stroke=\"") + kMuted + "\" stroke-width=\"1\"";
                 appendLine(out_, x - 5, y, x + 5, y, stroke);
                 appendLine(out_, x, y - 5, x, y + 5, stroke);
@@ -176,8 +174,8 @@ private:
                 if (!map.solid[static_cast<std::size_t>(j) * static_cast<std::size_t>(map.columns) +
                                static_cast<std::size_t>(i)])
                     continue;
-                appendRect(out_, layout_.view.x(static_cast<Real>(i) * layout_.tw), layout_.view.y(static_cast<Real>(j) * layout_.th),
-                           cellW, cellH,
+                appendRect(out_, layout_.view.x(static_cast<Real>(i) * layout_.tw),
+                           layout_.view.y(static_cast<Real>(j) * layout_.th), cellW, cellH,
                            tileStyle + " data-cell=\"" + std::to_string(i) + "," + std::to_string(j) + "\"");
             }
         }
@@ -189,12 +187,12 @@ private:
         const auto digits = static_cast<Real>(std::to_string(map.columns - 1).size());
         const std::int64_t stepI = labelStep(cellW, 6.5L * digits + 6);
         for (std::int64_t i = 0; i < map.columns; i += stepI)
-            appendText(out_, layout_.view.x((static_cast<Real>(i) + 0.5L) * layout_.tw), top - 5, std::to_string(i),
-                       "middle", indexStyle);
+            appendText(out_, layout_.view.x((static_cast<Real>(i) + 0.5L) * layout_.tw), top - 5,
+                       std::to_string(i), "middle", indexStyle);
         const std::int64_t stepJ = labelStep(cellH, 13);
         for (std::int64_t j = 0; j < map.rows; j += stepJ)
-            appendText(out_, left - 5, layout_.view.y((static_cast<Real>(j) + 0.5L) * layout_.th) + 3.5L, std::to_string(j),
-                       "end", indexStyle);
+            appendText(out_, left - 5, layout_.view.y((static_cast<Real>(j) + 0.5L) * layout_.th) + 3.5L,
+                       std::to_string(j), "end", indexStyle);
         out_ += "</g>\n";
     }
 
@@ -233,7 +231,8 @@ private:
     /// Requested motion, frame ends, boxes at contacts, the start box and the paths.
     void appendMotion() {
         const bool full = layout_.plans.size() <= kMaxFramesDrawnInFull;
-        const Rect viewRect{layout_.view.left - kPad + 2, layout_.view.top - kPad + 2, layout_.view.left + layout_.view.width + kPad - 2,
+        const Rect viewRect{layout_.view.left - kPad + 2, layout_.view.top - kPad + 2,
+                            layout_.view.left + layout_.view.width + kPad - 2,
                             layout_.view.top + layout_.view.height + kPad - 2};
 
         // The motion each frame asked for, from the start centre to start + move, clipped to
@@ -270,7 +269,8 @@ private:
                           "fill=\"" + std::string(kBoxBlue) + "\" fill-opacity=\"0.13\" " + boxStroke +
                               " stroke-opacity=\"0.6\" stroke-width=\"1\" class=\"frame-end box\"" + data);
             } else {
-                appendCircle(out_, layout_.view.x(frame.endX + layout_.w / 2), layout_.view.y(frame.endY + layout_.h / 2), 2.2L,
+                appendCircle(out_, layout_.view.x(frame.endX + layout_.w / 2),
+                             layout_.view.y(frame.endY + layout_.h / 2), 2.2L,
                              "fill=\"" + std::string(kBoxBlue) + "\" class=\"frame-end dot\"" + data);
             }
         }
@@ -313,7 +313,8 @@ private:
                     "\" stroke-width=\"1.6\" stroke-linejoin=\"round\" class=\"path\" data-frame=\"" +
                     std::to_string(k + 1) + "\"/>\n";
             for (const Stop& stop : frame.stops)
-                appendCircle(out_, layout_.view.x(stop.x + layout_.w / 2), layout_.view.y(stop.y + layout_.h / 2), 3,
+                appendCircle(out_, layout_.view.x(stop.x + layout_.w / 2),
+                             layout_.view.y(stop.y + layout_.h / 2), 3,
                              std::string("fill=\"") + kContactRed + "\" class=\"contact-point\"");
         }
     }
@@ -357,8 +358,8 @@ private:
     void appendBoxLabels() {
         const std::string style = std::string("font-size=\"11\" ") + kFont + " " + kHalo;
         if (isFinitePoint(layout_.startX, layout_.startY))
-            appendText(out_, layout_.view.x(layout_.startX), layout_.view.y(layout_.startY) - 5, "start", "start",
-                       style + " fill=\"" + kBoxBlue + "\" class=\"label\"");
+            appendText(out_, layout_.view.x(layout_.startX), layout_.view.y(layout_.startY) - 5, "start",
+                       "start", style + " fill=\"" + kBoxBlue + "\" class=\"label\"");
         const bool full = layout_.plans.size() <= kMaxFramesDrawnInFull;
         std::size_t k = 0;
         while (k < layout_.plans.size()) {
@@ -371,7 +372,8 @@ private:
                 const std::string text = end - k == 1
                                              ? "end " + std::to_string(k + 1)
                                              : "end " + std::to_string(k + 1) + "-" + std::to_string(end);
-                appendText(out_, layout_.view.x(layout_.plans[k].endX + layout_.w), layout_.view.y(layout_.plans[k].endY + layout_.h) + 13, text, "end",
+                appendText(out_, layout_.view.x(layout_.plans[k].endX + layout_.w),
+                           layout_.view.y(layout_.plans[k].endY + layout_.h) + 13, text, "end",
                            style + " fill=\"" + kBoxDark + "\" class=\"label\"");
             }
             k = end;
@@ -385,7 +387,8 @@ private:
         const std::string textStyle = std::string("font-size=\"12\" ") + kFont + " fill=\"" + kInk + "\"";
         for (std::size_t item = 0; item < kLegendItems; ++item) {
             const Real x = 16 + static_cast<Real>(item % layout_.legendColumns) * kLegendColumnWidth;
-            const Real y = layout_.legendTop + static_cast<Real>(item / layout_.legendColumns) * kLegendRowHeight;
+            const Real y =
+                layout_.legendTop + static_cast<Real>(item / layout_.legendColumns) * kLegendRowHeight;
             appendLegendSwatch(item, x, y);
             appendText(out_, x + 34, y + 11, legendText(item), "start", textStyle);
         }
@@ -557,11 +560,11 @@ private:
 
     // ---- small helpers ----
 
-
     /// The box drawn at (x, y), sized from w*scale so that cancellation near a far coordinate
     /// cannot collapse it.
     void appendBox(Real x, Real y, const std::string& attributes) {
-        appendRect(out_, layout_.view.x(x), layout_.view.y(y), layout_.w * layout_.view.scale, layout_.h * layout_.view.scale, attributes);
+        appendRect(out_, layout_.view.x(x), layout_.view.y(y), layout_.w * layout_.view.scale,
+                   layout_.h * layout_.view.scale, attributes);
     }
 
     /// The middle of [a0, a1] and [b0, b1]'s common part; at an exact corner touch that part is

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 // Running a scene's frames through the production resolver, tilesweep::resolveMove.
+#include "tilesweep/scene/scene.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <utility>
-
-#include "tilesweep/scene/scene.h"
 
 namespace tilesweep {
 namespace {
@@ -37,8 +37,8 @@ std::vector<FrameResult<T>> runScene(const Scene<T>& scene) {
             result = resolveMove(input, output);
             if (result.status == Status::InvalidInput || result.contactCount < 0 ||
                 result.startOverlapCount < 0)
-                throw std::invalid_argument("runScene: the resolver refused frame " +
-                                            std::to_string(k) + " as invalid input");
+                throw std::invalid_argument("runScene: the resolver refused frame " + std::to_string(k) +
+                                            " as invalid input");
             const auto contactCount = static_cast<std::size_t>(result.contactCount);
             const auto overlapCount = static_cast<std::size_t>(result.startOverlapCount);
             if (contactCount <= contacts.size() && overlapCount <= startOverlaps.size()) break;
@@ -51,8 +51,7 @@ std::vector<FrameResult<T>> runScene(const Scene<T>& scene) {
         FrameResult<T> frame;
         frame.position = result.position;
         frame.contacts.assign(contacts.begin(), contacts.begin() + result.contactCount);
-        frame.startOverlaps.assign(startOverlaps.begin(),
-                                   startOverlaps.begin() + result.startOverlapCount);
+        frame.startOverlaps.assign(startOverlaps.begin(), startOverlaps.begin() + result.startOverlapCount);
         frames.push_back(std::move(frame));
         box.pos = result.position;  // the next frame starts where this one ended (rounded)
     }

@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
 // Writing scenes and the output lines of `tilesweep resolve` (../shared/CONTRACT.md).
+#include "scalar_text.h"
+
+#include "tilesweep/scene/scene.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
 #include <stdexcept>
 #include <string>
-
-#include "scalar_text.h"
-#include "tilesweep/scene/scene.h"
 
 namespace tilesweep {
 namespace {
@@ -15,8 +16,7 @@ namespace {
 // A JSON string literal. Invalid UTF-8 becomes U+FFFD instead of an exception: an error
 // message may quote raw bytes of the line it complains about.
 [[nodiscard]] std::string jsonString(std::string_view text) {
-    return nlohmann::json(std::string(text))
-        .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    return nlohmann::json(std::string(text)).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 // "0x1.8p+3" with its quotes: a hexfloat travels as a JSON string.

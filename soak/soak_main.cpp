@@ -16,6 +16,13 @@
 // first), which makes a run reproducible: the same seed and ticks give the same frames.
 //
 // Exit status 1 when any frame broke a rule, 2 on bad arguments.
+#include "frame_safety.h"
+#include "fuzz_check.h"
+
+#include "tilesweep/resolve.h"
+#include "tilesweep/scenarios/levels.h"
+#include "tilesweep/tile_map.h"
+
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -24,15 +31,9 @@
 #include <cstring>
 #include <fstream>
 #include <random>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
-
-#include "frame_safety.h"
-#include "fuzz_check.h"
-#include "tilesweep/resolve.h"
-#include "tilesweep/scenarios/levels.h"
-#include "tilesweep/tile_map.h"
 
 namespace {
 
@@ -40,8 +41,8 @@ using namespace tilesweep;
 
 constexpr std::int32_t kColumns = scenarios::kLevelColumns;
 constexpr std::int32_t kRows = scenarios::kLevelRows;
-constexpr std::int64_t kTicksPerLevel = 4000;     // a new level (and new walkers) this often
-constexpr std::int32_t kListCapacity = 256;       // contacts or overlaps of one small box
+constexpr std::int64_t kTicksPerLevel = 4000;  // a new level (and new walkers) this often
+constexpr std::int32_t kListCapacity = 256;    // contacts or overlaps of one small box
 constexpr int kMaxReportedViolations = 10;
 
 struct Options {
@@ -87,19 +88,22 @@ struct Walker {
     Box<T> box{};
     T vx = 0;
     T vy = 0;
-    T speed = 0;             // walking speed, length units per frame
-    int direction = 0;       // -1, 0 (standing still) or 1
-    int modeFrames = 0;      // frames left before the walker picks a new direction
+    T speed = 0;         // walking speed, length units per frame
+    int direction = 0;   // -1, 0 (standing still) or 1
+    int modeFrames = 0;  // frames left before the walker picks a new direction
     int dashFrames = 0;
-    bool grounded = false;   // the last frame landed on or pressed into a floor
-    bool resting = false;    // the last frame had no x motion and ended on a floor
+    bool grounded = false;  // the last frame landed on or pressed into a floor
+    bool resting = false;   // the last frame had no x motion and ended on a floor
 };
 
 template <class T>
 class Soak {
 public:
     Soak(const Options& options, Counters& counters)
-        : options_(options), counters_(counters), random_(options.seed), walkers_(static_cast<std::size_t>(options.walkers)) {}
+        : options_(options),
+          counters_(counters),
+          random_(options.seed),
+          walkers_(static_cast<std::size_t>(options.walkers)) {}
 
     void newLevel() {
         ++counters_.levels;
@@ -203,7 +207,8 @@ private:
             // The position must not change. A floor contact is not required: a box that came to
             // rest less than an ulp above the floor (the touching position is not representable
             // far from the origin) under a gravity step smaller than that gap meets nothing.
-            if (!fuzz::sameBits(r.position.x, walker.box.pos.x) || !fuzz::sameBits(r.position.y, walker.box.pos.y))
+            if (!fuzz::sameBits(r.position.x, walker.box.pos.x) ||
+                !fuzz::sameBits(r.position.y, walker.box.pos.y))
                 violation = "resting contact drifted";
             if (!floor) ++counters_.restingWithoutContact;
         }
@@ -237,8 +242,9 @@ private:
                      static_cast<double>(level_.map.origin.x), static_cast<double>(level_.map.origin.y),
                      static_cast<double>(tile()), static_cast<double>(walker.box.pos.x),
                      static_cast<double>(walker.box.pos.y), static_cast<double>(walker.box.size.x),
-                     static_cast<double>(walker.box.size.y), static_cast<double>(d.x), static_cast<double>(d.y),
-                     static_cast<double>(r.position.x), static_cast<double>(r.position.y), r.contactCount);
+                     static_cast<double>(walker.box.size.y), static_cast<double>(d.x),
+                     static_cast<double>(d.y), static_cast<double>(r.position.x),
+                     static_cast<double>(r.position.y), r.contactCount);
     }
 
     const Options& options_;
@@ -292,7 +298,9 @@ bool parseOptions(int argc, char** argv, Options& options) {
 int main(int argc, char** argv) {
     Options options;
     if (!parseOptions(argc, argv, options)) {
-        std::fprintf(stderr, "usage: tilesweep_soak [--seconds S] [--ticks N] [--seed N] [--walkers N] [--scalar float|double]\n");
+        std::fprintf(stderr,
+                     "usage: tilesweep_soak [--seconds S] [--ticks N] [--seed N] [--walkers N] [--scalar "
+                     "float|double]\n");
         return 2;
     }
     Counters counters;
@@ -308,19 +316,22 @@ int main(int argc, char** argv) {
 
     std::printf("soak: %s, seed %llu, %d walkers, %.1f s\n", options.useDouble ? "double" : "float",
                 static_cast<unsigned long long>(options.seed), options.walkers, elapsed);
-    std::printf("soak: %llu frames (%llu ticks, %llu levels), %.0f frames/s\n",
-                static_cast<unsigned long long>(counters.frames), static_cast<unsigned long long>(counters.ticks),
-                static_cast<unsigned long long>(counters.levels), static_cast<double>(counters.frames) / elapsed);
-    std::printf("soak: %llu contacts, %llu resting frames checked for drift (%llu of them hovering a "
-                "sub-ulp gap above the floor), %llu long dashes\n",
-                static_cast<unsigned long long>(counters.contacts),
-                static_cast<unsigned long long>(counters.restingChecks),
-                static_cast<unsigned long long>(counters.restingWithoutContact),
-                static_cast<unsigned long long>(counters.bigDashes));
+    std::printf(
+        "soak: %llu frames (%llu ticks, %llu levels), %.0f frames/s\n",
+        static_cast<unsigned long long>(counters.frames), static_cast<unsigned long long>(counters.ticks),
+        static_cast<unsigned long long>(counters.levels), static_cast<double>(counters.frames) / elapsed);
+    std::printf(
+        "soak: %llu contacts, %llu resting frames checked for drift (%llu of them hovering a "
+        "sub-ulp gap above the floor), %llu long dashes\n",
+        static_cast<unsigned long long>(counters.contacts),
+        static_cast<unsigned long long>(counters.restingChecks),
+        static_cast<unsigned long long>(counters.restingWithoutContact),
+        static_cast<unsigned long long>(counters.bigDashes));
     std::printf("soak: RSS %ld kB at start, %ld kB at end, peak %ld kB\n", rssStart, rssEnd, rssPeak);
-    std::printf("soak: %llu frames rounded an axis down, past the exact end by less than an ulp, where "
-                "rounding back would have carried the far edge over a grid line (CONTRACT.md, Positions)\n",
-                static_cast<unsigned long long>(counters.roundedDown));
+    std::printf(
+        "soak: %llu frames rounded an axis down, past the exact end by less than an ulp, where "
+        "rounding back would have carried the far edge over a grid line (CONTRACT.md, Positions)\n",
+        static_cast<unsigned long long>(counters.roundedDown));
     std::printf("soak: %llu violations\n", static_cast<unsigned long long>(counters.violations));
     return counters.violations == 0 ? 0 : 1;
 }

@@ -14,11 +14,12 @@
 // integers, so exact. That settles corner misses (E >= X, including a path exactly through a
 // corner, E == X) and exact ties (equal entries) without any tolerance.
 
+#include "fault_injection.h"
+
+#include "tilesweep/math.h"
+
 #include <cmath>
 #include <cstdint>
-
-#include "fault_injection.h"
-#include "tilesweep/math.h"
 
 namespace tilesweep::detail {
 
@@ -61,7 +62,8 @@ struct AxisMotion {
 };
 
 template <class Num>
-[[nodiscard]] inline AxisMotion<Num> makeAxisMotion(const Num& pos, const Num& size, const Num& disp) noexcept {
+[[nodiscard]] inline AxisMotion<Num> makeAxisMotion(const Num& pos, const Num& size,
+                                                    const Num& disp) noexcept {
     const int dir = disp.sign();
     return {pos, pos + size, disp, dir < 0 ? -disp : disp, dir};
 }
@@ -79,9 +81,8 @@ struct TileTest {
 /// The contract's test of one tile [xlo, xhi] x [ylo, yhi] against a box moving on both axes
 /// or on one; a box that moves on neither never blocks.
 template <class Num>
-[[nodiscard]] TileTest<Num> testTile(const AxisMotion<Num>& mx, const AxisMotion<Num>& my,
-                                     const Num& xlo, const Num& xhi, const Num& ylo,
-                                     const Num& yhi) noexcept {
+[[nodiscard]] TileTest<Num> testTile(const AxisMotion<Num>& mx, const AxisMotion<Num>& my, const Num& xlo,
+                                     const Num& xhi, const Num& ylo, const Num& yhi) noexcept {
     const Num zero = Num::fromInt(0);
     TileTest<Num> miss{TileVerdict::Misses, {zero, Num::fromInt(1)}};
     if (mx.dir == 0 || my.dir == 0) {

@@ -156,8 +156,8 @@ void batchOf(const PreparedMap<T>& map, const MoveInput<T>* inputs, MoveResult<T
 
 }  // namespace
 
-void moveAndSlideBatch(const PreparedMap<float>& map, const MoveInput<float>* inputs, MoveResult<float>* results,
-                       std::size_t count, BatchPool* pool) noexcept {
+void moveAndSlideBatch(const PreparedMap<float>& map, const MoveInput<float>* inputs,
+                       MoveResult<float>* results, std::size_t count, BatchPool* pool) noexcept {
     batchOf(map, inputs, results, count, pool);
 }
 

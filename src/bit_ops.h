@@ -46,8 +46,6 @@ namespace tilesweep::detail {
 }
 
 /// Zero bits above the highest set bit of a nonzero 32-bit x.
-[[nodiscard]] inline int countLeadingZeros32(std::uint32_t x) noexcept {
-    return countLeadingZeros64(x) - 32;
-}
+[[nodiscard]] inline int countLeadingZeros32(std::uint32_t x) noexcept { return countLeadingZeros64(x) - 32; }
 
 }  // namespace tilesweep::detail

@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: MIT
 #include "tilesweep/box_sweep.h"
 
+#include "axis_sweep.h"
+#include "fast_frame.h"
+#include "lattice.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
-
-#include "axis_sweep.h"
-#include "fast_frame.h"
-#include "lattice.h"
 
 // One box against one tile: the same exact test the resolver applies to every candidate tile
 // (axis_sweep.h), on the lattice of this one pair.
@@ -18,7 +18,9 @@ namespace tilesweep {
 namespace {
 
 template <class T>
-bool isFinite(Vec2<T> v) noexcept { return std::isfinite(v.x) && std::isfinite(v.y); }
+bool isFinite(Vec2<T> v) noexcept {
+    return std::isfinite(v.x) && std::isfinite(v.y);
+}
 
 template <class T, class Num>
 BoxSweepOutput<T> sweepOnLattice(const BoxSweepInput<T>& in, const detail::Dyadic* d, int exponent) noexcept {
@@ -28,11 +30,21 @@ BoxSweepOutput<T> sweepOnLattice(const BoxSweepInput<T>& in, const detail::Dyadi
     const auto test = detail::testTile(mx, my, lat(d[6]), lat(d[8]), lat(d[7]), lat(d[9]));
     BoxSweepOutput<T> out;
     switch (test.verdict) {
-        case detail::TileVerdict::Misses: out.state = BoxSweepState::Misses; return out;
-        case detail::TileVerdict::StartsOverlapping: out.state = BoxSweepState::StartsOverlapping; return out;
-        case detail::TileVerdict::BlocksOnX: out.axis = Axis::X; break;
-        case detail::TileVerdict::BlocksOnY: out.axis = Axis::Y; break;
-        case detail::TileVerdict::Tie: out.axis = detail::settleTie(in.xFaceExposed, in.yFaceExposed); break;
+        case detail::TileVerdict::Misses:
+            out.state = BoxSweepState::Misses;
+            return out;
+        case detail::TileVerdict::StartsOverlapping:
+            out.state = BoxSweepState::StartsOverlapping;
+            return out;
+        case detail::TileVerdict::BlocksOnX:
+            out.axis = Axis::X;
+            break;
+        case detail::TileVerdict::BlocksOnY:
+            out.axis = Axis::Y;
+            break;
+        case detail::TileVerdict::Tie:
+            out.axis = detail::settleTie(in.xFaceExposed, in.yFaceExposed);
+            break;
     }
     out.state = BoxSweepState::Blocks;
     out.time = detail::roundRatioToNearest<T>(test.time.num, test.time.den);
@@ -44,8 +56,9 @@ BoxSweepOutput<T> sweepOnLattice(const BoxSweepInput<T>& in, const detail::Dyadi
 /// coordinates. All nonzero inputs normal; every coordinate below 2^C, every difference of two
 /// below 2^(C+1), all multiples of 2^G; (C + 1) - G <= 53.
 bool admitFloatPair(const BoxSweepInput<float>& in) noexcept {
-    const float values[10] = {in.box.pos.x,  in.box.pos.y,  in.box.size.x, in.box.size.y, in.displacement.x,
-                              in.displacement.y, in.tileMin.x, in.tileMin.y, in.tileMax.x, in.tileMax.y};
+    const float values[10] = {in.box.pos.x,      in.box.pos.y,      in.box.size.x, in.box.size.y,
+                              in.displacement.x, in.displacement.y, in.tileMin.x,  in.tileMin.y,
+                              in.tileMax.x,      in.tileMax.y};
     int lowest = 255;
     int boxTop = 0;
     int tileTop = 0;
@@ -56,8 +69,10 @@ bool admitFloatPair(const BoxSweepInput<float>& in) noexcept {
         if ((bits & 0x7fffffff) == 0) continue;
         if (f == 0) return false;  // subnormal
         lowest = std::min(lowest, f);
-        if (k < 6) boxTop = std::max(boxTop, f);
-        else tileTop = std::max(tileTop, f);
+        if (k < 6)
+            boxTop = std::max(boxTop, f);
+        else
+            tileTop = std::max(tileTop, f);
     }
     const int top = std::max(boxTop + 2, tileTop);  // coordinates below 2^(top - 126)
     int span = (top - 126 + 1) - (lowest - 150);
@@ -86,11 +101,21 @@ bool sweepFast(const BoxSweepInput<float>& in, BoxSweepOutput<float>& out) noexc
         detail::testTileFast(mx, my, static_cast<double>(in.tileMin.x), static_cast<double>(in.tileMax.x),
                              static_cast<double>(in.tileMin.y), static_cast<double>(in.tileMax.y), refined);
     switch (test.verdict) {
-        case detail::TileVerdict::Misses: out.state = BoxSweepState::Misses; return true;
-        case detail::TileVerdict::StartsOverlapping: out.state = BoxSweepState::StartsOverlapping; return true;
-        case detail::TileVerdict::BlocksOnX: out.axis = Axis::X; break;
-        case detail::TileVerdict::BlocksOnY: out.axis = Axis::Y; break;
-        case detail::TileVerdict::Tie: out.axis = detail::settleTie(in.xFaceExposed, in.yFaceExposed); break;
+        case detail::TileVerdict::Misses:
+            out.state = BoxSweepState::Misses;
+            return true;
+        case detail::TileVerdict::StartsOverlapping:
+            out.state = BoxSweepState::StartsOverlapping;
+            return true;
+        case detail::TileVerdict::BlocksOnX:
+            out.axis = Axis::X;
+            break;
+        case detail::TileVerdict::BlocksOnY:
+            out.axis = Axis::Y;
+            break;
+        case detail::TileVerdict::Tie:
+            out.axis = detail::settleTie(in.xFaceExposed, in.yFaceExposed);
+            break;
     }
     out.state = BoxSweepState::Blocks;
     return detail::roundTimeToFloat(test.time, refined, out.time);

@@ -2,14 +2,13 @@
 // The C API (include/tilesweep/tilesweep.h) over the game-loop and batch calls. Every entry
 // point catches everything (allocation and thread start are the only things that can throw)
 // and reports a ts_error; none aborts.
+#include "tilesweep/batch.h"
+#include "tilesweep/mover.h"
 #include "tilesweep/tilesweep.h"
 
 #include <cstring>
 #include <new>
 #include <vector>
-
-#include "tilesweep/batch.h"
-#include "tilesweep/mover.h"
 
 struct ts_map_f {
     std::vector<std::uint8_t> cells;
@@ -54,13 +53,20 @@ struct Types<double> {
 
 ts_error errorOf(MapError e) noexcept {
     switch (e) {
-        case MapError::None: return TS_OK;
-        case MapError::NonFiniteOrigin: return TS_ERROR_MAP_NON_FINITE_ORIGIN;
-        case MapError::NonPositiveTileSize: return TS_ERROR_MAP_NON_POSITIVE_TILE_SIZE;
-        case MapError::NegativeDimensions: return TS_ERROR_MAP_NEGATIVE_DIMENSIONS;
-        case MapError::TooLarge: return TS_ERROR_MAP_TOO_LARGE;
-        case MapError::UnrepresentableEdgeX: return TS_ERROR_MAP_UNREPRESENTABLE_EDGE_X;
-        case MapError::UnrepresentableEdgeY: return TS_ERROR_MAP_UNREPRESENTABLE_EDGE_Y;
+        case MapError::None:
+            return TS_OK;
+        case MapError::NonFiniteOrigin:
+            return TS_ERROR_MAP_NON_FINITE_ORIGIN;
+        case MapError::NonPositiveTileSize:
+            return TS_ERROR_MAP_NON_POSITIVE_TILE_SIZE;
+        case MapError::NegativeDimensions:
+            return TS_ERROR_MAP_NEGATIVE_DIMENSIONS;
+        case MapError::TooLarge:
+            return TS_ERROR_MAP_TOO_LARGE;
+        case MapError::UnrepresentableEdgeX:
+            return TS_ERROR_MAP_UNREPRESENTABLE_EDGE_X;
+        case MapError::UnrepresentableEdgeY:
+            return TS_ERROR_MAP_UNREPRESENTABLE_EDGE_Y;
     }
     return TS_ERROR_MAP_NEGATIVE_DIMENSIONS;
 }
@@ -68,15 +74,20 @@ ts_error errorOf(MapError e) noexcept {
 ts_error errorOf(MoveStatus s) noexcept {
     switch (s) {
         case MoveStatus::Moved:
-        case MoveStatus::Blocked: return TS_OK;
-        case MoveStatus::InvalidInput: return TS_ERROR_INVALID_INPUT;
-        case MoveStatus::ContactBufferTooSmall: return TS_ERROR_CONTACT_BUFFER_TOO_SMALL;
+        case MoveStatus::Blocked:
+            return TS_OK;
+        case MoveStatus::InvalidInput:
+            return TS_ERROR_INVALID_INPUT;
+        case MoveStatus::ContactBufferTooSmall:
+            return TS_ERROR_CONTACT_BUFFER_TOO_SMALL;
     }
     return TS_ERROR_INVALID_INPUT;
 }
 
 template <class T, class V>
-tilesweep::Vec2<T> toVec(V v) noexcept { return {v.x, v.y}; }
+tilesweep::Vec2<T> toVec(V v) noexcept {
+    return {v.x, v.y};
+}
 
 template <class T>
 tilesweep::MoveInput<T> toInput(const typename Types<T>::Mover& m) noexcept {
@@ -103,8 +114,8 @@ ts_error createMap(const typename Types<T>::Desc* desc, typename Types<T>::Map**
     *out = nullptr;
     if (desc == nullptr) return TS_ERROR_NULL_ARGUMENT;
     // Check the header before copying columns * rows cells from the caller's pointer.
-    tilesweep::TileMapView<T> view{toVec<T>(desc->origin), toVec<T>(desc->tile_size), desc->columns, desc->rows,
-                                   desc->solid};
+    tilesweep::TileMapView<T> view{toVec<T>(desc->origin), toVec<T>(desc->tile_size), desc->columns,
+                                   desc->rows, desc->solid};
     const MapError header = tilesweep::validateTileMap(view);
     if (header != MapError::None) return errorOf(header);
     auto* map = new (std::nothrow) typename Types<T>::Map;
@@ -127,8 +138,8 @@ ts_error setSolid(typename Types<T>::Map* map, std::int32_t i, std::int32_t j, i
     if (map == nullptr) return TS_ERROR_NULL_ARGUMENT;
     const auto& v = map->map.view();
     if (i < 0 || j < 0 || i >= v.columns || j >= v.rows) return TS_ERROR_CELL_OUT_OF_RANGE;
-    map->cells[static_cast<std::size_t>(j) * static_cast<std::size_t>(v.columns) + static_cast<std::size_t>(i)] =
-        solid != 0 ? 1 : 0;
+    map->cells[static_cast<std::size_t>(j) * static_cast<std::size_t>(v.columns) +
+               static_cast<std::size_t>(i)] = solid != 0 ? 1 : 0;
     return TS_OK;
 }
 
@@ -157,14 +168,17 @@ ts_error moveOne(const typename Types<T>::Map* map, const typename Types<T>::Mov
         for (std::int32_t k = 0; k < r.contactCount && k < bound; ++k) {
             tilesweep::Contact<T> c;
             std::memcpy(&c, raw + static_cast<std::size_t>(k) * size, size);
-            new (raw + static_cast<std::size_t>(k) * size) ContactC{c.tile.i, c.tile.j, c.normal.x, c.normal.y, c.time};
+            new (raw + static_cast<std::size_t>(k) * size)
+                ContactC{c.tile.i, c.tile.j, c.normal.x, c.normal.y, c.time};
         }
         toResult(r, *result);
         return errorOf(r.status);
     }
     // Otherwise the frame's contacts fit the inline array (or the frame is refused as too wide
     // for the buffer given): copy them out when they fit the caller's capacity.
-    r = tilesweep::moveAndSlide(map->map, input, local, capacity < tilesweep::kInlineContacts ? capacity : tilesweep::kInlineContacts);
+    r = tilesweep::moveAndSlide(
+        map->map, input, local,
+        capacity < tilesweep::kInlineContacts ? capacity : tilesweep::kInlineContacts);
     if (r.contactCount <= capacity)
         for (std::int32_t k = 0; k < r.contactCount; ++k) {
             const tilesweep::Contact<T>& c = local[k];
@@ -191,7 +205,8 @@ void runCBatch(void* context, std::size_t begin, std::size_t end) {
 template <class T>
 ts_error moveBatch(const typename Types<T>::Map* map, const typename Types<T>::Mover* movers,
                    typename Types<T>::Result* results, std::size_t count, ts_pool* pool) noexcept {
-    if (map == nullptr || ((movers == nullptr || results == nullptr) && count > 0)) return TS_ERROR_NULL_ARGUMENT;
+    if (map == nullptr || ((movers == nullptr || results == nullptr) && count > 0))
+        return TS_ERROR_NULL_ARGUMENT;
     CBatch<T> job{&map->map, movers, results};
     if (pool == nullptr)
         runCBatch<T>(&job, 0, count);
@@ -211,22 +226,32 @@ const char* ts_error_message(int error) {
     // An int, not a ts_error: a caller may pass any code, and loading a value outside the
     // enumeration into the enum type would be undefined in C++.
     switch (error) {
-        case TS_OK: return "ok";
-        case TS_ERROR_NULL_ARGUMENT: return "a required pointer argument is NULL";
-        case TS_ERROR_INVALID_INPUT: return "mover: a value is not finite, or a box size is not > 0";
-        case TS_ERROR_MAP_NON_FINITE_ORIGIN: return "map.origin: non-finite value";
-        case TS_ERROR_MAP_NON_POSITIVE_TILE_SIZE: return "map.tile_size: tile sizes must be finite and > 0";
-        case TS_ERROR_MAP_NEGATIVE_DIMENSIONS: return "map: columns and rows must be >= 0, with cells present";
-        case TS_ERROR_MAP_TOO_LARGE: return "map: more than 2147483647 cells";
+        case TS_OK:
+            return "ok";
+        case TS_ERROR_NULL_ARGUMENT:
+            return "a required pointer argument is NULL";
+        case TS_ERROR_INVALID_INPUT:
+            return "mover: a value is not finite, or a box size is not > 0";
+        case TS_ERROR_MAP_NON_FINITE_ORIGIN:
+            return "map.origin: non-finite value";
+        case TS_ERROR_MAP_NON_POSITIVE_TILE_SIZE:
+            return "map.tile_size: tile sizes must be finite and > 0";
+        case TS_ERROR_MAP_NEGATIVE_DIMENSIONS:
+            return "map: columns and rows must be >= 0, with cells present";
+        case TS_ERROR_MAP_TOO_LARGE:
+            return "map: more than 2147483647 cells";
         case TS_ERROR_MAP_UNREPRESENTABLE_EDGE_X:
             return "map.tile_size: a tile edge origin.x + k*tile_size.x is not representable";
         case TS_ERROR_MAP_UNREPRESENTABLE_EDGE_Y:
             return "map.tile_size: a tile edge origin.y + k*tile_size.y is not representable";
         case TS_ERROR_CONTACT_BUFFER_TOO_SMALL:
             return "contacts: this box needs a buffer of ts_max_contacts_* entries";
-        case TS_ERROR_CELL_OUT_OF_RANGE: return "cell: index outside the map";
-        case TS_ERROR_OUT_OF_MEMORY: return "out of memory";
-        case TS_ERROR_THREADS: return "pool: a worker thread could not be started";
+        case TS_ERROR_CELL_OUT_OF_RANGE:
+            return "cell: index outside the map";
+        case TS_ERROR_OUT_OF_MEMORY:
+            return "out of memory";
+        case TS_ERROR_THREADS:
+            return "pool: a worker thread could not be started";
     }
     return "unknown tilesweep error code";
 }
@@ -235,14 +260,20 @@ ts_error ts_map_create_f(const ts_map_desc_f* desc, ts_map_f** out) { return cre
 ts_error ts_map_create_d(const ts_map_desc_d* desc, ts_map_d** out) { return createMap<double>(desc, out); }
 void ts_map_destroy_f(ts_map_f* map) { delete map; }
 void ts_map_destroy_d(ts_map_d* map) { delete map; }
-ts_error ts_map_set_solid_f(ts_map_f* map, int32_t i, int32_t j, int solid) { return setSolid<float>(map, i, j, solid); }
-ts_error ts_map_set_solid_d(ts_map_d* map, int32_t i, int32_t j, int solid) { return setSolid<double>(map, i, j, solid); }
+ts_error ts_map_set_solid_f(ts_map_f* map, int32_t i, int32_t j, int solid) {
+    return setSolid<float>(map, i, j, solid);
+}
+ts_error ts_map_set_solid_d(ts_map_d* map, int32_t i, int32_t j, int solid) {
+    return setSolid<double>(map, i, j, solid);
+}
 
 int32_t ts_max_contacts_f(ts_vec2f box, ts_vec2f tile) {
-    return tilesweep::maxContacts(tilesweep::Vec2<float>{box.x, box.y}, tilesweep::Vec2<float>{tile.x, tile.y});
+    return tilesweep::maxContacts(tilesweep::Vec2<float>{box.x, box.y},
+                                  tilesweep::Vec2<float>{tile.x, tile.y});
 }
 int32_t ts_max_contacts_d(ts_vec2d box, ts_vec2d tile) {
-    return tilesweep::maxContacts(tilesweep::Vec2<double>{box.x, box.y}, tilesweep::Vec2<double>{tile.x, tile.y});
+    return tilesweep::maxContacts(tilesweep::Vec2<double>{box.x, box.y},
+                                  tilesweep::Vec2<double>{tile.x, tile.y});
 }
 
 ts_error ts_move_and_slide_f(const ts_map_f* map, const ts_mover_f* mover, ts_result_f* result,

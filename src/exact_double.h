@@ -17,11 +17,11 @@
 // test keeps every nonzero factor between 2^-149 and 2^122 (products and their errors between
 // 2^-400 and 2^244), far inside both limits.
 
+#include "fault_injection.h"
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-
-#include "fault_injection.h"
 
 namespace tilesweep::detail {
 
@@ -45,7 +45,7 @@ namespace tilesweep::detail {
 /// The order of a*b and c*d when their rounded values p and q are equal: that of the rounding
 /// errors, exactly (see the top of this file).
 [[gnu::noinline, gnu::cold]] inline int compareEqualProducts(double a, double b, double c, double d, double p,
-                                                       double q) noexcept {
+                                                             double q) noexcept {
     const double e = productError(a, b, p);
     const double f = productError(c, d, q);
     return e < f ? -1 : (e > f ? 1 : 0);
@@ -54,7 +54,7 @@ namespace tilesweep::detail {
 /// -1, 0 or 1 as a*b compares with c*d, exactly. `refined` is set when the rounded products
 /// were equal and the exact rounding errors had to settle the order.
 [[nodiscard, gnu::always_inline]] inline int compareProducts(double a, double b, double c, double d,
-                                                                     bool& refined) noexcept {
+                                                             bool& refined) noexcept {
     const double p = a * b;
     const double q = c * d;
     if (p < q) return -1;  // monotonic rounding: the order of the rounded values is exact
@@ -111,12 +111,18 @@ struct ExactPair {
 
 /// The sign of a*s - b*t, exactly, from the eight-term expansion (four TwoProducts), for the
 /// pair comparison below when its filter cannot decide; p = fl(a.hi*s), q = fl(b.hi*t).
-[[gnu::noinline, gnu::cold]] inline int signOfPairProducts(ExactPair a, double s, ExactPair b, double t, double p,
-                                                     double q) noexcept {
+[[gnu::noinline, gnu::cold]] inline int signOfPairProducts(ExactPair a, double s, ExactPair b, double t,
+                                                           double p, double q) noexcept {
     const double p2 = a.lo * s;
     const double q2 = b.lo * t;
-    const double terms[8] = {productError(a.hi, s, p), productError(a.lo, s, p2), -productError(b.hi, t, q),
-                             -productError(b.lo, t, q2), p2, -q2, p, -q};
+    const double terms[8] = {productError(a.hi, s, p),
+                             productError(a.lo, s, p2),
+                             -productError(b.hi, t, q),
+                             -productError(b.lo, t, q2),
+                             p2,
+                             -q2,
+                             p,
+                             -q};
     return signOfSum(terms, 8);
 }
 
@@ -138,7 +144,7 @@ inline constexpr double kPairProductErrorBound = (3.0 + 16.0 * 0x1p-53) * 0x1p-5
 /// is set. The caller's range keeps every product and every TwoProduct error term far from
 /// overflow and underflow.
 [[nodiscard, gnu::always_inline]] inline int compareProducts(ExactPair a, double s, ExactPair b, double t,
-                                                                     bool& refined) noexcept {
+                                                             bool& refined) noexcept {
     if (a.lo == 0 && b.lo == 0) return compareProducts(a.hi, s, b.hi, t, refined);
     const double p = a.hi * s;
     const double q = b.hi * t;

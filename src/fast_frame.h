@@ -42,17 +42,18 @@
 //   - a final position pair is rounded by the direction of its low part, and the amended rule's
 //     grid-line test is filtered; when the filter cannot decide, the frame goes to the lattice.
 
+#include "axis_sweep.h"
+#include "bit_ops.h"
+#include "exact_double.h"
+#include "fault_injection.h"
+
+#include "tilesweep/resolve.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
-
-#include "bit_ops.h"
-#include "axis_sweep.h"
-#include "exact_double.h"
-#include "fault_injection.h"
-#include "tilesweep/resolve.h"
 
 namespace tilesweep::detail {
 
@@ -80,15 +81,15 @@ template <class T>
 [[nodiscard]] inline bool hasValidShape(const SweepInput<T>& in) noexcept {
     const TileMapView<T>& map = in.map;
     const std::int64_t cells = static_cast<std::int64_t>(map.columns) * map.rows;
-    return in.box.size.x > 0 && in.box.size.y > 0 && map.tileSize.x > 0 && map.tileSize.y > 0 && map.columns >= 0 &&
-           map.rows >= 0 && cells <= kMaxCells && (cells == 0 || map.solid != nullptr);
+    return in.box.size.x > 0 && in.box.size.y > 0 && map.tileSize.x > 0 && map.tileSize.y > 0 &&
+           map.columns >= 0 && map.rows >= 0 && cells <= kMaxCells && (cells == 0 || map.solid != nullptr);
 }
 
 /// Whether the fast path holds every value of this float frame exactly (see the top of this
-/// file), which must be valid (hasValidShape): all nonzero inputs normal, C + 2 - G <= 53, and no coordinate near the top of
-/// float's range. A few integer operations on the inputs' exponent fields.
+/// file), which must be valid (hasValidShape): all nonzero inputs normal, C + 2 - G <= 53, and no coordinate
+/// near the top of float's range. A few integer operations on the inputs' exponent fields.
 [[nodiscard]] inline bool admitFloatFrame(const SweepInput<float>& in) noexcept {
-    const float values[10] = {in.box.pos.x,     in.box.pos.y,     in.box.size.x,   in.box.size.y,
+    const float values[10] = {in.box.pos.x,      in.box.pos.y,      in.box.size.x,   in.box.size.y,
                               in.displacement.x, in.displacement.y, in.map.origin.x, in.map.origin.y,
                               in.map.tileSize.x, in.map.tileSize.y};
     int field[10];
@@ -112,7 +113,8 @@ template <class T>
                              32 - countLeadingZeros32(static_cast<std::uint32_t>(in.map.rows) + 2)};
     // |origin + k*tile| < 2^(fo - 126) + 2^(ft - 126 + cellBits) <= 2^(edgeTop - 126)
     int edgeTop = -1000;
-    for (int a = 0; a < 2; ++a) edgeTop = std::max(edgeTop, std::max(field[6 + a], field[8 + a] + cellBits[a]) + 1);
+    for (int a = 0; a < 2; ++a)
+        edgeTop = std::max(edgeTop, std::max(field[6 + a], field[8 + a] + cellBits[a]) + 1);
     // Coordinates: |x| + |w| + |dx| < 2^(boxTop + 2 - 126); an edge minus a size, a grid line
     // next to a box edge: one bit more than the larger.
     const int top = std::max(boxTop + 2, edgeTop) + 1;  // all coordinates below 2^(top - 126)
@@ -128,15 +130,15 @@ template <class T>
 }
 
 /// Whether the double fast path holds every value of this double frame (see the top of this
-/// file), which must be valid (hasValidShape): nonzero inputs in [2^-250, 2^251), so that no product, TwoProduct error term or
-/// filter bound comes near overflow or underflow; every tile edge origin + k*tile with
-/// 0 <= k <= cells + 2 a multiple of 2^g (g the lowest set bit of origin and tile) below
-/// 2^(g + 53), so that k*tile and the sum are exact doubles; |origin| < 2^47 tile, so that a
-/// cell estimate from a rounded quotient is off by less than one cell; and a span of at most
-/// 104 bits between the largest coordinate and the lowest set bit of the box and grid inputs,
-/// so that the far box edge's distances to tile edges come out as exact pairs (farEdgeMinus).
+/// file), which must be valid (hasValidShape): nonzero inputs in [2^-250, 2^251), so that no product,
+/// TwoProduct error term or filter bound comes near overflow or underflow; every tile edge origin + k*tile
+/// with 0 <= k <= cells + 2 a multiple of 2^g (g the lowest set bit of origin and tile) below 2^(g + 53), so
+/// that k*tile and the sum are exact doubles; |origin| < 2^47 tile, so that a cell estimate from a rounded
+/// quotient is off by less than one cell; and a span of at most 104 bits between the largest coordinate and
+/// the lowest set bit of the box and grid inputs, so that the far box edge's distances to tile edges come out
+/// as exact pairs (farEdgeMinus).
 [[nodiscard]] inline bool admitDoubleFrame(const SweepInput<double>& in) noexcept {
-    const double values[10] = {in.box.pos.x,     in.box.pos.y,     in.box.size.x,   in.box.size.y,
+    const double values[10] = {in.box.pos.x,      in.box.pos.y,      in.box.size.x,   in.box.size.y,
                                in.displacement.x, in.displacement.y, in.map.origin.x, in.map.origin.y,
                                in.map.tileSize.x, in.map.tileSize.y};
     int field[10];
@@ -192,23 +194,35 @@ template <class T>
 template <class Coord>
 [[nodiscard]] Coord differenceOf(double a, double b) noexcept;
 template <>
-[[nodiscard]] inline double differenceOf<double>(double a, double b) noexcept { return a - b; }
+[[nodiscard]] inline double differenceOf<double>(double a, double b) noexcept {
+    return a - b;
+}
 template <>
-[[nodiscard]] inline ExactPair differenceOf<ExactPair>(double a, double b) noexcept { return twoSum(a, -b); }
+[[nodiscard]] inline ExactPair differenceOf<ExactPair>(double a, double b) noexcept {
+    return twoSum(a, -b);
+}
 
 template <class Coord>
 [[nodiscard]] Coord sumOf(double a, double b) noexcept;
 template <>
-[[nodiscard]] inline double sumOf<double>(double a, double b) noexcept { return a + b; }
+[[nodiscard]] inline double sumOf<double>(double a, double b) noexcept {
+    return a + b;
+}
 template <>
-[[nodiscard]] inline ExactPair sumOf<ExactPair>(double a, double b) noexcept { return twoSum(a, b); }
+[[nodiscard]] inline ExactPair sumOf<ExactPair>(double a, double b) noexcept {
+    return twoSum(a, b);
+}
 
 template <class Coord>
 [[nodiscard]] Coord coordOf(double a) noexcept;
 template <>
-[[nodiscard]] inline double coordOf<double>(double a) noexcept { return a; }
+[[nodiscard]] inline double coordOf<double>(double a) noexcept {
+    return a;
+}
 template <>
-[[nodiscard]] inline ExactPair coordOf<ExactPair>(double a) noexcept { return {a, 0}; }
+[[nodiscard]] inline ExactPair coordOf<ExactPair>(double a) noexcept {
+    return {a, 0};
+}
 
 /// -1, 0 or 1 as v compares with d, exactly.
 [[nodiscard]] inline int compare(double v, double d) noexcept { return v < d ? -1 : (v > d ? 1 : 0); }
@@ -221,7 +235,9 @@ template <>
 /// Whether two coordinates are the same value represented the same way (a sufficient test of
 /// equality, for the shortcut in compareTimes).
 [[nodiscard]] inline bool identical(double a, double b) noexcept { return a == b; }
-[[nodiscard]] inline bool identical(ExactPair a, ExactPair b) noexcept { return a.hi == b.hi && a.lo == b.lo; }
+[[nodiscard]] inline bool identical(ExactPair a, ExactPair b) noexcept {
+    return a.hi == b.hi && a.lo == b.lo;
+}
 
 /// Whether a*s > b*t for certain (a, b coordinates, s, t >= 0): false may also mean "equal or
 /// could not tell". The walk's early exit; walking on is always harmless.
@@ -247,11 +263,13 @@ struct FastAxis {
     double origin;  ///< map origin
     double tile;    ///< tile size
     std::int64_t cells;
-    double invTile; ///< 1 / tile, rounded: for estimates only
-    double size;    ///< the box size: low + size is the far edge, exactly
+    double invTile;      ///< 1 / tile, rounded: for estimates only
+    double size;         ///< the box size: low + size is the far edge, exactly
     double highLow = 0;  ///< low + size - high, exactly (|highLow| <= ulp(high) / 2)
 
-    [[nodiscard]] double edge(std::int64_t k) const noexcept { return origin + static_cast<double>(k) * tile; }
+    [[nodiscard]] double edge(std::int64_t k) const noexcept {
+        return origin + static_cast<double>(k) * tile;
+    }
 
     /// The far edge minus the tile edge e, exactly: (high - e) + highLow. For double frames,
     /// TwoSum gives high - e = a + b exactly, and then b + highLow is exact too: both are
@@ -293,8 +311,12 @@ struct FastAxis {
     /// Whether the far edge lies above the double v, exactly: when high != v the rounded far
     /// edge is on the same side of v as the exact one (monotonic rounding); when equal, highLow
     /// decides.
-    [[nodiscard]] bool farEdgeAbove(double v) const noexcept { return high > v || (high == v && highLow > 0); }
-    [[nodiscard]] bool farEdgeAtLeast(double v) const noexcept { return high > v || (high == v && highLow >= 0); }
+    [[nodiscard]] bool farEdgeAbove(double v) const noexcept {
+        return high > v || (high == v && highLow > 0);
+    }
+    [[nodiscard]] bool farEdgeAtLeast(double v) const noexcept {
+        return high > v || (high == v && highLow >= 0);
+    }
 
     template <class Coord = double>
     [[nodiscard]] Coord entryDistance(double lo, double hi) const noexcept {
@@ -375,7 +397,8 @@ template <class Coord = double>
     FastTileTest<Coord> miss{TileVerdict::Misses, {coordOf<Coord>(0), 1}};
     if (mx.dir == 0 || my.dir == 0) {
         if (mx.dir == 0 && my.dir == 0) {
-            if (mx.overlapsAtStart(xlo, xhi) && my.overlapsAtStart(ylo, yhi)) miss.verdict = TileVerdict::StartsOverlapping;
+            if (mx.overlapsAtStart(xlo, xhi) && my.overlapsAtStart(ylo, yhi))
+                miss.verdict = TileVerdict::StartsOverlapping;
             return miss;
         }
         const bool xMoves = mx.dir != 0;
@@ -401,7 +424,8 @@ template <class Coord = double>
         return miss;
     }
 #if defined(TILESWEEP_FAULT_END_INCLUSIVE)
-    if (compare(ex, mx.speed) > 0 || compare(ey, my.speed) > 0) return miss;  // deliberate fault: t = 1 blocks
+    if (compare(ex, mx.speed) > 0 || compare(ey, my.speed) > 0)
+        return miss;  // deliberate fault: t = 1 blocks
 #else
     if (compare(ex, mx.speed) >= 0 || compare(ey, my.speed) >= 0) return miss;  // E >= 1
 #endif
@@ -453,7 +477,7 @@ template <class Coord = double>
 #if defined(TILESWEEP_FAULT_TIME_TIES_AWAY)
         out = roundToFloat(q, true);  // deliberate fault: an exact halfway time rounded away
 #else
-        out = static_cast<float>(q);  // exactly the midpoint: ties to even
+        out = static_cast<float>(q);                      // exactly the midpoint: ties to even
 #endif
     }
     return true;
@@ -470,7 +494,8 @@ template <class Coord = double>
 /// R~ = fl(fl(d - e) + lo), d = hi - p, within (2u + u^2)(|d| + |e| + |lo|) of R; the bound,
 /// computed as fl(3u fl(fl(|d| + |e|) + |lo|)), exceeds that. Inside it the sign of the exact
 /// five-term sum decides (Filtered). q moves by one ulp at a time (it starts within two).
-[[nodiscard]] inline bool roundTimeToDouble(const FastTime<ExactPair>& t, bool& refined, double& out) noexcept {
+[[nodiscard]] inline bool roundTimeToDouble(const FastTime<ExactPair>& t, bool& refined,
+                                            double& out) noexcept {
     double q = t.num.hi / t.den + 0.0;  // -0 reads +0
     if (t.num.lo == 0) {
         out = q;
@@ -521,8 +546,8 @@ template <class Coord = double>
         if (above == 0) q = stepDouble(q, true);  // deliberate fault: an exact halfway time rounded away
         (void)odd;
 #else
-        if (above == 0 && odd) q = stepDouble(q, true);        // halfway to the even one above
-        if (below == 0 && odd) q = stepDouble(q, false);       // halfway to the even one below
+        if (above == 0 && odd) q = stepDouble(q, true);   // halfway to the even one above
+        if (below == 0 && odd) q = stepDouble(q, false);  // halfway to the even one below
 #endif
         out = q;
         return true;
@@ -540,10 +565,10 @@ public:
     using Coord = std::conditional_t<std::is_same<T, float>::value, double, ExactPair>;
 
     explicit FastFrame(const SweepInput<T>& in) noexcept : map_(in.map) {
-        axis_[0] = makeAxis(in.box.pos.x, in.box.size.x, in.displacement.x, in.map.origin.x, in.map.tileSize.x,
-                            in.map.columns);
-        axis_[1] = makeAxis(in.box.pos.y, in.box.size.y, in.displacement.y, in.map.origin.y, in.map.tileSize.y,
-                            in.map.rows);
+        axis_[0] = makeAxis(in.box.pos.x, in.box.size.x, in.displacement.x, in.map.origin.x,
+                            in.map.tileSize.x, in.map.columns);
+        axis_[1] = makeAxis(in.box.pos.y, in.box.size.y, in.displacement.y, in.map.origin.y,
+                            in.map.tileSize.y, in.map.rows);
         start_[0] = in.box.pos.x;
         start_[1] = in.box.pos.y;
     }
@@ -560,7 +585,8 @@ public:
             result.status = Status::Moved;
             return true;
         }
-        Coord finalPos[2] = {sumOf<Coord>(axis_[0].low, axis_[0].disp), sumOf<Coord>(axis_[1].low, axis_[1].disp)};
+        Coord finalPos[2] = {sumOf<Coord>(axis_[0].low, axis_[0].disp),
+                             sumOf<Coord>(axis_[1].low, axis_[1].disp)};
         Hits first{out.contacts, std::max<std::int32_t>(out.contactCapacity, 0)};
         if (axis_[0].dir != 0 && axis_[1].dir != 0) {
             if (nearOnly) {
@@ -590,8 +616,8 @@ public:
                 const std::int32_t used = std::min(first.count, first.capacity);
                 Hits second{out.contacts + used, first.capacity - used};
                 if (nearOnly) {
-                    sweepOneAxisNear(free, touchLow(held, first.touch[held]), touchHigh(held, first.touch[held]),
-                                     first.time, second);
+                    sweepOneAxisNear(free, touchLow(held, first.touch[held]),
+                                     touchHigh(held, first.touch[held]), first.time, second);
                 } else {
                     sweepOneAxis(free, touchLow(held, first.touch[held]), touchHigh(held, first.touch[held]),
                                  first.time, second);
@@ -805,7 +831,8 @@ private:
                     rowChecked = true;
                 }
                 if (!gx.overlapsAtStart(gx.edge(i), gx.edge(i + 1))) continue;
-                if (count < capacity) store[count] = {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)};
+                if (count < capacity)
+                    store[count] = {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)};
                 ++count;
             }
         }
@@ -841,7 +868,8 @@ private:
         const double bound = kSecondaryRangeErrorUlps;
 #endif
         const double margin = bound * 0x1p-53 *
-                              (std::fabs(ms.low) + std::fabs(ms.high) + ms.speed + std::fabs(ms.origin)) * ms.invTile;
+                              (std::fabs(ms.low) + std::fabs(ms.high) + ms.speed + std::fabs(ms.origin)) *
+                              ms.invTile;
         const double slope = ms.disp / mp.speed;  // secondary motion per unit of primary distance
         for (std::int64_t k = firstCellAhead(p); k >= 0 && k < mp.cells; k += mp.dir) {
             const double lo = mp.edge(k);
@@ -880,9 +908,14 @@ private:
         Axis axis = Axis::Y;
         switch (test.verdict) {
             case TileVerdict::Misses:
-            case TileVerdict::StartsOverlapping: return;
-            case TileVerdict::BlocksOnX: axis = Axis::X; break;
-            case TileVerdict::BlocksOnY: axis = Axis::Y; break;
+            case TileVerdict::StartsOverlapping:
+                return;
+            case TileVerdict::BlocksOnX:
+                axis = Axis::X;
+                break;
+            case TileVerdict::BlocksOnY:
+                axis = Axis::Y;
+                break;
             case TileVerdict::Tie: {
                 const bool xExposed = !map_.isSolid(i - mx.dir, j);
                 const bool yExposed = !map_.isSolid(i, j - my.dir);
@@ -896,7 +929,8 @@ private:
     }
 
     /// FrameSolver::sweepOneAxis on exact coordinates.
-    void sweepOneAxis(int axis, Coord heldLow, Coord heldHigh, const FastTime<Coord>& from, Hits& hits) noexcept {
+    void sweepOneAxis(int axis, Coord heldLow, Coord heldHigh, const FastTime<Coord>& from,
+                      Hits& hits) noexcept {
         const FastAxis& ga = axis_[axis];
         const FastAxis& go = axis_[1 - axis];
         const std::int64_t j0 = std::max<std::int64_t>(go.cellOf(heldLow), 0);
@@ -948,10 +982,12 @@ private:
             const FastAxis& g = axis_[a];
             const double lowEnd = std::min(g.low, g.low + g.disp);
             const double highEnd = std::max(g.high, g.high + g.disp);
-            const double margin =
-                0x1p-50 * (((std::fabs(g.low) + std::fabs(g.high)) + g.speed) + std::fabs(g.origin)) * g.invTile;
+            const double margin = 0x1p-50 *
+                                  (((std::fabs(g.low) + std::fabs(g.high)) + g.speed) + std::fabs(g.origin)) *
+                                  g.invTile;
             from[a] = std::max<std::int64_t>(g.clampCell((lowEnd - g.origin) * g.invTile - margin), 0);
-            to[a] = std::min<std::int64_t>(g.clampCell((highEnd - g.origin) * g.invTile + margin), g.cells - 1);
+            to[a] =
+                std::min<std::int64_t>(g.clampCell((highEnd - g.origin) * g.invTile + margin), g.cells - 1);
             if (from[a] > to[a]) {
                 nearCount_ = 0;  // the swept bounds miss the map: nothing to find
                 return true;
@@ -992,7 +1028,8 @@ private:
     /// sweepOneAxis over the listed cells: the tiles overlapping the held span whose entry time
     /// on `axis` lies in [from, 1), at the earliest such time (the walk's first column that has
     /// any: entry times grow strictly along the motion).
-    void sweepOneAxisNear(int axis, Coord heldLow, Coord heldHigh, const FastTime<Coord>& from, Hits& hits) noexcept {
+    void sweepOneAxisNear(int axis, Coord heldLow, Coord heldHigh, const FastTime<Coord>& from,
+                          Hits& hits) noexcept {
         const FastAxis& ga = axis_[axis];
         const FastAxis& go = axis_[1 - axis];
         for (std::int32_t n = 0; n < nearCount_; ++n) {

@@ -10,12 +10,12 @@
 // settle) returns false and the caller runs the full resolver. Results are bit-identical to
 // resolveMove's (tests/mover_test.cpp compares them over random scenes).
 
+#include "tilesweep/math.h"
+#include "tilesweep/tile_map.h"
+
 #include <cmath>
 #include <cstdint>
 #include <limits>
-
-#include "tilesweep/math.h"
-#include "tilesweep/tile_map.h"
 
 namespace tilesweep::detail {
 

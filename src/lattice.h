@@ -15,15 +15,15 @@
 // and products twice that; a frame picks the narrowest WideInt that holds them (resolve.cpp).
 // Typical game scenes (positions below 2^20, fractions down to 2^-30) take the 128-bit tier.
 
+#include "bit_ops.h"
+#include "fault_injection.h"
+#include "wide_int.h"
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
 #include <type_traits>
-
-#include "bit_ops.h"
-#include "fault_injection.h"
-#include "wide_int.h"
 
 namespace tilesweep::detail {
 
@@ -38,8 +38,8 @@ struct Dyadic {
 template <class T>
 [[nodiscard]] inline Dyadic decompose(T v) noexcept {
     static_assert(std::numeric_limits<T>::is_iec559, "IEEE 754 binary formats only");
-    constexpr int p = std::numeric_limits<T>::digits;                 // 24 or 53
-    constexpr int bias = std::numeric_limits<T>::max_exponent - 1;   // 127 or 1023
+    constexpr int p = std::numeric_limits<T>::digits;               // 24 or 53
+    constexpr int bias = std::numeric_limits<T>::max_exponent - 1;  // 127 or 1023
     using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
     Bits bits = 0;
     std::memcpy(&bits, &v, sizeof bits);
@@ -60,8 +60,8 @@ template <class T>
 /// The exponent just above a dyadic's magnitude: |value| < 2^result (very negative for zero).
 [[nodiscard]] inline int exponentAbove(Dyadic d) noexcept {
     if (d.mantissa == 0) return std::numeric_limits<int>::min() / 2;  // clz(0) is undefined
-    const std::uint64_t mag = d.mantissa < 0 ? 0 - static_cast<std::uint64_t>(d.mantissa)
-                                             : static_cast<std::uint64_t>(d.mantissa);
+    const std::uint64_t mag =
+        d.mantissa < 0 ? 0 - static_cast<std::uint64_t>(d.mantissa) : static_cast<std::uint64_t>(d.mantissa);
     return d.exponent + 64 - countLeadingZeros64(mag);
 }
 
@@ -86,9 +86,9 @@ template <class T>
                                       MagnitudeRounding mode) noexcept {
     constexpr int p = std::numeric_limits<T>::digits;
     constexpr int lowestExponent = std::numeric_limits<T>::min_exponent - p;  // of the least subnormal
-    if (mantissa == 0) return mode == MagnitudeRounding::AwayFromZero && sticky
-                                  ? std::numeric_limits<T>::denorm_min()
-                                  : T(0);
+    if (mantissa == 0)
+        return mode == MagnitudeRounding::AwayFromZero && sticky ? std::numeric_limits<T>::denorm_min()
+                                                                 : T(0);
     const int top = 63 - countLeadingZeros64(mantissa);
     int keepFrom = top - (p - 1);  // bit index of the result's least significant bit
     if (keepFrom + exponent < lowestExponent) keepFrom = lowestExponent - exponent;
@@ -100,12 +100,17 @@ template <class T>
         // (A sticky tail with no dropped mantissa bits only happens when the caller broke the
         // precondition; rounding toward zero or to nearest then keeps the mantissa.)
     } else {
-        const std::uint64_t dropped = keepFrom >= 64 ? mantissa : mantissa & ((std::uint64_t{1} << keepFrom) - 1);
+        const std::uint64_t dropped =
+            keepFrom >= 64 ? mantissa : mantissa & ((std::uint64_t{1} << keepFrom) - 1);
         kept = keepFrom >= 64 ? 0 : mantissa >> keepFrom;
         const bool inexact = dropped != 0 || sticky;
         switch (mode) {
-            case MagnitudeRounding::TowardZero: up = false; break;
-            case MagnitudeRounding::AwayFromZero: up = inexact; break;
+            case MagnitudeRounding::TowardZero:
+                up = false;
+                break;
+            case MagnitudeRounding::AwayFromZero:
+                up = inexact;
+                break;
             case MagnitudeRounding::NearestEven: {
                 const std::uint64_t half = keepFrom > 64 ? 0 : std::uint64_t{1} << (keepFrom - 1);
                 if (keepFrom > 64) {
@@ -219,7 +224,9 @@ struct LatticeShape {
 }
 
 /// Bit length of a non-negative count (0 for 0).
-[[nodiscard]] inline int bitLength(std::uint64_t n) noexcept { return n == 0 ? 0 : 64 - countLeadingZeros64(n); }
+[[nodiscard]] inline int bitLength(std::uint64_t n) noexcept {
+    return n == 0 ? 0 : 64 - countLeadingZeros64(n);
+}
 
 }  // namespace tilesweep::detail
 

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "tilesweep/mover.h"
 
+#include "free_move.h"
+
 #include <cmath>
 #include <limits>
-
-#include "free_move.h"
 
 // The game-loop calls: prepareMap, maxContacts and moveAndSlide, over resolveMove.
 
@@ -12,13 +12,18 @@ namespace tilesweep {
 namespace {
 
 template <class T>
-bool isFinite(Vec2<T> v) noexcept { return std::isfinite(v.x) && std::isfinite(v.y); }
+bool isFinite(Vec2<T> v) noexcept {
+    return std::isfinite(v.x) && std::isfinite(v.y);
+}
 
 template <class T>
-bool isPositive(Vec2<T> v) noexcept { return isFinite(v) && v.x > 0 && v.y > 0; }
+bool isPositive(Vec2<T> v) noexcept {
+    return isFinite(v) && v.x > 0 && v.y > 0;
+}
 
 template <class T>
-void prepare(const TileMapView<T>& map, MapError& error, Vec2<double>& inverse, TileMapView<T>& view) noexcept {
+void prepare(const TileMapView<T>& map, MapError& error, Vec2<double>& inverse,
+             TileMapView<T>& view) noexcept {
     error = validateTileMap(map);
     view = map;
     if (error == MapError::None)
@@ -75,8 +80,8 @@ MoveResult<T> moveAndSlideOf(const PreparedMap<T>& map, const MoveInput<T>& inpu
         buffer = local;
         bufferCapacity = kInlineContacts;
     }
-    const SweepResult<T> s =
-        resolveMove(SweepInput<T>{map.view(), input.box, input.displacement}, ResolveOutput<T>{buffer, bufferCapacity});
+    const SweepResult<T> s = resolveMove(SweepInput<T>{map.view(), input.box, input.displacement},
+                                         ResolveOutput<T>{buffer, bufferCapacity});
     if (s.status == Status::InvalidInput) return refuse(input, MoveStatus::InvalidInput);
     r.position = s.position;
     r.status = s.status == Status::Blocked ? MoveStatus::Blocked : MoveStatus::Moved;

@@ -1,11 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "tilesweep/resolve.h"
 
-#include <algorithm>
-#include <cmath>
-#include <cstdint>
-#include <type_traits>
-
 #include "axis_sweep.h"
 #include "decision_path.h"
 #include "fast_frame.h"
@@ -13,6 +8,11 @@
 #include "lattice.h"
 #include "wide_int.h"
 #include "zero_move.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <type_traits>
 
 // Move-and-slide over the tile grid: the frame loop of CONTRACT.md ("One frame through a map").
 //
@@ -73,7 +73,9 @@ struct GridAxis {
         while (q < cells && b * (q + 1) <= a) ++q;
         return q;
     }
-    [[nodiscard]] std::int64_t cellOf(const Num& coord) const noexcept { return cellOf(coord, Num::fromInt(1)); }
+    [[nodiscard]] std::int64_t cellOf(const Num& coord) const noexcept {
+        return cellOf(coord, Num::fromInt(1));
+    }
 
     /// Whether a grid line origin + k*tile (k any integer, on the map or off it) lies in
     /// [low, high). One exact remainder; the map is not scanned.
@@ -91,13 +93,13 @@ struct GridAxis {
 /// The hits of one step: all tiles at the earliest time of impact found so far.
 template <class T, class Num>
 struct StepHits {
-    Contact<T>* store;         ///< caller's buffer, from the first slot this step may use
-    std::int32_t capacity;     ///< slots available from `store`
-    std::int32_t count = 0;    ///< hits at `time`, stored or not
+    Contact<T>* store;       ///< caller's buffer, from the first slot this step may use
+    std::int32_t capacity;   ///< slots available from `store`
+    std::int32_t count = 0;  ///< hits at `time`, stored or not
     bool any = false;
     Fraction<Num> time{};
     bool axisHit[2] = {false, false};
-    Num touch[2]{};            ///< box position that touches the hit face, per contact axis
+    Num touch[2]{};  ///< box position that touches the hit face, per contact axis
 
     /// Whether a tile entered at `t` could still be among the hits (not later than them).
     [[nodiscard]] bool mayHitAt(const Fraction<Num>& t) const noexcept {
@@ -199,8 +201,8 @@ private:
         (void)towardMinusInf;
         (void)negative;
 #else
-        const MagnitudeRounding mode = towardMinusInf != negative ? MagnitudeRounding::TowardZero
-                                                                 : MagnitudeRounding::AwayFromZero;
+        const MagnitudeRounding mode =
+            towardMinusInf != negative ? MagnitudeRounding::TowardZero : MagnitudeRounding::AwayFromZero;
 #endif
         return detail::roundLattice<T>(exact, exponent_, mode);
     }
@@ -244,7 +246,8 @@ private:
             if (!motion_[1].overlapsAtStart(gy.edge(j), gy.edge(j + 1))) continue;
             for (std::int64_t i = i0; i <= i1; ++i) {
                 if (!map_.isSolid(i, j) || !motion_[0].overlapsAtStart(gx.edge(i), gx.edge(i + 1))) continue;
-                if (count < capacity) store[count] = {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)};
+                if (count < capacity)
+                    store[count] = {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)};
                 ++count;
             }
         }
@@ -276,7 +279,8 @@ private:
     void sweepBothAxes(StepHits<T, Num>& hits) const noexcept {
         // Primary: the axis whose motion crosses more cells, |d_x| / tile_x > |d_y| / tile_y,
         // so that each primary cell is crossed in a short time and spans few secondary cells.
-        const int p = compare(motion_[0].speed * grid_[1].tile, motion_[1].speed * grid_[0].tile) >= 0 ? 0 : 1;
+        const int p =
+            compare(motion_[0].speed * grid_[1].tile, motion_[1].speed * grid_[0].tile) >= 0 ? 0 : 1;
         const int s = 1 - p;
         const GridAxis<Num>& gp = grid_[p];
         const GridAxis<Num>& gs = grid_[s];
@@ -318,14 +322,19 @@ private:
     void testAndRecord(std::int64_t i, std::int64_t j, StepHits<T, Num>& hits) const noexcept {
         const GridAxis<Num>& gx = grid_[0];
         const GridAxis<Num>& gy = grid_[1];
-        const auto test = detail::testTile(motion_[0], motion_[1], gx.edge(i), gx.edge(i + 1),
-                                           gy.edge(j), gy.edge(j + 1));
+        const auto test =
+            detail::testTile(motion_[0], motion_[1], gx.edge(i), gx.edge(i + 1), gy.edge(j), gy.edge(j + 1));
         Axis axis = Axis::Y;
         switch (test.verdict) {
             case TileVerdict::Misses:
-            case TileVerdict::StartsOverlapping: return;
-            case TileVerdict::BlocksOnX: axis = Axis::X; break;
-            case TileVerdict::BlocksOnY: axis = Axis::Y; break;
+            case TileVerdict::StartsOverlapping:
+                return;
+            case TileVerdict::BlocksOnX:
+                axis = Axis::X;
+                break;
+            case TileVerdict::BlocksOnY:
+                axis = Axis::Y;
+                break;
             case TileVerdict::Tie: {
                 // The cell across the face approached on each axis.
                 const bool xExposed = !map_.isSolid(i - motion_[0].dir, j);
@@ -398,11 +407,11 @@ template <class T>
 SweepResult<T> solveOnLattice(const SweepInput<T>& in, const ResolveOutput<T>& out) noexcept {
     using detail::decompose;
     using detail::exponentAbove;
-    const detail::Dyadic d[10] = {decompose(in.box.pos.x),       decompose(in.box.pos.y),
-                                  decompose(in.box.size.x),      decompose(in.box.size.y),
-                                  decompose(in.displacement.x),  decompose(in.displacement.y),
-                                  decompose(in.map.origin.x),    decompose(in.map.origin.y),
-                                  decompose(in.map.tileSize.x),  decompose(in.map.tileSize.y)};
+    const detail::Dyadic d[10] = {decompose(in.box.pos.x),      decompose(in.box.pos.y),
+                                  decompose(in.box.size.x),     decompose(in.box.size.y),
+                                  decompose(in.displacement.x), decompose(in.displacement.y),
+                                  decompose(in.map.origin.x),   decompose(in.map.origin.y),
+                                  decompose(in.map.tileSize.x), decompose(in.map.tileSize.y)};
     // Every coordinate the frame forms is below 2^top: box edges at the start and the end (a sum
     // of three inputs, so 2 bits above the largest) and tile edges from one cell before the map
     // to one past it (origin + k*tile with |k| <= cells + 2).
@@ -424,7 +433,8 @@ template <class T>
 #if defined(__GNUC__)
 __attribute__((noinline))
 #endif
-SweepResult<T> resolveMoving(const SweepInput<T>& input, const ResolveOutput<T>& output) noexcept {
+SweepResult<T>
+resolveMoving(const SweepInput<T>& input, const ResolveOutput<T>& output) noexcept {
     // The fast path, when the range test admits the frame (fast_frame.h): float frames on exact
     // doubles, double frames on exact pairs under a certified filter. The range test implies
     // the frame is valid, so isValid only runs for the frames it turns away.
@@ -445,7 +455,8 @@ SweepResult<T> resolveMoving(const SweepInput<T>& input, const ResolveOutput<T>&
         SweepResult<T> invalid;
         invalid.status = Status::InvalidInput;
         invalid.position = input.box.pos;
-        if (!std::isfinite(invalid.position.x) || !std::isfinite(invalid.position.y)) invalid.position = {0, 0};
+        if (!std::isfinite(invalid.position.x) || !std::isfinite(invalid.position.y))
+            invalid.position = {0, 0};
         lastPath = detail::DecisionPath::Exact;
         return invalid;
     }
@@ -472,7 +483,9 @@ namespace detail {
 DecisionPath lastDecisionPath() noexcept { return lastPath; }
 }  // namespace detail
 
-template SweepResult<float> resolveMove<float>(const SweepInput<float>&, const ResolveOutput<float>&) noexcept;
-template SweepResult<double> resolveMove<double>(const SweepInput<double>&, const ResolveOutput<double>&) noexcept;
+template SweepResult<float> resolveMove<float>(const SweepInput<float>&,
+                                               const ResolveOutput<float>&) noexcept;
+template SweepResult<double> resolveMove<double>(const SweepInput<double>&,
+                                                 const ResolveOutput<double>&) noexcept;
 
 }  // namespace tilesweep

@@ -59,13 +59,20 @@ MapError validateTileMap(const TileMapView<T>& map, std::int64_t* firstBadEdge) 
 
 const char* describe(MapError error) noexcept {
     switch (error) {
-        case MapError::None: return "valid";
-        case MapError::NonFiniteOrigin: return "map.origin: non-finite value";
-        case MapError::NonPositiveTileSize: return "map.tile: tile sizes must be finite and > 0";
-        case MapError::NegativeDimensions: return "map.rows: dimensions must be >= 0 with cells present";
-        case MapError::TooLarge: return "map.rows: more cells than kMaxCells";
-        case MapError::UnrepresentableEdgeX: return "map.tile: a tile edge on x is not representable";
-        case MapError::UnrepresentableEdgeY: return "map.tile: a tile edge on y is not representable";
+        case MapError::None:
+            return "valid";
+        case MapError::NonFiniteOrigin:
+            return "map.origin: non-finite value";
+        case MapError::NonPositiveTileSize:
+            return "map.tile: tile sizes must be finite and > 0";
+        case MapError::NegativeDimensions:
+            return "map.rows: dimensions must be >= 0 with cells present";
+        case MapError::TooLarge:
+            return "map.rows: more cells than kMaxCells";
+        case MapError::UnrepresentableEdgeX:
+            return "map.tile: a tile edge on x is not representable";
+        case MapError::UnrepresentableEdgeY:
+            return "map.tile: a tile edge on y is not representable";
     }
     return "unknown map error";
 }

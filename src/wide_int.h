@@ -9,15 +9,16 @@
 // overflow (the caller guarantees it; TILESWEEP_ASSERT-style checks would cost the hot path).
 // No allocation: the limbs live in the object.
 
+#include "bit_ops.h"
+
 #include <cmath>
 #include <cstdint>
-
-#include "bit_ops.h"
 
 // 128-bit helpers: the compiler's __int128 on GCC and Clang; with TILESWEEP_PORTABLE_INTEGERS
 // defined, or on any other compiler (MSVC), two 64-bit limbs with the same operators, so that
 // WideInt, Int128 and their callers compile unchanged on any C++17 compiler.
-#if !defined(TILESWEEP_PORTABLE_INTEGERS) && (defined(__GNUC__) || defined(__clang__)) && defined(__SIZEOF_INT128__)
+#if !defined(TILESWEEP_PORTABLE_INTEGERS) && (defined(__GNUC__) || defined(__clang__)) && \
+    defined(__SIZEOF_INT128__)
 #define TILESWEEP_HAVE_NATIVE_INT128 1
 #endif
 
@@ -68,12 +69,18 @@ struct Uint128 {
         if (s >= 64) return {0, a.hi >> (s - 64), true};
         return {a.hi >> s, (a.lo >> s) | (a.hi << (64 - s)), true};
     }
-    friend constexpr Uint128 operator&(Uint128 a, Uint128 b) noexcept { return {a.hi & b.hi, a.lo & b.lo, true}; }
-    friend constexpr Uint128 operator|(Uint128 a, Uint128 b) noexcept { return {a.hi | b.hi, a.lo | b.lo, true}; }
+    friend constexpr Uint128 operator&(Uint128 a, Uint128 b) noexcept {
+        return {a.hi & b.hi, a.lo & b.lo, true};
+    }
+    friend constexpr Uint128 operator|(Uint128 a, Uint128 b) noexcept {
+        return {a.hi | b.hi, a.lo | b.lo, true};
+    }
     friend constexpr Uint128 operator~(Uint128 a) noexcept { return {~a.hi, ~a.lo, true}; }
     friend constexpr bool operator==(Uint128 a, Uint128 b) noexcept { return a.hi == b.hi && a.lo == b.lo; }
     friend constexpr bool operator!=(Uint128 a, Uint128 b) noexcept { return !(a == b); }
-    friend constexpr bool operator<(Uint128 a, Uint128 b) noexcept { return a.hi != b.hi ? a.hi < b.hi : a.lo < b.lo; }
+    friend constexpr bool operator<(Uint128 a, Uint128 b) noexcept {
+        return a.hi != b.hi ? a.hi < b.hi : a.lo < b.lo;
+    }
     friend constexpr bool operator>(Uint128 a, Uint128 b) noexcept { return b < a; }
     friend constexpr bool operator<=(Uint128 a, Uint128 b) noexcept { return !(b < a); }
     friend constexpr bool operator>=(Uint128 a, Uint128 b) noexcept { return !(a < b); }
@@ -127,11 +134,21 @@ struct Int128Native {
 
     [[nodiscard]] constexpr bool isNegative() const noexcept { return (bits.hi >> 63) != 0; }
 
-    friend constexpr Int128Native operator+(Int128Native a, Int128Native b) noexcept { return Int128Native(a.bits + b.bits); }
-    friend constexpr Int128Native operator-(Int128Native a, Int128Native b) noexcept { return Int128Native(a.bits - b.bits); }
-    friend constexpr Int128Native operator-(Int128Native a) noexcept { return Int128Native(Uint128{} - a.bits); }
-    friend constexpr Int128Native operator*(Int128Native a, Int128Native b) noexcept { return Int128Native(a.bits * b.bits); }
-    friend constexpr Int128Native operator<<(Int128Native a, int s) noexcept { return Int128Native(a.bits << s); }
+    friend constexpr Int128Native operator+(Int128Native a, Int128Native b) noexcept {
+        return Int128Native(a.bits + b.bits);
+    }
+    friend constexpr Int128Native operator-(Int128Native a, Int128Native b) noexcept {
+        return Int128Native(a.bits - b.bits);
+    }
+    friend constexpr Int128Native operator-(Int128Native a) noexcept {
+        return Int128Native(Uint128{} - a.bits);
+    }
+    friend constexpr Int128Native operator*(Int128Native a, Int128Native b) noexcept {
+        return Int128Native(a.bits * b.bits);
+    }
+    friend constexpr Int128Native operator<<(Int128Native a, int s) noexcept {
+        return Int128Native(a.bits << s);
+    }
     friend constexpr Int128Native operator/(Int128Native a, Int128Native b) noexcept {
         Uint128 r;
         const Uint128 q = Uint128::divide(a.magnitudeBits(), b.magnitudeBits(), r);
@@ -154,7 +171,9 @@ struct Int128Native {
     friend constexpr bool operator!=(Int128Native a, Int128Native b) noexcept { return a.bits != b.bits; }
 
 private:
-    [[nodiscard]] constexpr Uint128 magnitudeBits() const noexcept { return isNegative() ? Uint128{} - bits : bits; }
+    [[nodiscard]] constexpr Uint128 magnitudeBits() const noexcept {
+        return isNegative() ? Uint128{} - bits : bits;
+    }
 };
 #endif
 
@@ -174,7 +193,8 @@ struct WideInt {
     /// The value m * 2^shift, for shift >= 0 (shift < 64*N - 64).
     static WideInt fromShifted(std::int64_t m, int shift) noexcept {
         const bool negative = m < 0;
-        const std::uint64_t mag = negative ? 0 - static_cast<std::uint64_t>(m) : static_cast<std::uint64_t>(m);
+        const std::uint64_t mag =
+            negative ? 0 - static_cast<std::uint64_t>(m) : static_cast<std::uint64_t>(m);
         WideInt r = fromInt(0);
         const int word = shift / 64;
         const int bit = shift % 64;
@@ -366,7 +386,9 @@ struct Int128 {
         if (hi != 0) return 127 - countLeadingZeros64(hi);
         return lo != 0 ? 63 - countLeadingZeros64(lo) : -1;
     }
-    [[nodiscard]] Int128 shiftedLeft(int bits) const noexcept { return {static_cast<Int128Native>(static_cast<Uint128>(v) << bits)}; }
+    [[nodiscard]] Int128 shiftedLeft(int bits) const noexcept {
+        return {static_cast<Int128Native>(static_cast<Uint128>(v) << bits)};
+    }
     [[nodiscard]] std::uint64_t bitsFrom(int from, bool& lowerBitsSet) const noexcept {
         const auto u = static_cast<Uint128>(v);
         lowerBitsSet = from > 0 && (u & ((static_cast<Uint128>(1) << from) - 1)) != 0;

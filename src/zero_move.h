@@ -22,12 +22,13 @@
 // settles it exactly. Float inputs are widened to double (exactly) and take the
 // same test. Inputs must be valid (finite, sizes > 0); estimates beyond +-2^52 are undecided.
 
+#include "exact_double.h"
+
+#include "tilesweep/resolve.h"
+
 #include <cmath>
 #include <cstdint>
 #include <limits>
-
-#include "exact_double.h"
-#include "tilesweep/resolve.h"
 
 namespace tilesweep::detail {
 
@@ -53,8 +54,9 @@ namespace tilesweep::detail {
 #if defined(__GNUC__)
 __attribute__((noinline, cold))
 #endif
-inline bool settleOnLine(double x, double w, double o, double t, double a, double b, double ql, double qh,
-                         double rl, double rh, double el, double eh, std::int64_t& last) noexcept {
+inline bool
+settleOnLine(double x, double w, double o, double t, double a, double b, double ql, double qh, double rl,
+             double rh, double el, double eh, std::int64_t& last) noexcept {
     const bool exactA = twoSum(x, -o).lo == 0;
     if (!(rl > el && rl < 1 - el) && !(rl == 0 && exactA && isExactQuotient(a, t, ql))) return false;
     // x on line n: cell n = floor(ql) is the first whose interior meets the box's, as found.
@@ -76,8 +78,9 @@ inline bool settleOnLine(double x, double w, double o, double t, double a, doubl
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-inline bool zeroMoveCells(double x, double w, double o, double t, std::int64_t cells, std::int64_t& from,
-                          std::int64_t& to) noexcept {
+inline bool
+zeroMoveCells(double x, double w, double o, double t, std::int64_t cells, std::int64_t& from,
+              std::int64_t& to) noexcept {
     const double a = x - o;
     const double b = a + w;
     const double ql = a / t;
@@ -109,7 +112,8 @@ template <class T>
     const TileMapView<T>& map = in.map;
     const T x = in.box.pos.x, y = in.box.pos.y, w = in.box.size.x, h = in.box.size.y;
     const T ox = map.origin.x, oy = map.origin.y, tx = map.tileSize.x, ty = map.tileSize.y;
-    const T finite = ((x - x) + (y - y)) + ((w - w) + (h - h)) + ((ox - ox) + (oy - oy)) + ((tx - tx) + (ty - ty));
+    const T finite =
+        ((x - x) + (y - y)) + ((w - w) + (h - h)) + ((ox - ox) + (oy - oy)) + ((tx - tx) + (ty - ty));
     const std::int64_t cells = static_cast<std::int64_t>(map.columns) * map.rows;
     return finite == 0 && w > 0 && h > 0 && tx > 0 && ty > 0 && map.columns >= 0 && map.rows >= 0 &&
            cells <= kMaxCells && (cells == 0 || map.solid != nullptr);
@@ -127,9 +131,11 @@ template <class T>
     std::int64_t j0 = 0;
     std::int64_t j1 = 0;
     if (!zeroMoveCells(static_cast<double>(in.box.pos.x), static_cast<double>(in.box.size.x),
-                       static_cast<double>(map.origin.x), static_cast<double>(map.tileSize.x), map.columns, i0, i1) ||
+                       static_cast<double>(map.origin.x), static_cast<double>(map.tileSize.x), map.columns,
+                       i0, i1) ||
         !zeroMoveCells(static_cast<double>(in.box.pos.y), static_cast<double>(in.box.size.y),
-                       static_cast<double>(map.origin.y), static_cast<double>(map.tileSize.y), map.rows, j0, j1))
+                       static_cast<double>(map.origin.y), static_cast<double>(map.tileSize.y), map.rows, j0,
+                       j1))
         return false;
     std::int32_t count = 0;
     for (std::int64_t j = j0; j <= j1; ++j) {

@@ -3,15 +3,17 @@
 // exactly what moveAndSlide and resolveMove give it alone, bit for bit, over random maps and
 // movers (tests/mover_scenes.h). TILESWEEP_PROPERTY_CASES sets the number of maps (default 300,
 // 500 movers each).
+#include "tilesweep/batch.h"
+
+#include "mover_scenes.h"
+
+#include "tilesweep/resolve.h"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
 #include <random>
 #include <vector>
-
-#include "mover_scenes.h"
-#include "tilesweep/batch.h"
-#include "tilesweep/resolve.h"
 
 namespace tilesweep {
 namespace {
@@ -40,7 +42,8 @@ TYPED_TEST(Batch, givesEveryMoverWhatResolveMoveGivesItAlone) {
     const std::uint64_t maps = test::propertyCases(3000) / 10 + 1;
     constexpr std::size_t kMovers = 500;
     std::vector<MoveInput<T>> inputs(kMovers);
-    std::vector<MoveResult<T>> alone(kMovers), byOne(kMovers), byTwo(kMovers), byThree(kMovers), inline_(kMovers);
+    std::vector<MoveResult<T>> alone(kMovers), byOne(kMovers), byTwo(kMovers), byThree(kMovers),
+        inline_(kMovers);
     std::vector<Contact<T>> contacts(4096);
     for (std::uint64_t m = 0; m < maps && !::testing::Test::HasFailure(); ++m) {
         const test::RandomScene<T> level = test::randomScene<T>(rng);
@@ -60,7 +63,8 @@ TYPED_TEST(Batch, givesEveryMoverWhatResolveMoveGivesItAlone) {
             const SweepResult<T> s = resolveMove<T>({level.view(), inputs[k].box, inputs[k].displacement},
                                                     {contacts.data(), 4096, nullptr, 0});
             if (alone[k].status == MoveStatus::ContactBufferTooSmall) continue;
-            ASSERT_EQ(std::memcmp(&s.position, &byTwo[k].position, sizeof s.position), 0) << "map " << m << " mover " << k;
+            ASSERT_EQ(std::memcmp(&s.position, &byTwo[k].position, sizeof s.position), 0)
+                << "map " << m << " mover " << k;
             ASSERT_EQ(s.contactCount, byTwo[k].contactCount);
             ASSERT_EQ(s.startOverlapCount, byTwo[k].startOverlapCount);
         }
@@ -83,10 +87,13 @@ TEST(Batch, poolRunsEveryIndexExactlyOnce) {
     BatchPool pool(3);
     for (int round = 0; round < 50; ++round) {
         std::vector<int> hits(10007, 0);
-        pool.run(hits.size(), 64, [](void* ctx, std::size_t b, std::size_t e) {
-            auto& h = *static_cast<std::vector<int>*>(ctx);
-            for (std::size_t k = b; k < e; ++k) ++h[k];
-        }, &hits);
+        pool.run(
+            hits.size(), 64,
+            [](void* ctx, std::size_t b, std::size_t e) {
+                auto& h = *static_cast<std::vector<int>*>(ctx);
+                for (std::size_t k = b; k < e; ++k) ++h[k];
+            },
+            &hits);
         for (int h : hits) ASSERT_EQ(h, 1);
     }
 }

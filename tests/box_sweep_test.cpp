@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 // The single box-against-tile sweep. Expected values are worked out from CONTRACT.md.
+#include "tilesweep/box_sweep.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
-
-#include "tilesweep/box_sweep.h"
 
 namespace tilesweep {
 namespace {

@@ -2,15 +2,15 @@
 // Hand-worked cases of the contract (../shared/CONTRACT.md) and the seed article. Every expected
 // value below is derived in the comment above it from the contract's rules, not copied from the
 // program's output.
+#include "tilesweep/resolve.h"
+#include "tilesweep/tile_map.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
-
-#include "tilesweep/resolve.h"
-#include "tilesweep/tile_map.h"
 
 namespace tilesweep {
 namespace {
@@ -128,7 +128,8 @@ TYPED_TEST(Resolve, oneUlpDecidesCornerClipExactly) {
     const T faster = std::nextafter(T(32), T(64));
     const Frame<T> clip = resolve<T>(level, {{16, 48}, {8, 8}}, {32, -faster});
     ASSERT_EQ(clip.contacts.size(), 1u);
-    expectContact<T>(clip.contacts[0], {1, 1}, {0, 1}, static_cast<T>(16.0L / static_cast<long double>(faster)));
+    expectContact<T>(clip.contacts[0], {1, 1}, {0, 1},
+                     static_cast<T>(16.0L / static_cast<long double>(faster)));
     EXPECT_EQ(clip.result.position.x, T(48));
     EXPECT_EQ(clip.result.position.y, T(32));
 
@@ -222,7 +223,8 @@ TYPED_TEST(Resolve, landsAcrossSeamAndSlidesWithoutSnagging) {
         for (int i = 0; i < 64; ++i)
             if (16 * i <= start + 12 && 16 * (i + 1) > start) under.push_back(i);
         ASSERT_EQ(f.contacts.size(), under.size()) << "frame " << frame;
-        for (std::size_t k = 0; k < under.size(); ++k) expectContact<T>(f.contacts[k], {under[k], 3}, {0, -1}, T(0));
+        for (std::size_t k = 0; k < under.size(); ++k)
+            expectContact<T>(f.contacts[k], {under[k], 3}, {0, -1}, T(0));
         box.pos = f.result.position;
     }
 }
@@ -337,8 +339,9 @@ TYPED_TEST(Resolve, contactPositionRoundsTowardStart) {
     using T = TypeParam;
     Level<T> level({"....", "...#"});
     const T w = static_cast<T>(12.3);
-    const Frame<T> f = resolve<T>(level, {{static_cast<T>(0.1), static_cast<T>(10.3)}, {w, static_cast<T>(9.9)}},
-                                  {static_cast<T>(60.7), 0});
+    const Frame<T> f =
+        resolve<T>(level, {{static_cast<T>(0.1), static_cast<T>(10.3)}, {w, static_cast<T>(9.9)}},
+                   {static_cast<T>(60.7), 0});
     ASSERT_EQ(f.contacts.size(), 1u);
     const long double touch = 48.0L - static_cast<long double>(w);  // exact
     const T x = f.result.position.x;
@@ -380,9 +383,12 @@ TYPED_TEST(Resolve, rejectsInvalidInput) {
     const T nan = std::numeric_limits<T>::quiet_NaN();
     const T inf = std::numeric_limits<T>::infinity();
     const Box<T> good{{1, 1}, {4, 4}};
-    const std::vector<std::pair<Box<T>, Vec2<T>>> bad = {
-        {good, {nan, 1}}, {good, {1, inf}}, {{{nan, 1}, {4, 4}}, {1, 1}}, {{{1, 1}, {0, 4}}, {1, 1}},
-        {{{1, 1}, {4, -4}}, {1, 1}}, {{{1, -inf}, {4, 4}}, {1, 1}}};
+    const std::vector<std::pair<Box<T>, Vec2<T>>> bad = {{good, {nan, 1}},
+                                                         {good, {1, inf}},
+                                                         {{{nan, 1}, {4, 4}}, {1, 1}},
+                                                         {{{1, 1}, {0, 4}}, {1, 1}},
+                                                         {{{1, 1}, {4, -4}}, {1, 1}},
+                                                         {{{1, -inf}, {4, 4}}, {1, 1}}};
     for (const auto& [box, move] : bad) {
         const Frame<T> f = resolve<T>(level, box, move);
         EXPECT_EQ(f.result.status, Status::InvalidInput);
@@ -398,13 +404,16 @@ TEST(TileMap, rejectsUnrepresentableEdges) {
     const std::uint8_t cells[4] = {};
     std::int64_t bad = 0;
     EXPECT_EQ(validateTileMap<float>({{0, 0}, {0.1f, 16}, 2, 1, cells}), MapError::None);
-    EXPECT_EQ(validateTileMap<float>({{0, 0}, {0.1f, 16}, 4, 1, cells}, &bad), MapError::UnrepresentableEdgeX);
+    EXPECT_EQ(validateTileMap<float>({{0, 0}, {0.1f, 16}, 4, 1, cells}, &bad),
+              MapError::UnrepresentableEdgeX);
     EXPECT_EQ(bad, 3);
-    EXPECT_EQ(validateTileMap<double>({{0, 0}, {16, 0.1}, 1, 4, cells}, &bad), MapError::UnrepresentableEdgeY);
+    EXPECT_EQ(validateTileMap<double>({{0, 0}, {16, 0.1}, 1, 4, cells}, &bad),
+              MapError::UnrepresentableEdgeY);
     EXPECT_EQ(bad, 3);
     // 2^24 + 16k is representable in float for every k here; 2^24 + 1 is not.
     EXPECT_EQ(validateTileMap<float>({{16777216.0f, 0}, {16, 16}, 4, 1, cells}), MapError::None);
-    EXPECT_EQ(validateTileMap<float>({{16777216.0f, 0}, {1, 16}, 4, 1, cells}), MapError::UnrepresentableEdgeX);
+    EXPECT_EQ(validateTileMap<float>({{16777216.0f, 0}, {1, 16}, 4, 1, cells}),
+              MapError::UnrepresentableEdgeX);
     EXPECT_EQ(validateTileMap<float>({{0, 0}, {-16, 16}, 4, 1, cells}), MapError::NonPositiveTileSize);
 }
 

@@ -5,15 +5,15 @@
 // in, boxes and moves on a quarter-tile lattice (so exact corner ties, grid-aligned edges and
 // contacts on many tiles at once are common) or at arbitrary values, in float or double.
 
+#include "tilesweep/math.h"
+#include "tilesweep/tile_map.h"
+
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <random>
 #include <string>
 #include <vector>
-
-#include "tilesweep/math.h"
-#include "tilesweep/tile_map.h"
 
 namespace tilesweep::test {
 
@@ -93,9 +93,12 @@ void randomMover(std::mt19937_64& rng, const Level<T>& level, Box<T>& box, Vec2<
     // Sizes: whole tiles, fractions of a tile, or arbitrary.
     auto size = [&](double tile) {
         switch (pick(rng, 0, 2)) {
-            case 0: return static_cast<T>(tile * pick(rng, 1, 4));
-            case 1: return static_cast<T>(tile * pick(rng, 1, 15) / 4.0);
-            default: return static_cast<T>(tile * real(rng, 0.05, 5));
+            case 0:
+                return static_cast<T>(tile * pick(rng, 1, 4));
+            case 1:
+                return static_cast<T>(tile * pick(rng, 1, 15) / 4.0);
+            default:
+                return static_cast<T>(tile * real(rng, 0.05, 5));
         }
     };
     box.size = {size(t[0]), size(t[1])};
@@ -108,12 +111,17 @@ void randomMover(std::mt19937_64& rng, const Level<T>& level, Box<T>& box, Vec2<
     // Moves: zero, lattice steps, arbitrary, tiny or huge.
     auto displacement = [&](double tile) {
         switch (pick(rng, 0, 5)) {
-            case 0: return T(0);
+            case 0:
+                return T(0);
             case 1:
-            case 2: return static_cast<T>(tile * pick(rng, -64, 64) / 8.0);
-            case 3: return static_cast<T>(tile * real(rng, -6, 6));
-            case 4: return static_cast<T>(tile * real(rng, -1, 1) * 1e-6);
-            default: return static_cast<T>(tile * real(rng, -1000, 1000));
+            case 2:
+                return static_cast<T>(tile * pick(rng, -64, 64) / 8.0);
+            case 3:
+                return static_cast<T>(tile * real(rng, -6, 6));
+            case 4:
+                return static_cast<T>(tile * real(rng, -1, 1) * 1e-6);
+            default:
+                return static_cast<T>(tile * real(rng, -1000, 1000));
         }
     };
     move = {displacement(t[0]), displacement(t[1])};

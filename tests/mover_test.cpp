@@ -2,6 +2,12 @@
 // The game-loop API (tilesweep/mover.h): hand-worked frames, and properties over random scenes
 // that hold moveAndSlide to resolveMove bit for bit and the resolver to maxContacts.
 // TILESWEEP_PROPERTY_CASES sets the cases per property (default 3000); the seed is fixed.
+#include "tilesweep/mover.h"
+
+#include "mover_scenes.h"
+
+#include "tilesweep/resolve.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,10 +17,6 @@
 #include <random>
 #include <string>
 #include <vector>
-
-#include "mover_scenes.h"
-#include "tilesweep/mover.h"
-#include "tilesweep/resolve.h"
 
 namespace tilesweep {
 namespace {
@@ -136,8 +138,8 @@ void expectSameAsResolveMove(const test::RandomScene<T>& scene, std::uint64_t ca
     const PreparedMap<T> map = prepareMap(scene.view());
     ASSERT_TRUE(map.isValid());
     std::vector<Contact<T>> expected(4096);
-    const SweepResult<T> s = resolveMove<T>({scene.view(), scene.box, scene.move},
-                                            {expected.data(), 4096, nullptr, 0});
+    const SweepResult<T> s =
+        resolveMove<T>({scene.view(), scene.box, scene.move}, {expected.data(), 4096, nullptr, 0});
     const std::int32_t bound = maxContacts(scene.box.size, scene.view().tileSize);
     const std::string where = "case " + std::to_string(caseIndex) + ": " + scene.describe();
     // The documented bound: a buffer of maxContacts never truncates.
@@ -156,7 +158,8 @@ void expectSameAsResolveMove(const test::RandomScene<T>& scene, std::uint64_t ca
     for (std::int32_t k = 0; k < s.contactCount; ++k) {
         const auto& a = got[static_cast<std::size_t>(k)];
         const auto& b = expected[static_cast<std::size_t>(k)];
-        EXPECT_TRUE(a.tile == b.tile && a.normal == b.normal && std::memcmp(&a.time, &b.time, sizeof a.time) == 0)
+        EXPECT_TRUE(a.tile == b.tile && a.normal == b.normal &&
+                    std::memcmp(&a.time, &b.time, sizeof a.time) == 0)
             << where << " contact " << k;
         ground = ground || b.normal.y == -1;
         ceiling = ceiling || b.normal.y == 1;
@@ -182,7 +185,8 @@ void expectSameAsResolveMove(const test::RandomScene<T>& scene, std::uint64_t ca
     if (s.contactCount > 0 && bound <= kInlineContacts) {
         std::vector<Contact<T>> shortBuffer(static_cast<std::size_t>(s.contactCount));
         for (auto& c : shortBuffer) c.tile = {-7, -7};
-        const MoveResult<T> cut = moveAndSlide(map, {scene.box, scene.move}, shortBuffer.data(), s.contactCount - 1);
+        const MoveResult<T> cut =
+            moveAndSlide(map, {scene.box, scene.move}, shortBuffer.data(), s.contactCount - 1);
         EXPECT_EQ(cut.contactCount, s.contactCount) << where;
         for (const auto& c : shortBuffer) EXPECT_EQ(c.tile, (Cell{-7, -7})) << where << " half-filled";
     }

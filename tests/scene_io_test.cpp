@@ -3,6 +3,8 @@
 // straight to the scalar type), writing them back bit for bit, the `tilesweep resolve` output
 // format, and runScene's chaining of frames. Expected values are worked out by hand from
 // ../shared/CONTRACT.md and IEEE 754 rounding, not copied from program output.
+#include "tilesweep/scene/scene.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -20,22 +22,20 @@
 #include <type_traits>
 #include <vector>
 
-#include "tilesweep/scene/scene.h"
-
 namespace {
 
 using tilesweep::Cell;
 using tilesweep::Contact;
-using tilesweep::FrameResult;
-using tilesweep::Normal;
-using tilesweep::Scene;
-using tilesweep::SceneParse;
-using tilesweep::Vec2;
 using tilesweep::formatError;
 using tilesweep::formatFrames;
 using tilesweep::formatScene;
+using tilesweep::FrameResult;
+using tilesweep::Normal;
 using tilesweep::parseScene;
 using tilesweep::runScene;
+using tilesweep::Scene;
+using tilesweep::SceneParse;
+using tilesweep::Vec2;
 
 // ---- helpers ---------------------------------------------------------------------------
 
@@ -59,8 +59,8 @@ std::string hex(double value) {
 template <class T>
 ::testing::AssertionResult sameBits(T actual, T expected) {
     if (bitsOf(actual) == bitsOf(expected)) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << hex(static_cast<double>(actual)) << " is not "
-                                         << hex(static_cast<double>(expected));
+    return ::testing::AssertionFailure()
+           << hex(static_cast<double>(actual)) << " is not " << hex(static_cast<double>(expected));
 }
 
 const char* const kMap =
@@ -75,8 +75,7 @@ std::string sceneLine(const std::string& map = kMap, const std::string& box = kB
 }
 
 std::string mapLine(const std::string& origin, const std::string& tile, const std::string& rows) {
-    return sceneLine(R"({"origin": )" + origin + R"(, "tile": )" + tile + R"(, "rows": )" + rows +
-                     "}");
+    return sceneLine(R"({"origin": )" + origin + R"(, "tile": )" + tile + R"(, "rows": )" + rows + "}");
 }
 
 // The line is refused, and the message starts with "<field>: " and contains `detail`.
@@ -85,11 +84,9 @@ template <class T>
                                          const std::string& detail = "") {
     const SceneParse<T> parsed = parseScene<T>(line);
     if (parsed.scene) return ::testing::AssertionFailure() << "accepted: " << line;
-    if (parsed.error.rfind(field + ": ", 0) != 0 ||
-        parsed.error.find(detail) == std::string::npos)
+    if (parsed.error.rfind(field + ": ", 0) != 0 || parsed.error.find(detail) == std::string::npos)
         return ::testing::AssertionFailure()
-               << "message '" << parsed.error << "' does not name '" << field << "' with '"
-               << detail << "'";
+               << "message '" << parsed.error << "' does not name '" << field << "' with '" << detail << "'";
     return ::testing::AssertionSuccess();
 }
 
@@ -114,10 +111,10 @@ TYPED_TEST_SUITE(SceneReaderTyped, Scalars);
 // ---- reading: values ---------------------------------------------------------------------
 
 TEST(SceneReader, readsEveryFieldOfTheContractExample) {
-    const Scene<float> scene = parsed<float>(
-        R"({"map": {"origin": [0, 0], "tile": [16, 16],)"
-        R"( "rows": ["........", "...#....", "########"]},)"
-        R"( "box": [20, 10, 12, 14], "moves": [[3.5, 40], [3.5, 0.25]]})");
+    const Scene<float> scene =
+        parsed<float>(R"({"map": {"origin": [0, 0], "tile": [16, 16],)"
+                      R"( "rows": ["........", "...#....", "########"]},)"
+                      R"( "box": [20, 10, 12, 14], "moves": [[3.5, 40], [3.5, 0.25]]})");
     EXPECT_TRUE(scene.name.empty());
     EXPECT_EQ(scene.map.origin, (Vec2<float>{0, 0}));
     EXPECT_EQ(scene.map.tileSize, (Vec2<float>{16, 16}));
@@ -200,8 +197,8 @@ TEST(SceneReader, extremeFloatsReadExactly) {
     EXPECT_TRUE(sameBits(boxX<float>("1e-45"), std::numeric_limits<float>::denorm_min()));
     // Just below the midpoint between FLT_MAX and 2^128: still FLT_MAX.
     EXPECT_TRUE(sameBits(boxX<float>(R"("0x1.fffffe8p+127")"), FLT_MAX));
-    EXPECT_TRUE(sameBits(boxX<double>(R"("0x0.0000000000001p-1022")"),
-                         std::numeric_limits<double>::denorm_min()));
+    EXPECT_TRUE(
+        sameBits(boxX<double>(R"("0x0.0000000000001p-1022")"), std::numeric_limits<double>::denorm_min()));
     EXPECT_TRUE(sameBits(boxX<double>("1.7976931348623157e308"), DBL_MAX));
 }
 
@@ -238,8 +235,7 @@ TEST(SceneReader, unknownFieldsAreIgnoredAndTheNameIsKept) {
     // A name that is not a string is just an unknown field.
     EXPECT_TRUE(parsed<float>(sceneLine(kMap, kBox, kMove, R"(, "name": 7)")).name.empty());
     // Unknown fields of the map are ignored too.
-    EXPECT_EQ(parsed<float>(mapLine("[0, 0]", "[16, 16]", R"(["#"], "legend": {"#": "rock"})"))
-                  .map.columns,
+    EXPECT_EQ(parsed<float>(mapLine("[0, 0]", "[16, 16]", R"(["#"], "legend": {"#": "rock"})")).map.columns,
               1);
 }
 
@@ -289,8 +285,7 @@ TYPED_TEST(SceneReaderTyped, deepNestingIsRefusedWithoutCrashing) {
     using T = TypeParam;
     const std::string deep = std::string(100000, '[') + std::string(100000, ']');
     EXPECT_TRUE(refusedNaming<T>(deep, "scene", "nested"));
-    EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, kBox, kMove, R"(, "note": )" + deep), "scene",
-                                 "nested"));
+    EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, kBox, kMove, R"(, "note": )" + deep), "scene", "nested"));
 }
 
 TYPED_TEST(SceneReaderTyped, missingFieldsAreNamed) {
@@ -300,12 +295,10 @@ TYPED_TEST(SceneReaderTyped, missingFieldsAreNamed) {
                                  R"( "move": [1, 1]})",
                                  "box", "missing"));
     EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, kBox, R"("mvoe": [1, 1])"), "move", "missing"));
-    EXPECT_TRUE(refusedNaming<T>(sceneLine(R"({"tile": [16, 16], "rows": []})"), "map.origin",
-                                 "missing"));
-    EXPECT_TRUE(refusedNaming<T>(sceneLine(R"({"origin": [0, 0], "rows": []})"), "map.tile",
-                                 "missing"));
-    EXPECT_TRUE(refusedNaming<T>(sceneLine(R"({"origin": [0, 0], "tile": [16, 16]})"), "map.rows",
-                                 "missing"));
+    EXPECT_TRUE(refusedNaming<T>(sceneLine(R"({"tile": [16, 16], "rows": []})"), "map.origin", "missing"));
+    EXPECT_TRUE(refusedNaming<T>(sceneLine(R"({"origin": [0, 0], "rows": []})"), "map.tile", "missing"));
+    EXPECT_TRUE(
+        refusedNaming<T>(sceneLine(R"({"origin": [0, 0], "tile": [16, 16]})"), "map.rows", "missing"));
 }
 
 TYPED_TEST(SceneReaderTyped, wrongTypesAndAritiesAreNamed) {
@@ -321,23 +314,22 @@ TYPED_TEST(SceneReaderTyped, wrongTypesAndAritiesAreNamed) {
     EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, "[20, 10, 12, [14]]"), "box[3]", "got an array"));
     EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, kBox, R"("move": [1])"), "move",
                                  "expected an array of 2 numbers, got 1 element"));
-    EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, kBox, R"("move": {"dx": 1, "dy": 2})"), "move",
-                                 "got an object"));
+    EXPECT_TRUE(
+        refusedNaming<T>(sceneLine(kMap, kBox, R"("move": {"dx": 1, "dy": 2})"), "move", "got an object"));
     EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, kBox, R"("moves": [1, 2])"), "moves[0]",
                                  "expected an array of 2 numbers, got a number"));
-    EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, kBox, R"("moves": [[1, 2], [3]])"), "moves[1]",
-                                 "got 1 element"));
-    EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, kBox, R"("moves": [[1, 2], [3, "4"]])"),
-                                 "moves[1][1]", "hexfloat"));
-    EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, kBox, R"("moves": {"0": [1, 2]})"), "moves",
-                                 "got an object"));
+    EXPECT_TRUE(
+        refusedNaming<T>(sceneLine(kMap, kBox, R"("moves": [[1, 2], [3]])"), "moves[1]", "got 1 element"));
+    EXPECT_TRUE(
+        refusedNaming<T>(sceneLine(kMap, kBox, R"("moves": [[1, 2], [3, "4"]])"), "moves[1][1]", "hexfloat"));
+    EXPECT_TRUE(
+        refusedNaming<T>(sceneLine(kMap, kBox, R"("moves": {"0": [1, 2]})"), "moves", "got an object"));
     EXPECT_TRUE(refusedNaming<T>(mapLine("[0]", "[16, 16]", "[]"), "map.origin", "got 1 element"));
-    EXPECT_TRUE(refusedNaming<T>(mapLine("[0, 0]", "[16, false]", "[]"), "map.tile[1]",
-                                 "got a boolean"));
+    EXPECT_TRUE(refusedNaming<T>(mapLine("[0, 0]", "[16, false]", "[]"), "map.tile[1]", "got a boolean"));
     EXPECT_TRUE(refusedNaming<T>(mapLine("[0, 0]", "[16, 16]", R"("..##")"), "map.rows",
                                  "expected an array of strings"));
-    EXPECT_TRUE(refusedNaming<T>(mapLine("[0, 0]", "[16, 16]", R"(["..", 12])"), "map.rows[1]",
-                                 "got a number"));
+    EXPECT_TRUE(
+        refusedNaming<T>(mapLine("[0, 0]", "[16, 16]", R"(["..", 12])"), "map.rows[1]", "got a number"));
 }
 
 TYPED_TEST(SceneReaderTyped, nonFiniteValuesAreNamed) {
@@ -345,15 +337,13 @@ TYPED_TEST(SceneReaderTyped, nonFiniteValuesAreNamed) {
     EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, kBox, R"("move": ["nan", 1])"), "move[0]",
                                  "non-finite value 'nan'"));
     for (const char* spelling : {"inf", "-inf", "Infinity", "-Infinity", "NaN", "+inf", "nan(1)"})
-        EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, std::string("[20, 10, 12, \"") + spelling +
-                                                         "\"]"),
+        EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, std::string("[20, 10, 12, \"") + spelling + "\"]"),
                                      "box[3]", std::string("non-finite value '") + spelling + "'"));
-    EXPECT_TRUE(refusedNaming<T>(mapLine(R"([0, "inf"])", "[16, 16]", "[]"), "map.origin[1]",
+    EXPECT_TRUE(refusedNaming<T>(mapLine(R"([0, "inf"])", "[16, 16]", "[]"), "map.origin[1]", "non-finite"));
+    EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, kBox, R"("moves": [[1, 2], [3, "-inf"]])"), "moves[1][1]",
                                  "non-finite"));
-    EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, kBox, R"("moves": [[1, 2], [3, "-inf"]])"),
-                                 "moves[1][1]", "non-finite"));
-    EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, "[1e400, 10, 12, 14]"), "box[0]",
-                                 "non-finite value '1e400'"));
+    EXPECT_TRUE(
+        refusedNaming<T>(sceneLine(kMap, "[1e400, 10, 12, 14]"), "box[0]", "non-finite value '1e400'"));
 }
 
 TEST(SceneReader, valuesThatRoundToInfinityInTheScalarTypeAreNonFinite) {
@@ -361,25 +351,24 @@ TEST(SceneReader, valuesThatRoundToInfinityInTheScalarTypeAreNonFinite) {
     // midpoint between FLT_MAX and 2^128, so they round to infinity as well.
     for (const char* text : {"1e39", "3.40282357e38", R"("0x1.ffffffp+127")", R"("0x1p+128")",
                              R"("-0x1p+1000")", R"("0x1p+99999999999999")"}) {
-        EXPECT_TRUE(refusedNaming<float>(sceneLine(kMap, std::string("[") + text + ", 10, 12, 14]"),
-                                         "box[0]", "overflows float"))
+        EXPECT_TRUE(refusedNaming<float>(sceneLine(kMap, std::string("[") + text + ", 10, 12, 14]"), "box[0]",
+                                         "overflows float"))
             << text;
     }
     // All of them but the last are ordinary doubles.
     EXPECT_TRUE(sameBits(boxX<double>("1e39"), 1e39));
     EXPECT_TRUE(sameBits(boxX<double>(R"("-0x1p+1000")"), -0x1p+1000));
-    EXPECT_TRUE(refusedNaming<double>(sceneLine(kMap, R"(["0x1p+1024", 10, 12, 14])"), "box[0]",
-                                      "overflows double"));
-    EXPECT_TRUE(refusedNaming<double>(sceneLine(kMap, "[2e308, 10, 12, 14]"), "box[0]",
-                                      "overflows double"));
+    EXPECT_TRUE(
+        refusedNaming<double>(sceneLine(kMap, R"(["0x1p+1024", 10, 12, 14])"), "box[0]", "overflows double"));
+    EXPECT_TRUE(refusedNaming<double>(sceneLine(kMap, "[2e308, 10, 12, 14]"), "box[0]", "overflows double"));
 }
 
 TYPED_TEST(SceneReaderTyped, stringsThatAreNotHexfloatsAreRefused) {
     using T = TypeParam;
-    for (const char* text : {"12", "1.5", "0x", "0x1", "0x1.8", "0xp3", "0x1p", "0x1p+", " 0x1p3",
-                             "0x1p3 ", "+0x1p3", "--0x1p3", "0x1.8e+3", "1p3", "0x1.g", "", "ten"})
-        EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, std::string("[20, \"") + text + "\", 12, 14]"),
-                                     "box[1]", "hexfloat string"))
+    for (const char* text : {"12", "1.5", "0x", "0x1", "0x1.8", "0xp3", "0x1p", "0x1p+", " 0x1p3", "0x1p3 ",
+                             "+0x1p3", "--0x1p3", "0x1.8e+3", "1p3", "0x1.g", "", "ten"})
+        EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, std::string("[20, \"") + text + "\", 12, 14]"), "box[1]",
+                                     "hexfloat string"))
             << "'" << text << "'";
 }
 
@@ -387,8 +376,7 @@ TYPED_TEST(SceneReaderTyped, nonPositiveSizesAreRefused) {
     using T = TypeParam;
     for (const char* box : {"[0, 0, 0, 4]", "[0, 0, 4, 0]", "[0, 0, -4, 4]", "[0, 0, 4, -0]",
                             R"([0, 0, "-0x1p-149", 4])", "[0, 0, 1e-400, 4]"})
-        EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, box), "box", "width and height must be > 0"))
-            << box;
+        EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, box), "box", "width and height must be > 0")) << box;
     for (const char* tile : {"[0, 16]", "[16, -16]", "[-0, 16]"})
         EXPECT_TRUE(refusedNaming<T>(mapLine("[0, 0]", tile, R"(["#"])"), "map.tile",
                                      "tile width and height must be > 0"))
@@ -401,16 +389,16 @@ TYPED_TEST(SceneReaderTyped, raggedRowsAreRefused) {
                                  "ragged rows (row 1 has length 2, row 0 has 3)"));
     EXPECT_TRUE(refusedNaming<T>(mapLine("[0, 0]", "[16, 16]", R"(["", "#"])"), "map.rows",
                                  "ragged rows (row 1 has length 1, row 0 has 0)"));
-    EXPECT_TRUE(refusedNaming<T>(mapLine("[0, 0]", "[16, 16]", R"(["..", "..", "..."])"),
-                                 "map.rows", "row 2 has length 3"));
+    EXPECT_TRUE(refusedNaming<T>(mapLine("[0, 0]", "[16, 16]", R"(["..", "..", "..."])"), "map.rows",
+                                 "row 2 has length 3"));
 }
 
 TYPED_TEST(SceneReaderTyped, unknownTileCharactersAreNamedWithRowAndColumn) {
     using T = TypeParam;
-    EXPECT_TRUE(refusedNaming<T>(mapLine("[0, 0]", "[16, 16]", R"(["...", ".x."])"),
-                                 "map.rows[1]", "unknown tile character 'x' at column 1"));
-    EXPECT_TRUE(refusedNaming<T>(mapLine("[0, 0]", "[16, 16]", R"(["## "])"), "map.rows[0]",
-                                 "' ' at column 2"));
+    EXPECT_TRUE(refusedNaming<T>(mapLine("[0, 0]", "[16, 16]", R"(["...", ".x."])"), "map.rows[1]",
+                                 "unknown tile character 'x' at column 1"));
+    EXPECT_TRUE(
+        refusedNaming<T>(mapLine("[0, 0]", "[16, 16]", R"(["## "])"), "map.rows[0]", "' ' at column 2"));
     // "é" is two bytes; the first is reported as a byte.
     EXPECT_TRUE(refusedNaming<T>(mapLine("[0, 0]", "[16, 16]", "[\"\xc3\xa9\"]"), "map.rows[0]",
                                  "byte 0xC3 at column 0"));
@@ -418,18 +406,17 @@ TYPED_TEST(SceneReaderTyped, unknownTileCharactersAreNamedWithRowAndColumn) {
 
 TYPED_TEST(SceneReaderTyped, moveAndMovesAreExclusiveAndMovesIsNotEmpty) {
     using T = TypeParam;
-    EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, kBox, R"("move": [1, 2], "moves": [[1, 2]])"),
-                                 "moves", "not both"));
-    EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, kBox, R"("moves": [])"), "moves",
-                                 "must not be empty"));
+    EXPECT_TRUE(
+        refusedNaming<T>(sceneLine(kMap, kBox, R"("move": [1, 2], "moves": [[1, 2]])"), "moves", "not both"));
+    EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, kBox, R"("moves": [])"), "moves", "must not be empty"));
 }
 
 TYPED_TEST(SceneReaderTyped, aKnownFieldGivenTwiceIsRefused) {
     using T = TypeParam;
-    EXPECT_TRUE(refusedNaming<T>(sceneLine(kMap, kBox, kMove, R"(, "box": [0, 0, 1, 1])"), "box",
-                                 "given twice"));
-    EXPECT_TRUE(refusedNaming<T>(mapLine("[0, 0]", "[16, 16]", R"([], "rows": ["#"])"), "map.rows",
-                                 "given twice"));
+    EXPECT_TRUE(
+        refusedNaming<T>(sceneLine(kMap, kBox, kMove, R"(, "box": [0, 0, 1, 1])"), "box", "given twice"));
+    EXPECT_TRUE(
+        refusedNaming<T>(mapLine("[0, 0]", "[16, 16]", R"([], "rows": ["#"])"), "map.rows", "given twice"));
 }
 
 TEST(SceneReader, unrepresentableTileEdgesNameTheFirstBadEdgeAndTheType) {
@@ -439,8 +426,8 @@ TEST(SceneReader, unrepresentableTileEdgesNameTheFirstBadEdgeAndTheType) {
                                      "float"));
     EXPECT_TRUE(refusedNaming<double>(mapLine("[0, 0]", "[0.1, 16]", R"(["...."])"), "map.tile",
                                       "3*tile[0] is not representable in double"));
-    EXPECT_TRUE(refusedNaming<float>(mapLine("[0, 0]", "[16, 0.1]", R"([".", ".", "."])"),
-                                     "map.tile", "tile edge y = origin[1] + 3*tile[1]"));
+    EXPECT_TRUE(refusedNaming<float>(mapLine("[0, 0]", "[16, 0.1]", R"([".", ".", "."])"), "map.tile",
+                                     "tile edge y = origin[1] + 3*tile[1]"));
     // 2^24 + 1 is the first integer that is not a float; it is a double.
     EXPECT_TRUE(refusedNaming<float>(mapLine("[16777216, 0]", "[1, 1]", R"(["##"])"), "map.tile",
                                      "tile edge x = origin[0] + 1*tile[0]"));
@@ -450,8 +437,7 @@ TEST(SceneReader, unrepresentableTileEdgesNameTheFirstBadEdgeAndTheType) {
 TYPED_TEST(SceneReaderTyped, longValuesAreCutShortInMessages) {
     using T = TypeParam;
     const std::string longText(1000, 'z');
-    const SceneParse<T> result =
-        parseScene<T>(sceneLine(kMap, "[20, \"" + longText + "\", 12, 14]"));
+    const SceneParse<T> result = parseScene<T>(sceneLine(kMap, "[20, \"" + longText + "\", 12, 14]"));
     ASSERT_FALSE(result.scene);
     EXPECT_LT(result.error.size(), 200u);
     EXPECT_NE(result.error.find("...'"), std::string::npos);
@@ -518,8 +504,8 @@ TYPED_TEST(SceneReaderTyped, formattedScenesWriteHexfloatsAsPrintfDoes) {
     EXPECT_EQ(json["map"]["origin"], nlohmann::json({"-0x0p+0", "-0x1p+10"}));
     EXPECT_EQ(json["map"]["tile"], nlohmann::json({a(T(0.1)), "0x1.8p-1"}));
     EXPECT_EQ(json["map"]["rows"], nlohmann::json({".#", "#.", ".."}));
-    EXPECT_EQ(json["box"], nlohmann::json({"-0x0p+0", a(scene.box.pos.y), a(scene.box.size.x),
-                                           a(scene.box.size.y)}));
+    EXPECT_EQ(json["box"],
+              nlohmann::json({"-0x0p+0", a(scene.box.pos.y), a(scene.box.size.x), a(scene.box.size.y)}));
     EXPECT_EQ(json["moves"][1], nlohmann::json({"-0x0p+0", a(T(1) / T(3))}));
     EXPECT_EQ(json["name"], scene.name);
     // Spelled out, so a broken %a on this machine cannot hide a broken writer.
@@ -597,8 +583,8 @@ TEST(FrameFormat, noFramesIsAnEmptyList) {
 
 // A JSON reader whose floating-point numbers are floats: nlohmann then reads them with
 // strtof, rounding once, so a float written in shortest form must come back with its bits.
-using FloatJson = nlohmann::basic_json<std::map, std::vector, std::string, bool, std::int64_t,
-                                       std::uint64_t, float>;
+using FloatJson =
+    nlohmann::basic_json<std::map, std::vector, std::string, bool, std::int64_t, std::uint64_t, float>;
 
 // A number read back with the bits it was written with. An integral one ("16", "-0") is read
 // as an integer, which has no -0, so it is compared by value; the exact-text test above pins
@@ -645,9 +631,8 @@ template <class T>
 std::vector<FrameResult<T>> extremeFrames() {
     using L = std::numeric_limits<T>;
     std::vector<FrameResult<T>> frames;
-    const T values[] = {L::max(),         -L::max(),  L::denorm_min(), L::min(),
-                        L::min() / 3,     L::epsilon(), T(1) / T(3),   T(0.1),
-                        T(65540.001),     T(1e21),     T(-1e-7),      T(123456789)};
+    const T values[] = {L::max(),    -L::max(), L::denorm_min(), L::min(), L::min() / 3, L::epsilon(),
+                        T(1) / T(3), T(0.1),    T(65540.001),    T(1e21),  T(-1e-7),     T(123456789)};
     for (T x : values) {
         FrameResult<T> frame;
         frame.position = {x, -x};
@@ -701,9 +686,9 @@ TEST(ErrorFormat, readerErrorsBecomeValidErrorLines) {
 TEST(SceneRunner, aFallingBoxLandsOnTheFloor) {
     // The floor's top is y = 48; the box's bottom starts at 16 and moves 40: it lands after 32,
     // at t = 0.8, on the one floor tile under x in [20, 32] (x = 32 only touches column 2).
-    const Scene<float> scene = parsed<float>(
-        R"({"map": {"origin": [0, 0], "tile": [16, 16], "rows": ["......", "......", "......",)"
-        R"( "######"]}, "box": [20, 4, 12, 12], "move": [0, 40]})");
+    const Scene<float> scene =
+        parsed<float>(R"({"map": {"origin": [0, 0], "tile": [16, 16], "rows": ["......", "......", "......",)"
+                      R"( "######"]}, "box": [20, 4, 12, 12], "move": [0, 40]})");
     const auto result = runScene(scene);
     ASSERT_EQ(result.size(), 1u);
     EXPECT_EQ(result[0].position, (Vec2<float>{20, 36}));
@@ -716,17 +701,16 @@ TEST(SceneRunner, aFallingBoxLandsOnTheFloor) {
 
 std::string wideFloorScene(const std::string& box, const std::string& moves) {
     // 24 columns; a solid floor on row 2 (y in [32, 48]).
-    return R"({"map": {"origin": [0, 0], "tile": [16, 16], "rows": [")" + std::string(24, '.') +
-           R"(", ")" + std::string(24, '.') + R"(", ")" + std::string(24, '#') + R"("]}, "box": )" +
-           box + R"(, "moves": )" + moves + "}";
+    return R"({"map": {"origin": [0, 0], "tile": [16, 16], "rows": [")" + std::string(24, '.') + R"(", ")" +
+           std::string(24, '.') + R"(", ")" + std::string(24, '#') + R"("]}, "box": )" + box +
+           R"(, "moves": )" + moves + "}";
 }
 
 TEST(SceneRunner, reportsEveryContactOfAWideLandingAndChainsFrames) {
     // A box 320 wide at x = 8 spans columns 0..20 (x = 328 lies inside column 20): 21 floor
     // tiles, more than any small fixed buffer, all hit at t = 24/40 = 0.6. The second frame
     // starts on the floor (y = 24) and slides along it without touching anything.
-    const auto frames =
-        runScene(parsed<float>(wideFloorScene("[8, 0, 320, 8]", "[[0, 40], [5, 0]]")));
+    const auto frames = runScene(parsed<float>(wideFloorScene("[8, 0, 320, 8]", "[[0, 40], [5, 0]]")));
     ASSERT_EQ(frames.size(), 2u);
     EXPECT_EQ(frames[0].position, (Vec2<float>{8, 24}));
     ASSERT_EQ(frames[0].contacts.size(), 21u);
@@ -752,8 +736,7 @@ TEST(SceneRunner, reportsEveryTileTheBoxStartsIn) {
 }
 
 TEST(SceneRunner, anEmptyMapLetsTheBoxMoveFreely) {
-    const auto frames =
-        runScene(parsed<float>(mapLine("[0, 0]", "[16, 16]", "[]")));
+    const auto frames = runScene(parsed<float>(mapLine("[0, 0]", "[16, 16]", "[]")));
     ASSERT_EQ(frames.size(), 1u);
     EXPECT_EQ(frames[0].position, (Vec2<float>{23.5f, 50}));  // (20, 10) + (3.5, 40)
     EXPECT_TRUE(frames[0].contacts.empty());

@@ -12,6 +12,10 @@
 // and climbs out, and the dash (two tiles a frame) stops touching the wall instead of passing it.
 // README.md quotes the game loop below between the [readme:game-loop] markers; ctest checks the
 // quote is still the code (examples/platformer/check_readme_snippet.cmake).
+#include "tilesweep/mover.h"
+#include "tilesweep/scene/render.h"
+#include "tilesweep/scene/scene.h"
+
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -19,39 +23,28 @@
 #include <string>
 #include <vector>
 
-#include "tilesweep/mover.h"
-#include "tilesweep/scene/render.h"
-#include "tilesweep/scene/scene.h"
-
 namespace {
 
 using tilesweep::Box;
 using tilesweep::MoveResult;
 using tilesweep::Vec2;
 
-constexpr double kDt = 1.0 / 60;          // seconds per frame
-constexpr float kGravity = 1200;          // px/s^2, y down
-constexpr float kWalk = 90;               // px/s
-constexpr float kJump = -380;             // px/s: a 60 px apex clears the 32 px low wall
-constexpr float kDash = 1800;             // px/s: 30 px a frame, almost two tiles
+constexpr double kDt = 1.0 / 60;  // seconds per frame
+constexpr float kGravity = 1200;  // px/s^2, y down
+constexpr float kWalk = 90;       // px/s
+constexpr float kJump = -380;     // px/s: a 60 px apex clears the 32 px low wall
+constexpr float kDash = 1800;     // px/s: 30 px a frame, almost two tiles
 constexpr int kDashFrames = 10;
-constexpr float kFallLimit = 600;         // px/s
+constexpr float kFallLimit = 600;  // px/s
 constexpr int kFrames = 300;
 
 // 16-pixel tiles. A one-tile pit in the floor at column 5 (x in [80, 96]), a low wall of two
 // tiles at column 10 (x in [160, 176]), a tall wall at column 19 (x in [304, 320]).
 const char* const kLevel[] = {
-    "##############################",
-    "#............................#",
-    "#............................#",
-    "#............................#",
-    "#............................#",
-    "#..................#.........#",
-    "#..................#.........#",
-    "#.........#........#.........#",
-    "#.........#........#.........#",
-    "#####.########################",
-    "##############################",
+    "##############################", "#............................#", "#............................#",
+    "#............................#", "#............................#", "#..................#.........#",
+    "#..................#.........#", "#.........#........#.........#", "#.........#........#.........#",
+    "#####.########################", "##############################",
 };
 constexpr float kTile = 16;
 constexpr float kPitLeft = 80, kPitRight = 96, kPitFloor = 160;
@@ -77,8 +70,8 @@ struct Player {
 };
 
 struct Frame {
-    Player player;              ///< at the start of the frame, with the velocity it moved by
-    MoveResult<float> result;   ///< what moveAndSlide returned
+    Player player;             ///< at the start of the frame, with the velocity it moved by
+    MoveResult<float> result;  ///< what moveAndSlide returned
 };
 
 // The controller: walk right, jump when standing against a wall, dash once on the ground past
@@ -130,9 +123,9 @@ int runPlatformer(const char* svgPath) {
     const auto map = tilesweep::prepareMap(level.view());  // once per map: validates it
     if (!map.isValid()) return fail(tilesweep::describe(map.error()));
     for (int frame = 0; frame < kFrames; ++frame) {
-        steer(player, trace);                               // input, gravity, jumps, the dash
+        steer(player, trace);  // input, gravity, jumps, the dash
         const auto r = tilesweep::moveAndSlide(map, {player.box, player.velocity * kDt});
-        trace.push_back({player, r});                       // the frame's start and its result
+        trace.push_back({player, r});  // the frame's start and its result
         player.box.pos = r.position;
         if (r.onGround || r.onCeiling) player.velocity.y = 0;
         if (r.onWall) player.velocity.x = 0;
@@ -148,7 +141,8 @@ int runPlatformer(const char* svgPath) {
                     static_cast<double>(b.pos.y), static_cast<double>(f.player.velocity.x),
                     static_cast<double>(f.player.velocity.y), f.result.onGround ? "G" : "",
                     f.result.onWall ? "W" : "", f.result.onCeiling ? "C" : "");
-        if (f.result.status != tilesweep::MoveStatus::Moved && f.result.status != tilesweep::MoveStatus::Blocked)
+        if (f.result.status != tilesweep::MoveStatus::Moved &&
+            f.result.status != tilesweep::MoveStatus::Blocked)
             return fail("a frame was refused");
         if (overlapsSolid(level, b)) return fail("the player ended a frame inside a tile");
         landed = landed || f.result.onGround;
@@ -162,7 +156,8 @@ int runPlatformer(const char* svgPath) {
     if (!landed) return fail("the player never landed");
     if (!inPit || !outOfPit) return fail("the player did not fall into the one-tile pit and climb out");
     if (!dashStopped) return fail("the dash did not stop touching the wall");
-    std::printf("# checks hold: lands, never inside a tile, in and out of the pit, the dash stops at the wall\n");
+    std::printf(
+        "# checks hold: lands, never inside a tile, in and out of the pit, the dash stops at the wall\n");
 
     if (svgPath != nullptr) {
         // The same run as a scene: the renderer resolves it again with resolveMove, which must
@@ -189,14 +184,8 @@ int runPlatformer(const char* svgPath) {
 // double and rounded once to float, as the Lua script does, so both feed the resolver the same
 // bits. One line per frame: x y (C99 hexfloats, exact) and the flags.
 constexpr const char* kLoveLevel[] = {
-    "....................",
-    "....................",
-    "....................",
-    "....................",
-    "....................",
-    "...............#....",
-    "...............#....",
-    "####################",
+    "....................", "....................", "....................", "....................",
+    "....................", "...............#....", "...............#....", "####################",
 };
 
 int runLoveStyle() {

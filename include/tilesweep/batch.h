@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "tilesweep/mover.h"
+
 #include <cstddef>
 #include <cstdint>
-
-#include "tilesweep/mover.h"
 
 // Many movers at once: N independent moveAndSlide frames against one prepared map, on a pool
 // of threads made once (target tilesweep::batch; the core tilesweep target stays free of
@@ -41,8 +41,8 @@ public:
 
     /// Calls work(context, begin, end) over disjoint ranges covering [0, count), in chunks of
     /// `chunk` items, on every thread of the pool; returns when all are done. Allocates nothing.
-    void run(std::size_t count, std::size_t chunk, void (*work)(void* context, std::size_t begin, std::size_t end),
-             void* context) noexcept;
+    void run(std::size_t count, std::size_t chunk,
+             void (*work)(void* context, std::size_t begin, std::size_t end), void* context) noexcept;
 
     struct State;  ///< the threads and their hand-off (batch.cpp)
 
@@ -54,8 +54,8 @@ private:
 /// inputs[k]) with no contact buffer (so a box wider than kInlineContacts allows gets
 /// MoveStatus::ContactBufferTooSmall; use moveAndSlide with a buffer for it). `pool` null runs
 /// on the calling thread. Inputs and results must not overlap.
-void moveAndSlideBatch(const PreparedMap<float>& map, const MoveInput<float>* inputs, MoveResult<float>* results,
-                       std::size_t count, BatchPool* pool = nullptr) noexcept;
+void moveAndSlideBatch(const PreparedMap<float>& map, const MoveInput<float>* inputs,
+                       MoveResult<float>* results, std::size_t count, BatchPool* pool = nullptr) noexcept;
 /// The same in double.
 void moveAndSlideBatch(const PreparedMap<double>& map, const MoveInput<double>* inputs,
                        MoveResult<double>* results, std::size_t count, BatchPool* pool = nullptr) noexcept;

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cstdint>
-
 #include "tilesweep/math.h"
+
+#include <cstdint>
 
 // One box swept against one tile, with the exact rules of ../shared/CONTRACT.md: per-axis open
 // time intervals, their intersection I, blocking when the box does not overlap the tile at

@@ -48,13 +48,21 @@ struct Normal {
 [[nodiscard]] constexpr bool operator!=(Normal a, Normal b) noexcept { return !(a == b); }
 
 template <class T>
-[[nodiscard]] constexpr Vec2<T> operator+(Vec2<T> a, Vec2<T> b) noexcept { return {a.x + b.x, a.y + b.y}; }
+[[nodiscard]] constexpr Vec2<T> operator+(Vec2<T> a, Vec2<T> b) noexcept {
+    return {a.x + b.x, a.y + b.y};
+}
 template <class T>
-[[nodiscard]] constexpr Vec2<T> operator-(Vec2<T> a, Vec2<T> b) noexcept { return {a.x - b.x, a.y - b.y}; }
+[[nodiscard]] constexpr Vec2<T> operator-(Vec2<T> a, Vec2<T> b) noexcept {
+    return {a.x - b.x, a.y - b.y};
+}
 template <class T>
-[[nodiscard]] constexpr bool operator==(Vec2<T> a, Vec2<T> b) noexcept { return a.x == b.x && a.y == b.y; }
+[[nodiscard]] constexpr bool operator==(Vec2<T> a, Vec2<T> b) noexcept {
+    return a.x == b.x && a.y == b.y;
+}
 template <class T>
-[[nodiscard]] constexpr bool operator!=(Vec2<T> a, Vec2<T> b) noexcept { return !(a == b); }
+[[nodiscard]] constexpr bool operator!=(Vec2<T> a, Vec2<T> b) noexcept {
+    return !(a == b);
+}
 
 /// v scaled by s, each component rounded once (velocity * dt). The scalar may be any arithmetic
 /// type (a `double dt` with a float vector): it is converted to T first, so the result stays a
@@ -64,10 +72,14 @@ template <class T, class S, class = std::enable_if_t<std::is_arithmetic<S>::valu
     return {v.x * static_cast<T>(s), v.y * static_cast<T>(s)};
 }
 template <class T, class S, class = std::enable_if_t<std::is_arithmetic<S>::value>>
-[[nodiscard]] constexpr Vec2<T> operator*(S s, Vec2<T> v) noexcept { return v * s; }
+[[nodiscard]] constexpr Vec2<T> operator*(S s, Vec2<T> v) noexcept {
+    return v * s;
+}
 
 /// The component of v on axis a.
 template <class T>
-[[nodiscard]] constexpr T component(Vec2<T> v, Axis a) noexcept { return a == Axis::X ? v.x : v.y; }
+[[nodiscard]] constexpr T component(Vec2<T> v, Axis a) noexcept {
+    return a == Axis::X ? v.x : v.y;
+}
 
 }  // namespace tilesweep

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cstdint>
-
 #include "tilesweep/math.h"
 #include "tilesweep/resolve.h"
 #include "tilesweep/tile_map.h"
+
+#include <cstdint>
 
 // The game-loop API: a map prepared once, then one call per mover per frame.
 //
@@ -65,15 +65,15 @@ private:
 /// One mover's frame: its box at the start and the motion it wants over the frame.
 template <class T>
 struct MoveInput {
-    Box<T> box;           ///< position and size (> 0) at the start of the frame, finite
-    Vec2<T> displacement; ///< motion over the whole frame (velocity * dt), finite; zero is valid
+    Box<T> box;            ///< position and size (> 0) at the start of the frame, finite
+    Vec2<T> displacement;  ///< motion over the whole frame (velocity * dt), finite; zero is valid
 };
 
 /// How a move ended.
 enum class MoveStatus : std::uint8_t {
-    Moved,         ///< nothing was hit: the box moved the whole way
-    Blocked,       ///< at least one tile was hit: see the flags and contactCount
-    InvalidInput,  ///< non-finite value, size <= 0, or a map that failed prepareMap: nothing moved
+    Moved,                  ///< nothing was hit: the box moved the whole way
+    Blocked,                ///< at least one tile was hit: see the flags and contactCount
+    InvalidInput,           ///< non-finite value, size <= 0, or a map that failed prepareMap: nothing moved
     ContactBufferTooSmall,  ///< a box wider than kInlineContacts allows and a buffer below
                             ///< maxContacts: nothing moved, contactCount = maxContacts needed
 };
@@ -82,14 +82,14 @@ enum class MoveStatus : std::uint8_t {
 /// the frame, whether or not the caller asked for the contacts themselves.
 template <class T>
 struct MoveResult {
-    Vec2<T> position{};          ///< where the box ends; its start position unless Moved/Blocked
+    Vec2<T> position{};  ///< where the box ends; its start position unless Moved/Blocked
     MoveStatus status = MoveStatus::InvalidInput;
-    bool blockedX = false;       ///< a tile stopped the motion on x (same as onWall)
-    bool blockedY = false;       ///< a tile stopped the motion on y (onGround or onCeiling)
-    bool onGround = false;       ///< a floor was hit: a contact with normal (0, -1)
-    bool onCeiling = false;      ///< a ceiling was hit: a contact with normal (0, 1)
-    bool onWall = false;         ///< a wall was hit: a contact with normal (1, 0) or (-1, 0)
-    std::int8_t wallNormalX = 0; ///< the wall's normal on x: 1 (wall on the left), -1 (right), 0
+    bool blockedX = false;               ///< a tile stopped the motion on x (same as onWall)
+    bool blockedY = false;               ///< a tile stopped the motion on y (onGround or onCeiling)
+    bool onGround = false;               ///< a floor was hit: a contact with normal (0, -1)
+    bool onCeiling = false;              ///< a ceiling was hit: a contact with normal (0, 1)
+    bool onWall = false;                 ///< a wall was hit: a contact with normal (1, 0) or (-1, 0)
+    std::int8_t wallNormalX = 0;         ///< the wall's normal on x: 1 (wall on the left), -1 (right), 0
     std::int32_t contactCount = 0;       ///< tiles hit this frame; all stored iff <= capacity
     std::int32_t startOverlapCount = 0;  ///< solid tiles the box overlapped at the start (it may
                                          ///< leave them; they never block)
@@ -126,8 +126,7 @@ inline constexpr std::int32_t kInlineContacts = 64;
                                              Contact<float>* contacts = nullptr,
                                              std::int32_t contactCapacity = 0) noexcept;
 /// The same in double.
-[[nodiscard]] MoveResult<double> moveAndSlide(const PreparedMap<double>& map,
-                                              const MoveInput<double>& input,
+[[nodiscard]] MoveResult<double> moveAndSlide(const PreparedMap<double>& map, const MoveInput<double>& input,
                                               Contact<double>* contacts = nullptr,
                                               std::int32_t contactCapacity = 0) noexcept;
 

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cstdint>
-
 #include "tilesweep/math.h"
 #include "tilesweep/tile_map.h"
+
+#include <cstdint>
 
 // One frame of move-and-slide through a tile map, exactly as ../shared/CONTRACT.md defines it.
 //
@@ -48,17 +48,17 @@ struct Contact {
 /// What one frame moves: the box from its position by `displacement` through `map`.
 template <class T>
 struct SweepInput {
-    TileMapView<T> map;     ///< the grid; assumed to have passed validateTileMap
-    Box<T> box;             ///< the box at the start of the frame; size > 0, all finite
-    Vec2<T> displacement;   ///< the motion over the whole frame, finite; zero is valid
+    TileMapView<T> map;    ///< the grid; assumed to have passed validateTileMap
+    Box<T> box;            ///< the box at the start of the frame; size > 0, all finite
+    Vec2<T> displacement;  ///< the motion over the whole frame, finite; zero is valid
 };
 
 /// Caller-owned storage for the lists a resolve produces (the library never allocates).
 template <class T>
 struct ResolveOutput {
-    Contact<T>* contacts = nullptr;   ///< receives up to contactCapacity contacts
+    Contact<T>* contacts = nullptr;  ///< receives up to contactCapacity contacts
     std::int32_t contactCapacity = 0;
-    Cell* startOverlaps = nullptr;    ///< receives up to startOverlapCapacity cells
+    Cell* startOverlaps = nullptr;  ///< receives up to startOverlapCapacity cells
     std::int32_t startOverlapCapacity = 0;
 };
 
@@ -66,8 +66,8 @@ struct ResolveOutput {
 template <class T>
 struct SweepResult {
     Status status = Status::InvalidInput;
-    Vec2<T> position{};               ///< final box position; the start position on InvalidInput
-    std::int32_t contactCount = 0;    ///< contacts in the frame; more than capacity means truncated
+    Vec2<T> position{};                  ///< final box position; the start position on InvalidInput
+    std::int32_t contactCount = 0;       ///< contacts in the frame; more than capacity means truncated
     std::int32_t startOverlapCount = 0;  ///< solid cells the box overlapped at the start, likewise
 };
 
@@ -80,8 +80,7 @@ template <class T>
 /// a step by row, then column; start overlaps by row, then column. On invalid input returns
 /// Status::InvalidInput with the start position (zero motion) and no lists.
 template <class T>
-[[nodiscard]] SweepResult<T> resolveMove(const SweepInput<T>& input,
-                                         const ResolveOutput<T>& output) noexcept;
+[[nodiscard]] SweepResult<T> resolveMove(const SweepInput<T>& input, const ResolveOutput<T>& output) noexcept;
 
 extern template bool isValid<float>(const SweepInput<float>&) noexcept;
 extern template bool isValid<double>(const SweepInput<double>&) noexcept;

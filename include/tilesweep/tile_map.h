@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cstdint>
-
 #include "tilesweep/math.h"
+
+#include <cstdint>
 
 // The tile grid a box moves through.
 //
@@ -18,11 +18,12 @@ namespace tilesweep {
 /// A non-owning view of a grid of solid and empty cells; it borrows `solid`.
 template <class T>
 struct TileMapView {
-    Vec2<T> origin;               ///< top-left corner of cell (0, 0), in length units
-    Vec2<T> tileSize;             ///< width and height of one cell, > 0
-    std::int32_t columns = 0;     ///< number of cells per row, >= 0
-    std::int32_t rows = 0;        ///< number of rows, >= 0
-    const std::uint8_t* solid = nullptr;  ///< columns*rows flags, row-major from the top row; nonzero is solid
+    Vec2<T> origin;            ///< top-left corner of cell (0, 0), in length units
+    Vec2<T> tileSize;          ///< width and height of one cell, > 0
+    std::int32_t columns = 0;  ///< number of cells per row, >= 0
+    std::int32_t rows = 0;     ///< number of rows, >= 0
+    const std::uint8_t* solid =
+        nullptr;  ///< columns*rows flags, row-major from the top row; nonzero is solid
 
     /// True when cell (i, j) lies in the map and is solid; cells outside the map are empty.
     [[nodiscard]] constexpr bool isSolid(std::int64_t i, std::int64_t j) const noexcept {
@@ -33,12 +34,12 @@ struct TileMapView {
 /// Why a map is not valid; `None` when it is.
 enum class MapError : std::uint8_t {
     None,
-    NonFiniteOrigin,        ///< an origin component is NaN or infinite
-    NonPositiveTileSize,    ///< a tile size is not finite or not > 0
-    NegativeDimensions,     ///< columns or rows is negative, or the cells are missing
-    TooLarge,               ///< columns*rows exceeds kMaxCells
-    UnrepresentableEdgeX,   ///< some origin.x + i*tileSize.x, 0 <= i <= columns, is not a T
-    UnrepresentableEdgeY,   ///< some origin.y + j*tileSize.y, 0 <= j <= rows, is not a T
+    NonFiniteOrigin,       ///< an origin component is NaN or infinite
+    NonPositiveTileSize,   ///< a tile size is not finite or not > 0
+    NegativeDimensions,    ///< columns or rows is negative, or the cells are missing
+    TooLarge,              ///< columns*rows exceeds kMaxCells
+    UnrepresentableEdgeX,  ///< some origin.x + i*tileSize.x, 0 <= i <= columns, is not a T
+    UnrepresentableEdgeY,  ///< some origin.y + j*tileSize.y, 0 <= j <= rows, is not a T
 };
 
 /// The largest number of cells a map may have (2^31 - 1: a cell index fits an int32).

@@ -44,39 +44,47 @@ extern "C" {
 /** Why a call failed; TS_OK (0) when it did not. */
 typedef enum ts_error {
     TS_OK = 0,
-    TS_ERROR_NULL_ARGUMENT = 1,          /**< a required pointer is NULL */
-    TS_ERROR_INVALID_INPUT = 2,          /**< a mover has a non-finite value or a size <= 0 */
-    TS_ERROR_MAP_NON_FINITE_ORIGIN = 3,  /**< map origin is NaN or infinite */
+    TS_ERROR_NULL_ARGUMENT = 1,              /**< a required pointer is NULL */
+    TS_ERROR_INVALID_INPUT = 2,              /**< a mover has a non-finite value or a size <= 0 */
+    TS_ERROR_MAP_NON_FINITE_ORIGIN = 3,      /**< map origin is NaN or infinite */
     TS_ERROR_MAP_NON_POSITIVE_TILE_SIZE = 4, /**< a tile size is not finite and > 0 */
     TS_ERROR_MAP_NEGATIVE_DIMENSIONS = 5,    /**< columns or rows < 0, or cells missing */
-    TS_ERROR_MAP_TOO_LARGE = 6,          /**< more than 2^31 - 1 cells */
+    TS_ERROR_MAP_TOO_LARGE = 6,              /**< more than 2^31 - 1 cells */
     TS_ERROR_MAP_UNREPRESENTABLE_EDGE_X = 7, /**< some tile edge on x is not exactly a float/double */
     TS_ERROR_MAP_UNREPRESENTABLE_EDGE_Y = 8, /**< likewise on y */
     TS_ERROR_CONTACT_BUFFER_TOO_SMALL = 9,   /**< give ts_max_contacts_* entries */
-    TS_ERROR_CELL_OUT_OF_RANGE = 10,     /**< a cell index outside the map */
-    TS_ERROR_OUT_OF_MEMORY = 11,         /**< allocation failed (map or pool creation only) */
-    TS_ERROR_THREADS = 12                /**< a worker thread could not be started */
+    TS_ERROR_CELL_OUT_OF_RANGE = 10,         /**< a cell index outside the map */
+    TS_ERROR_OUT_OF_MEMORY = 11,             /**< allocation failed (map or pool creation only) */
+    TS_ERROR_THREADS = 12                    /**< a worker thread could not be started */
 } ts_error;
 
 /** How a move ended (ts_result_*.status). */
 typedef enum ts_move_status {
-    TS_MOVE_MOVED = 0,          /**< nothing hit: moved the whole way */
-    TS_MOVE_BLOCKED = 1,        /**< at least one tile hit */
-    TS_MOVE_INVALID_INPUT = 2,  /**< refused: nothing moved */
+    TS_MOVE_MOVED = 0,                   /**< nothing hit: moved the whole way */
+    TS_MOVE_BLOCKED = 1,                 /**< at least one tile hit */
+    TS_MOVE_INVALID_INPUT = 2,           /**< refused: nothing moved */
     TS_MOVE_CONTACT_BUFFER_TOO_SMALL = 3 /**< refused: contact_count is the buffer size needed */
 } ts_move_status;
 
-typedef struct ts_vec2f { float x, y; } ts_vec2f;
-typedef struct ts_vec2d { double x, y; } ts_vec2d;
+typedef struct ts_vec2f {
+    float x, y;
+} ts_vec2f;
+typedef struct ts_vec2d {
+    double x, y;
+} ts_vec2d;
 
 /** A box: the closed rectangle [pos, pos + size], size > 0. */
-typedef struct ts_box_f { ts_vec2f pos, size; } ts_box_f;
-typedef struct ts_box_d { ts_vec2d pos, size; } ts_box_d;
+typedef struct ts_box_f {
+    ts_vec2f pos, size;
+} ts_box_f;
+typedef struct ts_box_d {
+    ts_vec2d pos, size;
+} ts_box_d;
 
 /** A map to prepare: columns * rows cells, row-major from the top row, nonzero is solid. */
 typedef struct ts_map_desc_f {
-    ts_vec2f origin;     /**< top-left corner of cell (0, 0) */
-    ts_vec2f tile_size;  /**< > 0 */
+    ts_vec2f origin;    /**< top-left corner of cell (0, 0) */
+    ts_vec2f tile_size; /**< > 0 */
     int32_t columns;
     int32_t rows;
     const uint8_t* solid;
@@ -96,20 +104,26 @@ typedef struct ts_map_d ts_map_d;
 typedef struct ts_pool ts_pool;
 
 /** One mover's frame: its box at the start and its motion over the frame (velocity * dt). */
-typedef struct ts_mover_f { ts_box_f box; ts_vec2f displacement; } ts_mover_f;
-typedef struct ts_mover_d { ts_box_d box; ts_vec2d displacement; } ts_mover_d;
+typedef struct ts_mover_f {
+    ts_box_f box;
+    ts_vec2f displacement;
+} ts_mover_f;
+typedef struct ts_mover_d {
+    ts_box_d box;
+    ts_vec2d displacement;
+} ts_mover_d;
 
 /** What happened to one mover; the flags come from the normals of every contact. */
 typedef struct ts_result_f {
-    ts_vec2f position;   /**< the end position; the start unless moved or blocked */
-    uint8_t status;      /**< a ts_move_status */
-    uint8_t blocked_x;   /**< a tile stopped the motion on x (= on_wall) */
-    uint8_t blocked_y;   /**< a tile stopped the motion on y */
-    uint8_t on_ground;   /**< a contact with normal (0, -1) */
-    uint8_t on_ceiling;  /**< a contact with normal (0, 1) */
-    uint8_t on_wall;     /**< a contact with normal (+-1, 0) */
-    int8_t wall_normal_x;  /**< 1: wall on the left, -1: on the right, 0: none */
-    int32_t contact_count; /**< tiles hit; stored iff <= the capacity given */
+    ts_vec2f position;           /**< the end position; the start unless moved or blocked */
+    uint8_t status;              /**< a ts_move_status */
+    uint8_t blocked_x;           /**< a tile stopped the motion on x (= on_wall) */
+    uint8_t blocked_y;           /**< a tile stopped the motion on y */
+    uint8_t on_ground;           /**< a contact with normal (0, -1) */
+    uint8_t on_ceiling;          /**< a contact with normal (0, 1) */
+    uint8_t on_wall;             /**< a contact with normal (+-1, 0) */
+    int8_t wall_normal_x;        /**< 1: wall on the left, -1: on the right, 0: none */
+    int32_t contact_count;       /**< tiles hit; stored iff <= the capacity given */
     int32_t start_overlap_count; /**< solid tiles overlapped at the start (never blocking) */
 } ts_result_f;
 typedef struct ts_result_d {
@@ -126,8 +140,16 @@ typedef struct ts_result_d {
 } ts_result_d;
 
 /** One tile hit: cell (i, j), the normal leaving its face, the fraction of the frame elapsed. */
-typedef struct ts_contact_f { int32_t i, j; int8_t nx, ny; float time; } ts_contact_f;
-typedef struct ts_contact_d { int32_t i, j; int8_t nx, ny; double time; } ts_contact_d;
+typedef struct ts_contact_f {
+    int32_t i, j;
+    int8_t nx, ny;
+    float time;
+} ts_contact_f;
+typedef struct ts_contact_d {
+    int32_t i, j;
+    int8_t nx, ny;
+    double time;
+} ts_contact_d;
 
 /** A short English message naming the problem (a ts_error, or any other int); never NULL. */
 TILESWEEP_EXPORT const char* ts_error_message(int error);
@@ -150,10 +172,10 @@ TILESWEEP_EXPORT int32_t ts_max_contacts_d(ts_vec2d box_size, ts_vec2d tile_size
 /** Resolves one frame of one mover into *result. contacts (may be NULL) receives all of the
  *  frame's contacts when they fit in capacity, otherwise none. TS_ERROR_INVALID_INPUT and
  *  TS_ERROR_CONTACT_BUFFER_TOO_SMALL also fill *result (start position, its status). */
-TILESWEEP_EXPORT ts_error ts_move_and_slide_f(const ts_map_f* map, const ts_mover_f* mover, ts_result_f* result,
-                                              ts_contact_f* contacts, int32_t capacity);
-TILESWEEP_EXPORT ts_error ts_move_and_slide_d(const ts_map_d* map, const ts_mover_d* mover, ts_result_d* result,
-                                              ts_contact_d* contacts, int32_t capacity);
+TILESWEEP_EXPORT ts_error ts_move_and_slide_f(const ts_map_f* map, const ts_mover_f* mover,
+                                              ts_result_f* result, ts_contact_f* contacts, int32_t capacity);
+TILESWEEP_EXPORT ts_error ts_move_and_slide_d(const ts_map_d* map, const ts_mover_d* mover,
+                                              ts_result_d* result, ts_contact_d* contacts, int32_t capacity);
 
 /** Starts a pool of `threads` threads for the batch calls (the caller counts as one). */
 TILESWEEP_EXPORT ts_error ts_pool_create(int32_t threads, ts_pool** out);

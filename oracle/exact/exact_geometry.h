@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cstdint>
-#include <vector>
-
 #include "oracle/exact/rational.h"
 #include "oracle/exact/rational_convert.h"
+
 #include "tilesweep/math.h"
 #include "tilesweep/scene/scene.h"
+
+#include <cstdint>
+#include <vector>
 
 // Exact counterparts of the public value types: the contract's geometry with rational
 // coordinates. Conventions are those of CONTRACT.md: x grows right, y grows down, a box is the
@@ -67,7 +68,9 @@ struct ExactTileMap {
 }
 
 /// The component of v on axis a.
-[[nodiscard]] inline const Rational& component(const ExactVec2& v, Axis a) { return a == Axis::X ? v.x : v.y; }
+[[nodiscard]] inline const Rational& component(const ExactVec2& v, Axis a) {
+    return a == Axis::X ? v.x : v.y;
+}
 
 /// The exact value of a T vector (its components must be finite).
 template <class T>

@@ -1,12 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "oracle/exact/exact_resolve.h"
 
-#include <cmath>
+#include "oracle/exact/rational_convert.h"
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
-
-#include "oracle/exact/rational_convert.h"
 
 namespace tilesweep::oracle {
 namespace {
@@ -52,8 +51,8 @@ struct Blocker {
 
 // Every solid tile that blocks the move of `box` by `motion`, in row-major order. No broadphase:
 // each solid tile of the map is tested.
-std::vector<Blocker> findBlockers(const ExactTileMap& map, const std::vector<SolidTile>& tiles, const ExactBox& box,
-                                  const ExactVec2& motion) {
+std::vector<Blocker> findBlockers(const ExactTileMap& map, const std::vector<SolidTile>& tiles,
+                                  const ExactBox& box, const ExactVec2& motion) {
     std::vector<Blocker> blockers;
     const int signX = signOf(motion.x);
     const int signY = signOf(motion.y);
@@ -157,11 +156,14 @@ FrameResult<T> roundFrame(const ExactFrame& frame) {
     FrameResult<T> result;
     // Exact: the start is a T value. A final coordinate equal to the start is the start itself,
     // bits and all, so a -0 start stays -0.
-    const T startX = frame.startXIsNegativeZero ? -T(0) : fromRational<T>(frame.start.x, Rounding::NearestEven);
-    const T startY = frame.startYIsNegativeZero ? -T(0) : fromRational<T>(frame.start.y, Rounding::NearestEven);
+    const T startX =
+        frame.startXIsNegativeZero ? -T(0) : fromRational<T>(frame.start.x, Rounding::NearestEven);
+    const T startY =
+        frame.startYIsNegativeZero ? -T(0) : fromRational<T>(frame.start.y, Rounding::NearestEven);
     result.position = {
         roundFinalCoordinate<T>(frame.position.x, startX, frame.size.x, frame.gridOrigin.x, frame.tileSize.x),
-        roundFinalCoordinate<T>(frame.position.y, startY, frame.size.y, frame.gridOrigin.y, frame.tileSize.y)};
+        roundFinalCoordinate<T>(frame.position.y, startY, frame.size.y, frame.gridOrigin.y,
+                                frame.tileSize.y)};
     result.contacts.reserve(frame.contacts.size());
     for (const ExactContact& c : frame.contacts) {
         result.contacts.push_back({c.tile, c.normal, fromRational<T>(c.time, Rounding::NearestEven)});

@@ -1,15 +1,16 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cstdint>
-#include <vector>
-
 #include "oracle/exact/exact_geometry.h"
 #include "oracle/exact/exact_sweep.h"
 #include "oracle/exact/rational.h"
+
 #include "tilesweep/math.h"
 #include "tilesweep/resolve.h"
 #include "tilesweep/scene/scene.h"
+
+#include <cstdint>
+#include <vector>
 
 // The exact reference: one frame through a map, and whole scenes, exactly as CONTRACT.md defines
 // them ("One frame through a map"), in rational arithmetic. It tests every solid tile of the map
@@ -31,24 +32,24 @@ namespace tilesweep::oracle {
 
 /// One tile hit during a frame, exactly.
 struct ExactContact {
-    Cell tile;            ///< the cell that was hit
-    Normal normal;        ///< (-sign(r_x), 0) or (0, -sign(r_y)), r being the step's motion
-    Rational time;        ///< fraction of the whole frame elapsed at the hit, in [0, 1)
+    Cell tile;              ///< the cell that was hit
+    Normal normal;          ///< (-sign(r_x), 0) or (0, -sign(r_y)), r being the step's motion
+    Rational time;          ///< fraction of the whole frame elapsed at the hit, in [0, 1)
     std::int32_t step = 1;  ///< 1 or 2: the step of the frame loop that recorded it
-    bool tie = false;     ///< the two axes entered at the same time (the tie rule chose the axis)
+    bool tie = false;       ///< the two axes entered at the same time (the tie rule chose the axis)
 };
 
 /// One frame, exactly.
 struct ExactFrame {
-    ExactVec2 start;                    ///< the position the frame started from (a T value, exactly)
-    bool startXIsNegativeZero = false;  ///< the start's x was -0 (a rational has no sign of zero)
-    bool startYIsNegativeZero = false;  ///< likewise y; a position equal to the start keeps its bits
-    ExactVec2 size;                     ///< the box's size, for the rounding rule's far edge
-    ExactVec2 gridOrigin;               ///< the map's origin and tile size: the grid lines of
-    ExactVec2 tileSize;                 ///< the rounding rule, on and off the map
-    ExactVec2 position;                 ///< the exact final position
-    std::vector<ExactContact> contacts; ///< step by step; within a step by row, then column
-    std::vector<Cell> startOverlaps;    ///< solid cells overlapped at the start, by row then column
+    ExactVec2 start;                     ///< the position the frame started from (a T value, exactly)
+    bool startXIsNegativeZero = false;   ///< the start's x was -0 (a rational has no sign of zero)
+    bool startYIsNegativeZero = false;   ///< likewise y; a position equal to the start keeps its bits
+    ExactVec2 size;                      ///< the box's size, for the rounding rule's far edge
+    ExactVec2 gridOrigin;                ///< the map's origin and tile size: the grid lines of
+    ExactVec2 tileSize;                  ///< the rounding rule, on and off the map
+    ExactVec2 position;                  ///< the exact final position
+    std::vector<ExactContact> contacts;  ///< step by step; within a step by row, then column
+    std::vector<Cell> startOverlaps;     ///< solid cells overlapped at the start, by row then column
 };
 
 /// Resolves one frame of `box` moving by `displacement` through `map`, exactly.

@@ -18,11 +18,13 @@ bool operator==(const ExtendedTime& a, const ExtendedTime& b) {
 }
 
 bool operator<(const ExtendedTime& a, const Rational& t) {
-    return a.kind == ExtendedTime::Kind::NegativeInfinity || (a.kind == ExtendedTime::Kind::Finite && a.value < t);
+    return a.kind == ExtendedTime::Kind::NegativeInfinity ||
+           (a.kind == ExtendedTime::Kind::Finite && a.value < t);
 }
 
 bool operator<(const Rational& t, const ExtendedTime& a) {
-    return a.kind == ExtendedTime::Kind::PositiveInfinity || (a.kind == ExtendedTime::Kind::Finite && t < a.value);
+    return a.kind == ExtendedTime::Kind::PositiveInfinity ||
+           (a.kind == ExtendedTime::Kind::Finite && t < a.value);
 }
 
 namespace {
@@ -77,9 +79,11 @@ TimeInterval axisOverlapTimes(const Rational& boxMin, const Rational& boxSize, c
     const Rational leadingEdgeMeets = (tileMin - boxMax) / d;   // box's max edge reaches the tile's min edge
     const Rational trailingEdgeMeets = (tileMax - boxMin) / d;  // box's min edge reaches the tile's max edge
     if (d > 0) {
-        return TimeInterval::open(ExtendedTime::finite(leadingEdgeMeets), ExtendedTime::finite(trailingEdgeMeets));
+        return TimeInterval::open(ExtendedTime::finite(leadingEdgeMeets),
+                                  ExtendedTime::finite(trailingEdgeMeets));
     }
-    return TimeInterval::open(ExtendedTime::finite(trailingEdgeMeets), ExtendedTime::finite(leadingEdgeMeets));
+    return TimeInterval::open(ExtendedTime::finite(trailingEdgeMeets),
+                              ExtendedTime::finite(leadingEdgeMeets));
 }
 
 ExactSweepOutput sweepTileExact(const ExactSweepInput& input) {

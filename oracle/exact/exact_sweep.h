@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cstdint>
-
 #include "oracle/exact/exact_geometry.h"
 #include "oracle/exact/rational.h"
+
 #include "tilesweep/math.h"
+
+#include <cstdint>
 
 // One box against one tile, in exact arithmetic, straight from CONTRACT.md ("One box against one
 // tile"). The box moves by d: at time t it is at pos + t*d. On each axis the times at which the
@@ -67,8 +68,9 @@ struct TimeInterval {
 
 /// The times at which the projection [boxMin, boxMin + boxSize] moving by d overlaps
 /// [tileMin, tileMax] on one axis, strictly.
-[[nodiscard]] TimeInterval axisOverlapTimes(const Rational& boxMin, const Rational& boxSize, const Rational& d,
-                                            const Rational& tileMin, const Rational& tileMax);
+[[nodiscard]] TimeInterval axisOverlapTimes(const Rational& boxMin, const Rational& boxSize,
+                                            const Rational& d, const Rational& tileMin,
+                                            const Rational& tileMax);
 
 /// What a box does against one tile over one move.
 enum class ExactSweepState : std::uint8_t {

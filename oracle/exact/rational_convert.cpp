@@ -42,9 +42,8 @@ std::int64_t floorLog2(const Integer& numerator, const Integer& denominator) {
     auto e = static_cast<std::int64_t>(boost::multiprecision::msb(numerator)) -
              static_cast<std::int64_t>(boost::multiprecision::msb(denominator));
     // Now 2^(e-1) < a < 2^(e+1); one comparison settles which side of 2^e it is.
-    const bool belowPowerOfTwo =
-        e >= 0 ? numerator < (denominator << static_cast<unsigned>(e))
-               : (numerator << static_cast<unsigned>(-e)) < denominator;
+    const bool belowPowerOfTwo = e >= 0 ? numerator < (denominator << static_cast<unsigned>(e))
+                                        : (numerator << static_cast<unsigned>(-e)) < denominator;
     if (belowPowerOfTwo) {
         --e;
     }
@@ -59,7 +58,7 @@ Rational toRational(double value) { return dyadicValue(value); }
 template <class T>
 T fromRational(const Rational& q, Rounding rounding) {
     static_assert(std::numeric_limits<T>::is_iec559 && std::numeric_limits<T>::radix == 2);
-    constexpr std::int64_t kDigits = std::numeric_limits<T>::digits;           // p: 24 or 53
+    constexpr std::int64_t kDigits = std::numeric_limits<T>::digits;                 // p: 24 or 53
     constexpr std::int64_t kMinExponent = std::numeric_limits<T>::min_exponent - 1;  // -126, -1022
     constexpr std::int64_t kMaxExponent = std::numeric_limits<T>::max_exponent - 1;  // 127, 1023
 
@@ -102,8 +101,9 @@ T fromRational(const Rational& q, Rounding rounding) {
             break;
         case Rounding::NearestEven: {
             const Integer twiceRemainder = remainder << 1U;
-            awayFromZero = twiceRemainder > scaledDenominator ||
-                           (twiceRemainder == scaledDenominator && boost::multiprecision::bit_test(multiple, 0));
+            awayFromZero =
+                twiceRemainder > scaledDenominator ||
+                (twiceRemainder == scaledDenominator && boost::multiprecision::bit_test(multiple, 0));
             break;
         }
     }
@@ -113,8 +113,9 @@ T fromRational(const Rational& q, Rounding rounding) {
 
     // Overflow: the largest finite value is (2^p - 1) * 2^(emax - p + 1).
     const std::int64_t topQuantumExponent = kMaxExponent - (kDigits - 1);
-    const bool overflows = quantumExponent > topQuantumExponent ||
-                           (quantumExponent == topQuantumExponent && multiple == (Integer(1) << static_cast<unsigned>(kDigits)));
+    const bool overflows =
+        quantumExponent > topQuantumExponent ||
+        (quantumExponent == topQuantumExponent && multiple == (Integer(1) << static_cast<unsigned>(kDigits)));
     T result;
     if (overflows) {
         result = towardZeroDirected ? std::numeric_limits<T>::max() : std::numeric_limits<T>::infinity();
@@ -171,7 +172,8 @@ template float fromRational<float>(const Rational&, Rounding);
 template double fromRational<double>(const Rational&, Rounding);
 template float roundToward<float>(const Rational&, float);
 template double roundToward<double>(const Rational&, double);
-template float roundFinalCoordinate<float>(const Rational&, float, const Rational&, const Rational&, const Rational&);
+template float roundFinalCoordinate<float>(const Rational&, float, const Rational&, const Rational&,
+                                           const Rational&);
 template double roundFinalCoordinate<double>(const Rational&, double, const Rational&, const Rational&,
                                              const Rational&);
 

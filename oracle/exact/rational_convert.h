@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cstdint>
-
 #include "oracle/exact/rational.h"
+
+#include <cstdint>
 
 // Exact conversions between IEEE binary floating point (float, double) and Rational.
 //
@@ -50,8 +50,8 @@ template <class T>
 /// value lies at or below `exact` (it is below the lowest finite T), the rounding toward the
 /// start stands.
 template <class T>
-[[nodiscard]] T roundFinalCoordinate(const Rational& exact, T from, const Rational& size, const Rational& gridOrigin,
-                                     const Rational& tile);
+[[nodiscard]] T roundFinalCoordinate(const Rational& exact, T from, const Rational& size,
+                                     const Rational& gridOrigin, const Rational& tile);
 
 /// Whether a grid line gridOrigin + k*tile (k any integer, tile > 0) lies in [low, high).
 [[nodiscard]] bool gridLineIn(const Rational& low, const Rational& high, const Rational& gridOrigin,

@@ -21,7 +21,8 @@ Rect<T> rectOf(Vec2<T> pos, Vec2<T> size) {
 
 template <class T>
 Rect<T> tileRect(const TileMap<T>& map, std::int32_t i, std::int32_t j) {
-    return {map.origin.x + static_cast<T>(i) * map.tileSize.x, map.origin.y + static_cast<T>(j) * map.tileSize.y,
+    return {map.origin.x + static_cast<T>(i) * map.tileSize.x,
+            map.origin.y + static_cast<T>(j) * map.tileSize.y,
             map.origin.x + static_cast<T>(i + 1) * map.tileSize.x,
             map.origin.y + static_cast<T>(j + 1) * map.tileSize.y};
 }
@@ -79,7 +80,8 @@ FrameResult<T> resolveFrameSeed(const TileMap<T>& map, const Box<T>& box, Vec2<T
             }
             const T back = T(1) - time;
             current = {current.x - back * velocity.x, current.y - back * velocity.y};
-            const Normal normal = timeX < timeY ? Normal{0, againstSign(velocity.y)} : Normal{againstSign(velocity.x), 0};
+            const Normal normal =
+                timeX < timeY ? Normal{0, againstSign(velocity.y)} : Normal{againstSign(velocity.x), 0};
             result.contacts.push_back({{i, j}, normal, time});
         }
     }
@@ -98,9 +100,10 @@ std::vector<FrameResult<T>> resolveSceneSeed(const Scene<T>& scene, T epsilon) {
     return frames;
 }
 
-template FrameResult<float> resolveFrameSeed<float>(const TileMap<float>&, const Box<float>&, Vec2<float>, float);
-template FrameResult<double> resolveFrameSeed<double>(const TileMap<double>&, const Box<double>&, Vec2<double>,
-                                                      double);
+template FrameResult<float> resolveFrameSeed<float>(const TileMap<float>&, const Box<float>&, Vec2<float>,
+                                                    float);
+template FrameResult<double> resolveFrameSeed<double>(const TileMap<double>&, const Box<double>&,
+                                                      Vec2<double>, double);
 template std::vector<FrameResult<float>> resolveSceneSeed<float>(const Scene<float>&, float);
 template std::vector<FrameResult<double>> resolveSceneSeed<double>(const Scene<double>&, double);
 

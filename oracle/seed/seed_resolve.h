@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <vector>
-
 #include "tilesweep/math.h"
 #include "tilesweep/scene/scene.h"
+
+#include <vector>
 
 // The seed article's algorithm as written (shared/seed/swept-aabb-tile-collision.txt), in T,
 // kept only as a measured baseline: what a straightforward implementation gets wrong. Usable as
@@ -62,8 +62,8 @@ template <class T>
 template <class T>
 [[nodiscard]] std::vector<FrameResult<T>> resolveSceneSeed(const Scene<T>& scene, T epsilon = T(0));
 
-extern template FrameResult<float> resolveFrameSeed<float>(const TileMap<float>&, const Box<float>&, Vec2<float>,
-                                                           float);
+extern template FrameResult<float> resolveFrameSeed<float>(const TileMap<float>&, const Box<float>&,
+                                                           Vec2<float>, float);
 extern template FrameResult<double> resolveFrameSeed<double>(const TileMap<double>&, const Box<double>&,
                                                              Vec2<double>, double);
 extern template std::vector<FrameResult<float>> resolveSceneSeed<float>(const Scene<float>&, float);

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "oracle/substep/substep_float.h"
 
+#include "oracle/substep/normal_guess.h"
+
 #include <cmath>
 #include <stdexcept>
 #include <vector>
-
-#include "oracle/substep/normal_guess.h"
 
 namespace tilesweep::oracle {
 namespace {
@@ -87,8 +87,9 @@ std::vector<SubstepFrame<T>> resolveSceneSubstepFloat(const Scene<T>& scene, std
                 const FloatRect<T> tile = tileAt(map, c.i, c.j);
                 if (overlapsX(at, tile) && overlapsY(at, tile)) {
                     const FloatRect<T> before = boxAt(previous, size);
-                    const Normal normal = guessNormal(!overlapsX(before, tile), !overlapsY(before, tile),
-                                                      signOf(d.x), signOf(d.y), std::fabs(d.x) > std::fabs(d.y));
+                    const Normal normal =
+                        guessNormal(!overlapsX(before, tile), !overlapsY(before, tile), signOf(d.x),
+                                    signOf(d.y), std::fabs(d.x) > std::fabs(d.y));
                     out.frame.contacts.push_back({c, normal, static_cast<T>(k) / n});
                 }
             }
@@ -106,6 +107,7 @@ std::vector<SubstepFrame<T>> resolveSceneSubstepFloat(const Scene<T>& scene, std
 }
 
 template std::vector<SubstepFrame<float>> resolveSceneSubstepFloat<float>(const Scene<float>&, std::int64_t);
-template std::vector<SubstepFrame<double>> resolveSceneSubstepFloat<double>(const Scene<double>&, std::int64_t);
+template std::vector<SubstepFrame<double>> resolveSceneSubstepFloat<double>(const Scene<double>&,
+                                                                            std::int64_t);
 
 }  // namespace tilesweep::oracle

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "oracle/substep/substep_oracle.h"
+
+#include "tilesweep/scene/scene.h"
+
 #include <cstdint>
 #include <vector>
-
-#include "oracle/substep/substep_oracle.h"
-#include "tilesweep/scene/scene.h"
 
 // The game-style substep loop a tutorial would write, kept as a baseline that is known to be
 // wrong: everything in T. The step d/N is rounded once, the position is accumulated with
@@ -25,7 +26,8 @@ namespace tilesweep::oracle {
 /// Runs every frame of a scene through the game-style T substep loop, usable as
 /// `--resolver substep-float:N`. Throws std::invalid_argument when substeps < 1.
 template <class T>
-[[nodiscard]] std::vector<SubstepFrame<T>> resolveSceneSubstepFloat(const Scene<T>& scene, std::int64_t substeps);
+[[nodiscard]] std::vector<SubstepFrame<T>> resolveSceneSubstepFloat(const Scene<T>& scene,
+                                                                    std::int64_t substeps);
 
 extern template std::vector<SubstepFrame<float>> resolveSceneSubstepFloat<float>(const Scene<float>&,
                                                                                  std::int64_t);

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "oracle/substep/substep_oracle.h"
 
-#include <stdexcept>
-#include <vector>
-
 #include "oracle/exact/rational_convert.h"
 #include "oracle/substep/normal_guess.h"
+
+#include <stdexcept>
+#include <vector>
 
 namespace tilesweep::oracle {
 namespace {
@@ -73,8 +73,8 @@ SubstepOverlap search(const ExactTileMap& map, const ExactBox& box, const ExactV
 
 }  // namespace
 
-SubstepOverlap findFirstOverlapExact(const ExactTileMap& map, const ExactBox& box, const ExactVec2& displacement,
-                                     std::int64_t substeps) {
+SubstepOverlap findFirstOverlapExact(const ExactTileMap& map, const ExactBox& box,
+                                     const ExactVec2& displacement, std::int64_t substeps) {
     std::vector<Candidate> candidates;
     return search(map, box, displacement, substeps, candidates);
 }

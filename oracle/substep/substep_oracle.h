@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cstdint>
-#include <vector>
-
 #include "oracle/exact/exact_geometry.h"
 #include "oracle/exact/rational.h"
+
 #include "tilesweep/math.h"
 #include "tilesweep/resolve.h"
 #include "tilesweep/scene/scene.h"
+
+#include <cstdint>
+#include <vector>
 
 // The fine-substep oracle: the "per-pixel" method of the seed article, done exactly. The box is
 // placed at the exact positions pos + (k/N)*d, k = 1..N, and each is tested for plain (strict)
@@ -30,10 +31,10 @@ namespace tilesweep::oracle {
 
 /// The first substep at which the moving box overlaps a solid tile.
 struct SubstepOverlap {
-    std::int64_t substeps = 0;         ///< N, the number of equal substeps
-    std::int64_t firstOverlap = 0;     ///< k in [1, N] of the first overlapping substep; 0 when none
-    std::vector<Cell> tiles;           ///< tiles overlapped at substep k, by row then column
-    std::vector<Cell> startOverlaps;   ///< solid tiles overlapped at t = 0 (never tested), by row then column
+    std::int64_t substeps = 0;        ///< N, the number of equal substeps
+    std::int64_t firstOverlap = 0;    ///< k in [1, N] of the first overlapping substep; 0 when none
+    std::vector<Cell> tiles;          ///< tiles overlapped at substep k, by row then column
+    std::vector<Cell> startOverlaps;  ///< solid tiles overlapped at t = 0 (never tested), by row then column
 
     /// True when some substep overlapped.
     [[nodiscard]] bool found() const { return firstOverlap > 0; }
@@ -80,7 +81,9 @@ template <class T>
     return results;
 }
 
-extern template std::vector<SubstepFrame<float>> resolveSceneSubstep<float>(const Scene<float>&, std::int64_t);
-extern template std::vector<SubstepFrame<double>> resolveSceneSubstep<double>(const Scene<double>&, std::int64_t);
+extern template std::vector<SubstepFrame<float>> resolveSceneSubstep<float>(const Scene<float>&,
+                                                                            std::int64_t);
+extern template std::vector<SubstepFrame<double>> resolveSceneSubstep<double>(const Scene<double>&,
+                                                                              std::int64_t);
 
 }  // namespace tilesweep::oracle

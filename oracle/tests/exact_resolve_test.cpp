@@ -6,16 +6,16 @@
 
 #include "oracle/exact/exact_resolve.h"
 
+#include "oracle/exact/exact_sweep.h"
+#include "oracle/exact/rational_convert.h"
+#include "scene_builder.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
-
-#include "oracle/exact/exact_sweep.h"
-#include "oracle/exact/rational_convert.h"
-#include "scene_builder.h"
 
 namespace tilesweep::oracle {
 namespace {
@@ -58,18 +58,21 @@ ExactFrame onlyFrame(const Scene<float>& scene) {
 
 TEST(ExactSweep, movingAxisGivesTheOpenIntervalBetweenTheTwoEdgeMeetings) {
     // Box [0, 10] moving +20 against [30, 40]: entry (30 - 10)/20 = 1, exit (40 - 0)/20 = 2.
-    const TimeInterval forward = axisOverlapTimes(Rational(0), Rational(10), Rational(20), Rational(30), Rational(40));
+    const TimeInterval forward =
+        axisOverlapTimes(Rational(0), Rational(10), Rational(20), Rational(30), Rational(40));
     ASSERT_FALSE(forward.empty);
     EXPECT_EQ(forward.low.value, Rational(1));
     EXPECT_EQ(forward.high.value, Rational(2));
     // The same box at 50 moving -20: entry (40 - 50)/-20 = 1/2, exit (30 - 60)/-20 = 3/2.
-    const TimeInterval backward = axisOverlapTimes(Rational(50), Rational(10), Rational(-20), Rational(30), Rational(40));
+    const TimeInterval backward =
+        axisOverlapTimes(Rational(50), Rational(10), Rational(-20), Rational(30), Rational(40));
     EXPECT_EQ(backward.low.value, ratio(1, 2));
     EXPECT_EQ(backward.high.value, ratio(3, 2));
 }
 
 TEST(ExactSweep, stillAxisIsAllTimesOrNone) {
-    const TimeInterval inside = axisOverlapTimes(Rational(35), Rational(2), Rational(0), Rational(30), Rational(40));
+    const TimeInterval inside =
+        axisOverlapTimes(Rational(35), Rational(2), Rational(0), Rational(30), Rational(40));
     EXPECT_FALSE(inside.empty);
     EXPECT_EQ(inside.low.kind, ExtendedTime::Kind::NegativeInfinity);
     EXPECT_EQ(inside.high.kind, ExtendedTime::Kind::PositiveInfinity);
@@ -133,8 +136,8 @@ TEST(ExactResolve, pathExactlyThroughACornerPointDoesNotBlock) {
     // x: entry (16 - 24)/32 = -1/4, exit (32 - 16)/32 = 1/2. y: entry (32 - 48)/-32 = 1/2,
     // exit (16 - 56)/-32 = 5/4. I = (1/2, 1/2) is empty: at t = 1/2 the box's corner touches
     // the tile's corner (32, 32), and touching is not overlapping.
-    const auto scene = makeScene<float>(makeMap<float>({"....", ".#..", "....", "...."}),
-                                        {{16, 48}, {8, 8}}, {{32, -32}});
+    const auto scene =
+        makeScene<float>(makeMap<float>({"....", ".#..", "....", "...."}), {{16, 48}, {8, 8}}, {{32, -32}});
     const ExactFrame frame = onlyFrame(scene);
     expectContacts(frame, {});
     expectPosition(frame, Rational(48), Rational(16));
@@ -211,8 +214,8 @@ TEST(ExactResolve, twoStepsFloorThenWallComposeFrameTimes) {
     // Step 1: p = (50, 22), r = (2/5)(50, 30) -> (20, 0). Step 2: box [50, 60] x [22, 32];
     // (4, 1) = [64, 80] x [16, 32] overlaps on y; x entry (64 - 60)/20 = 1/5. Frame time
     // 3/5 + (1/5)(2/5) = 17/25. p = (54, 22).
-    const ExactFrame frame = onlyFrame(makeScene<float>(makeMap<float>({"....#", "....#", "#####"}),
-                                                        {{20, 4}, {10, 10}}, {{50, 30}}));
+    const ExactFrame frame = onlyFrame(
+        makeScene<float>(makeMap<float>({"....#", "....#", "#####"}), {{20, 4}, {10, 10}}, {{50, 30}}));
     expectContacts(frame, {{{3, 2}, {0, -1}, ratio(3, 5), 1}, {{4, 1}, {-1, 0}, ratio(17, 25), 2}});
     expectPosition(frame, Rational(54), Rational(22));
 }
@@ -235,10 +238,9 @@ TEST(ExactResolve, landingAcrossASeamThenSlidingAlongTheFloor) {
     for (int k = 0; k < kSlideFrames; ++k) {
         moves.push_back({12, 4});
     }
-    const auto scene =
-        makeScene<float>(makeMap<float>({std::string(24, '.'), std::string(24, '.'), std::string(24, '.'),
-                                         std::string(24, '#')}),
-                         {{4, 20}, {12, 12}}, moves);
+    const auto scene = makeScene<float>(makeMap<float>({std::string(24, '.'), std::string(24, '.'),
+                                                        std::string(24, '.'), std::string(24, '#')}),
+                                        {{4, 20}, {12, 12}}, moves);
     const std::vector<ExactFrame> frames = resolveSceneExact(scene);
     ASSERT_EQ(frames.size(), moves.size());
     expectContacts(frames[0], {{{0, 3}, {0, -1}, ratio(4, 5), 1}, {{1, 3}, {0, -1}, ratio(4, 5), 1}});
@@ -264,7 +266,8 @@ TEST(ExactResolve, restingOnAFloorUnderGravityStaysPutFrameAfterFrame) {
     // Tiles (0, 2) and (1, 2) overlap it on x (all times, x does not move); y entry
     // (32 - 32)/(1/2) = 0: both block at 0 on y, normal (0, -1). r -> 0; the box stays.
     std::vector<Vec2<float>> moves(50, Vec2<float>{0, 0.5f});
-    const auto scene = makeScene<float>(makeMap<float>({"....", "....", "####"}), {{10, 17.5f}, {12, 14.5f}}, moves);
+    const auto scene =
+        makeScene<float>(makeMap<float>({"....", "....", "####"}), {{10, 17.5f}, {12, 14.5f}}, moves);
     const std::vector<ExactFrame> frames = resolveSceneExact(scene);
     for (const ExactFrame& frame : frames) {
         expectContacts(frame, {{{0, 2}, {0, -1}, Rational(0), 1}, {{1, 2}, {0, -1}, Rational(0), 1}});
@@ -337,8 +340,8 @@ TEST(ExactResolve, nonDyadicFrameTimeOfOneThird) {
 TEST(ExactResolve, startedOverlappingTileDoesNotBlockAndIsReported) {
     // Box [20, 28] x [20, 28] inside tile (1, 1) = [16, 32]^2, moving (-20, 0): 0 is in I, so
     // it never blocks; the box leaves to (0, 20). Reported in startOverlaps.
-    const ExactFrame frame = onlyFrame(
-        makeScene<float>(makeMap<float>({"....", ".#..", "...."}), {{20, 20}, {8, 8}}, {{-20, 0}}));
+    const ExactFrame frame =
+        onlyFrame(makeScene<float>(makeMap<float>({"....", ".#..", "...."}), {{20, 20}, {8, 8}}, {{-20, 0}}));
     expectContacts(frame, {});
     ASSERT_EQ(frame.startOverlaps.size(), 1U);
     EXPECT_EQ(frame.startOverlaps[0], (Cell{1, 1}));
@@ -396,8 +399,8 @@ TEST(ExactResolve, contactPositionRoundsToTheFreeSideOfTheFace) {
     // y range [10.3f, 10.3f + 9.9f] reaches past 16). It stops touching: exact x = 48 - 12.3f,
     // which needs 2^-20 resolution while floats near 35.7 are spaced 2^-18, so the float is the
     // largest one below it: less than one ulp short, never inside the tile.
-    const auto scene = makeScene<float>(makeMap<float>({"....", "...#"}), {{0.1f, 10.3f}, {12.3f, 9.9f}},
-                                        {{60.7f, 0}});
+    const auto scene =
+        makeScene<float>(makeMap<float>({"....", "...#"}), {{0.1f, 10.3f}, {12.3f, 9.9f}}, {{60.7f, 0}});
     const ExactFrame frame = onlyFrame(scene);
     const Rational touching = Rational(48) - toRational(12.3f);
     ASSERT_EQ(frame.contacts.size(), 1U);
@@ -413,8 +416,10 @@ TEST(ExactResolve, contactPositionRoundsToTheFreeSideOfTheFace) {
 
 TEST(ExactResolve, doubleAndFloatScenesGiveTheSameDecisions) {
     // Dyadic inputs are the same numbers in float and double, so the exact frames agree.
-    const auto f = makeScene<float>(makeMap<float>({"....#", "....#", "#####"}), {{20, 4}, {10, 10}}, {{50, 30}});
-    const auto d = makeScene<double>(makeMap<double>({"....#", "....#", "#####"}), {{20, 4}, {10, 10}}, {{50, 30}});
+    const auto f =
+        makeScene<float>(makeMap<float>({"....#", "....#", "#####"}), {{20, 4}, {10, 10}}, {{50, 30}});
+    const auto d =
+        makeScene<double>(makeMap<double>({"....#", "....#", "#####"}), {{20, 4}, {10, 10}}, {{50, 30}});
     const ExactFrame ef = resolveSceneExact(f).at(0);
     const ExactFrame ed = resolveSceneExact(d).at(0);
     ASSERT_EQ(ef.contacts.size(), ed.contacts.size());

@@ -4,6 +4,11 @@
 // in T (read straight into T from their text), error lines as errors (the message is free text).
 // Scenes are read with the project's scene reader, tilesweep::parseScene<T>.
 
+#include "expected_json.h"
+#include "oracle/exact/exact_resolve.h"
+
+#include "tilesweep/scene/scene.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -11,10 +16,6 @@
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include "expected_json.h"
-#include "oracle/exact/exact_resolve.h"
-#include "tilesweep/scene/scene.h"
 
 #ifndef TILESWEEP_EXAMPLES_DIR
 #error "TILESWEEP_EXAMPLES_DIR must name the directory holding scenes.jsonl"

@@ -142,8 +142,9 @@ private:
             return value;
         }
         const std::size_t start = pos_;
-        while (pos_ < text_.size() && (std::isdigit(static_cast<unsigned char>(text_[pos_])) != 0 ||
-                                       std::string_view("+-.eE").find(text_[pos_]) != std::string_view::npos)) {
+        while (pos_ < text_.size() &&
+               (std::isdigit(static_cast<unsigned char>(text_[pos_])) != 0 ||
+                std::string_view("+-.eE").find(text_[pos_]) != std::string_view::npos)) {
             ++pos_;
         }
         if (start == pos_) {

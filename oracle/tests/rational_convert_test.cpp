@@ -32,7 +32,8 @@ bool sameBits(T a, T b) {
     return std::memcmp(&a, &b, sizeof(T)) == 0;
 }
 
-constexpr Rounding kAllRoundings[] = {Rounding::TowardNegative, Rounding::TowardPositive, Rounding::NearestEven};
+constexpr Rounding kAllRoundings[] = {Rounding::TowardNegative, Rounding::TowardPositive,
+                                      Rounding::NearestEven};
 
 TEST(RationalConvert, floatToRationalIsTheExactDyadicValue) {
     EXPECT_EQ(toRational(0.0f), Rational(0));
@@ -50,7 +51,8 @@ TEST(RationalConvert, floatToRationalIsTheExactDyadicValue) {
     EXPECT_EQ(toRational(std::numeric_limits<double>::max()), (pow2(53) - 1) * pow2(971));
     EXPECT_EQ(toRational(-std::numeric_limits<double>::max()), -(pow2(53) - 1) * pow2(971));
     // The largest float subnormal: (2^23 - 1) * 2^-149.
-    EXPECT_EQ(toRational(std::nextafter(std::numeric_limits<float>::min(), 0.0f)), (pow2(23) - 1) * pow2(-149));
+    EXPECT_EQ(toRational(std::nextafter(std::numeric_limits<float>::min(), 0.0f)),
+              (pow2(23) - 1) * pow2(-149));
 }
 
 TEST(RationalConvert, nonFiniteValuesAreRefused) {
@@ -125,8 +127,9 @@ TEST(RationalConvert, roundingUpCarriesIntoTheNextBinade) {
 }
 
 TEST(RationalConvert, nearestBreaksTiesToEven) {
-    EXPECT_EQ(fromRational<float>(1 + pow2(-24), Rounding::NearestEven), 1.0f);                  // 1 is even
-    EXPECT_EQ(fromRational<float>(1 + 3 * pow2(-24), Rounding::NearestEven), 1.0f + 0x1p-22f);  // 1+2^-23 is odd
+    EXPECT_EQ(fromRational<float>(1 + pow2(-24), Rounding::NearestEven), 1.0f);  // 1 is even
+    EXPECT_EQ(fromRational<float>(1 + 3 * pow2(-24), Rounding::NearestEven),
+              1.0f + 0x1p-22f);  // 1+2^-23 is odd
     EXPECT_EQ(fromRational<float>(1 + pow2(-24) + pow2(-80), Rounding::NearestEven), 1.0f + 0x1p-23f);
     EXPECT_EQ(fromRational<double>(1 + pow2(-53), Rounding::NearestEven), 1.0);
     EXPECT_EQ(fromRational<double>(1 + 3 * pow2(-53), Rounding::NearestEven), 1.0 + 0x1p-51);
@@ -135,8 +138,10 @@ TEST(RationalConvert, nearestBreaksTiesToEven) {
 
 TEST(RationalConvert, subnormalsUseTheFixedQuantum) {
     const float tiny = std::numeric_limits<float>::denorm_min();  // 2^-149
-    EXPECT_EQ(fromRational<float>(ratio(3, 2) * pow2(-149), Rounding::NearestEven), 2 * tiny);  // tie, 1 is odd
-    EXPECT_EQ(fromRational<float>(ratio(5, 2) * pow2(-149), Rounding::NearestEven), 2 * tiny);  // tie, 2 is even
+    EXPECT_EQ(fromRational<float>(ratio(3, 2) * pow2(-149), Rounding::NearestEven),
+              2 * tiny);  // tie, 1 is odd
+    EXPECT_EQ(fromRational<float>(ratio(5, 2) * pow2(-149), Rounding::NearestEven),
+              2 * tiny);  // tie, 2 is even
     EXPECT_EQ(fromRational<float>(ratio(3, 2) * pow2(-149), Rounding::TowardNegative), tiny);
     EXPECT_EQ(fromRational<float>(ratio(3, 2) * pow2(-149), Rounding::TowardPositive), 2 * tiny);
     // Half the smallest subnormal is a tie between 0 (even) and 2^-149.
@@ -153,8 +158,10 @@ TEST(RationalConvert, subnormalsUseTheFixedQuantum) {
     const Rational justBelowMinNormal = pow2(-126) - pow2(-160);
     EXPECT_EQ(fromRational<float>(justBelowMinNormal, Rounding::TowardNegative),
               std::nextafter(std::numeric_limits<float>::min(), 0.0f));
-    EXPECT_EQ(fromRational<float>(justBelowMinNormal, Rounding::TowardPositive), std::numeric_limits<float>::min());
-    EXPECT_EQ(fromRational<float>(justBelowMinNormal, Rounding::NearestEven), std::numeric_limits<float>::min());
+    EXPECT_EQ(fromRational<float>(justBelowMinNormal, Rounding::TowardPositive),
+              std::numeric_limits<float>::min());
+    EXPECT_EQ(fromRational<float>(justBelowMinNormal, Rounding::NearestEven),
+              std::numeric_limits<float>::min());
     EXPECT_EQ(fromRational<double>(ratio(7, 2) * pow2(-1074), Rounding::NearestEven),
               4 * std::numeric_limits<double>::denorm_min());  // tie between 3 (odd) and 4
     EXPECT_EQ(fromRational<double>(ratio(7, 2) * pow2(-1074), Rounding::TowardNegative),
@@ -186,7 +193,8 @@ TEST(RationalConvert, overflowFollowsIeee) {
 // independent check of the nearest mode over many non-dyadic values.
 TEST(RationalConvert, nearestMatchesCorrectlyRoundedDivision) {
     std::mt19937_64 random(3);
-    std::uniform_int_distribution<std::int64_t> numerator53(-(std::int64_t{1} << 53) + 1, (std::int64_t{1} << 53) - 1);
+    std::uniform_int_distribution<std::int64_t> numerator53(-(std::int64_t{1} << 53) + 1,
+                                                            (std::int64_t{1} << 53) - 1);
     std::uniform_int_distribution<std::int64_t> denominator53(1, (std::int64_t{1} << 53) - 1);
     std::uniform_int_distribution<std::int32_t> numerator24(-(1 << 24) + 1, (1 << 24) - 1);
     std::uniform_int_distribution<std::int32_t> denominator24(1, (1 << 24) - 1);
@@ -194,11 +202,13 @@ TEST(RationalConvert, nearestMatchesCorrectlyRoundedDivision) {
         const std::int64_t a = numerator53(random) >> (random() % 53);
         const std::int64_t b = (denominator53(random) >> (random() % 53)) | 1;
         ASSERT_EQ(fromRational<double>(ratio(a, b), Rounding::NearestEven),
-                  static_cast<double>(a) / static_cast<double>(b)) << a << "/" << b;
+                  static_cast<double>(a) / static_cast<double>(b))
+            << a << "/" << b;
         const std::int32_t c = numerator24(random) >> (random() % 24);
         const std::int32_t d = (denominator24(random) >> (random() % 24)) | 1;
         ASSERT_EQ(fromRational<float>(ratio(c, d), Rounding::NearestEven),
-                  static_cast<float>(c) / static_cast<float>(d)) << c << "/" << d;
+                  static_cast<float>(c) / static_cast<float>(d))
+            << c << "/" << d;
     }
 }
 
@@ -238,7 +248,9 @@ void expectDirectedBrackets(std::uint64_t seed, int minExponent, int maxExponent
 }
 
 TEST(RationalConvert, directedRoundingBracketsRandomFloats) { expectDirectedBrackets<float>(4, -160, 120); }
-TEST(RationalConvert, directedRoundingBracketsRandomDoubles) { expectDirectedBrackets<double>(5, -1090, 1000); }
+TEST(RationalConvert, directedRoundingBracketsRandomDoubles) {
+    expectDirectedBrackets<double>(5, -1090, 1000);
+}
 
 TEST(RationalConvert, roundTowardStaysBetweenStartAndTarget) {
     // From 0 toward 1/3 (above): the largest float <= 1/3; from 1 toward 1/3 (below): the

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "tilesweep/scene/scene.h"
+
 #include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include "tilesweep/scene/scene.h"
 
 // Builds scenes for hand-worked tests straight from the pieces a scene file holds, without the
 // JSON reader: rows of '#' and '.', top row first.
@@ -15,7 +15,8 @@
 namespace tilesweep::oracle::test {
 
 template <class T>
-TileMap<T> makeMap(const std::vector<std::string>& rows, Vec2<T> origin = {0, 0}, Vec2<T> tileSize = {16, 16}) {
+TileMap<T> makeMap(const std::vector<std::string>& rows, Vec2<T> origin = {0, 0},
+                   Vec2<T> tileSize = {16, 16}) {
     TileMap<T> map;
     map.origin = origin;
     map.tileSize = tileSize;

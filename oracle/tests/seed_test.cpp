@@ -3,16 +3,15 @@
 // Expected values follow the article's formulas step by step (see seed_resolve.h), with inputs
 // chosen so that every float operation is exact unless said otherwise.
 
+#include "oracle/exact/exact_resolve.h"
 #include "oracle/seed/seed_resolve.h"
+#include "scene_builder.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <vector>
-
-#include "oracle/exact/exact_resolve.h"
-#include "scene_builder.h"
 
 namespace tilesweep::oracle {
 namespace {
@@ -28,8 +27,8 @@ TEST(SeedAlgorithm, landsOnAFloorButDoesNotSlideAndReportsAStrayContact) {
     // (1, 3) = [16, 32]: velocity (10, 20); timeX = (16 - 16)/10 = 0, timeY = 20/20 = 1;
     // time 1, not > 1: collided with time 1, moving back by 0. (2, 3) = [32, 48] is outside the
     // swept bounds (32 is not > 32). Final (14, 36); the contract slides on to (20, 36).
-    const auto scene = makeScene<float>(makeMap<float>({"....", "....", "....", "####"}), {{4, 16}, {12, 12}},
-                                        {{16, 32}});
+    const auto scene =
+        makeScene<float>(makeMap<float>({"....", "....", "....", "####"}), {{4, 16}, {12, 12}}, {{16, 32}});
     const std::vector<FrameResult<float>> frames = resolveSceneSeed(scene);
     ASSERT_EQ(frames.size(), 1U);
     EXPECT_EQ(frames[0].position, (Vec2<float>{14, 36}));
@@ -74,8 +73,8 @@ TEST(SeedAlgorithm, disjointDistancesLetACornerMissCountAsAHit) {
     // (11/30, 23/30) and y from 6/7 on: a corner miss. The article: timeX = 22/60, timeY = 6/7,
     // time 6/7; disjoint = min(48 - 2, 32 - 2) = 30, a distance: 6/7 <= 30, collided. The box is
     // pulled back along the whole velocity: both coordinates end short of (62, 9).
-    const auto scene = makeScene<float>(makeMap<float>({"......", "..#...", "......"}), {{2, 2}, {8, 8}},
-                                        {{60, 7}});
+    const auto scene =
+        makeScene<float>(makeMap<float>({"......", "..#...", "......"}), {{2, 2}, {8, 8}}, {{60, 7}});
     const FrameResult<float> frame = resolveSceneSeed(scene).at(0);
     ASSERT_EQ(frame.contacts.size(), 1U);
     EXPECT_EQ(frame.contacts[0].tile, (Cell{2, 1}));
@@ -90,7 +89,8 @@ TEST(SeedAlgorithm, overflowGivesAnInfinitePositionAndLaterFramesCarryOn) {
     // 2^127 + FLT_MAX overflows float: the article's position becomes +inf, and the next frames
     // compute with it without crashing. The contract rounds toward the start: FLT_MAX.
     constexpr float kMax = std::numeric_limits<float>::max();
-    const auto scene = makeScene<float>(makeMap<float>({"#"}), {{0x1p127f, 0}, {1, 1}}, {{kMax, 0}, {-1, 0}, {1, 1}});
+    const auto scene =
+        makeScene<float>(makeMap<float>({"#"}), {{0x1p127f, 0}, {1, 1}}, {{kMax, 0}, {-1, 0}, {1, 1}});
     const std::vector<FrameResult<float>> frames = resolveSceneSeed(scene);
     ASSERT_EQ(frames.size(), 3U);
     EXPECT_TRUE(std::isinf(frames[0].position.x));

@@ -3,7 +3,11 @@
 // window is wider than one substep, and never reports a hit the contract does not have; the
 // game-style float one tunnels and misses corners, as a baseline should.
 
+#include "oracle/exact/exact_resolve.h"
+#include "oracle/exact/exact_sweep.h"
+#include "oracle/substep/substep_float.h"
 #include "oracle/substep/substep_oracle.h"
+#include "scene_builder.h"
 
 #include <gtest/gtest.h>
 
@@ -11,11 +15,6 @@
 #include <random>
 #include <string>
 #include <vector>
-
-#include "oracle/exact/exact_resolve.h"
-#include "oracle/exact/exact_sweep.h"
-#include "oracle/substep/substep_float.h"
-#include "scene_builder.h"
 
 namespace tilesweep::oracle {
 namespace {
@@ -164,7 +163,8 @@ TEST(SubstepOracle, bracketHoldsTheExactTimeWheneverTheWindowIsWiderThanOneSubst
         const bool blocks = !frame.contacts.empty();
         const Rational s = blocks ? frame.contacts.front().time : Rational(0);
         if (overlap.found()) {
-            ASSERT_TRUE(blocks) << "substep " << overlap.firstOverlap << " of " << substeps << " without a hit";
+            ASSERT_TRUE(blocks) << "substep " << overlap.firstOverlap << " of " << substeps
+                                << " without a hit";
             ASSERT_LT(s, overlap.bracketHigh());
         }
         if (!blocks) {

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cstdint>
-
 #include "tilesweep/scene/scene.h"
+
+#include <cstdint>
 
 // The drawn families: plain std::mt19937_64 builders, one scene per seed, with real-valued
 // (not only lattice) boxes and moves. They are the audit's reference population, measured

@@ -18,6 +18,8 @@
 // filtered with RC_PRE. Every function is inline (RapidCheck's example Generators.h is an ODR
 // trap otherwise).
 
+#include "tilesweep/scene/scene.h"
+
 #include <rapidcheck.h>
 
 #include <cmath>
@@ -25,53 +27,67 @@
 #include <limits>
 #include <mutex>
 #include <ostream>
-#include <string>
 #include <random>
+#include <string>
 #include <type_traits>
 #include <vector>
-
-#include "tilesweep/scene/scene.h"
 
 namespace tilesweep::scenarios {
 
 /// The families of scenes; each is reachable on its own, and `Mixed` draws from all.
 enum class Family : std::uint8_t {
-    Random,      ///< random density, any box and motion
-    Floor,       ///< flat floors and ceilings, walls one tile thick, corridors
-    Stairs,      ///< a staircase
-    SingleTile,  ///< one solid tile
-    CornerTie,   ///< the box's leading corner aimed exactly at a tile corner; random exposed faces
-    CornerPass,  ///< a path exactly through a corner point, or off it by one ulp either way
-    SeamLanding, ///< landing straddling the seam between two floor tiles
-    Gap,         ///< a box exactly as wide as a one-tile gap, or one ulp wider
-    Resting,     ///< resting on a floor under gravity for many frames, possibly sliding
-    FarSubUlp,   ///< far from the origin, moves of a few ulps past a tile corner: rounding at work
-    FarEdge,     ///< far edge a few ulps past a grid line, a tiny move away, then back: the rounding rule
-    FineBits,    ///< frame times exactly halfway between two values, tiles reached at t = 1, wide lattices
-    Extreme,     ///< empty maps (0 x 0, or no solid cell), huge moves, huge coordinates
-    FilterBand,  ///< exact corner ties whose rounded time comparison lands deep in the filter's band
-    HighSpeed,   ///< 1 to 100 tiles a frame along a corridor with thin walls: no tunnelling
+    Random,       ///< random density, any box and motion
+    Floor,        ///< flat floors and ceilings, walls one tile thick, corridors
+    Stairs,       ///< a staircase
+    SingleTile,   ///< one solid tile
+    CornerTie,    ///< the box's leading corner aimed exactly at a tile corner; random exposed faces
+    CornerPass,   ///< a path exactly through a corner point, or off it by one ulp either way
+    SeamLanding,  ///< landing straddling the seam between two floor tiles
+    Gap,          ///< a box exactly as wide as a one-tile gap, or one ulp wider
+    Resting,      ///< resting on a floor under gravity for many frames, possibly sliding
+    FarSubUlp,    ///< far from the origin, moves of a few ulps past a tile corner: rounding at work
+    FarEdge,      ///< far edge a few ulps past a grid line, a tiny move away, then back: the rounding rule
+    FineBits,     ///< frame times exactly halfway between two values, tiles reached at t = 1, wide lattices
+    Extreme,      ///< empty maps (0 x 0, or no solid cell), huge moves, huge coordinates
+    FilterBand,   ///< exact corner ties whose rounded time comparison lands deep in the filter's band
+    HighSpeed,    ///< 1 to 100 tiles a frame along a corridor with thin walls: no tunnelling
     Mixed,
 };
 
 [[nodiscard]] inline const char* familyName(Family f) {
     switch (f) {
-        case Family::Random: return "random";
-        case Family::Floor: return "floor";
-        case Family::Stairs: return "stairs";
-        case Family::SingleTile: return "single-tile";
-        case Family::CornerTie: return "corner-tie";
-        case Family::CornerPass: return "corner-pass";
-        case Family::SeamLanding: return "seam-landing";
-        case Family::Gap: return "gap";
-        case Family::Resting: return "resting";
-        case Family::FarSubUlp: return "far-sub-ulp";
-        case Family::FarEdge: return "far-edge";
-        case Family::FineBits: return "fine-bits";
-        case Family::Extreme: return "extreme";
-        case Family::FilterBand: return "filter-band";
-        case Family::HighSpeed: return "high-speed";
-        case Family::Mixed: return "mixed";
+        case Family::Random:
+            return "random";
+        case Family::Floor:
+            return "floor";
+        case Family::Stairs:
+            return "stairs";
+        case Family::SingleTile:
+            return "single-tile";
+        case Family::CornerTie:
+            return "corner-tie";
+        case Family::CornerPass:
+            return "corner-pass";
+        case Family::SeamLanding:
+            return "seam-landing";
+        case Family::Gap:
+            return "gap";
+        case Family::Resting:
+            return "resting";
+        case Family::FarSubUlp:
+            return "far-sub-ulp";
+        case Family::FarEdge:
+            return "far-edge";
+        case Family::FineBits:
+            return "fine-bits";
+        case Family::Extreme:
+            return "extreme";
+        case Family::FilterBand:
+            return "filter-band";
+        case Family::HighSpeed:
+            return "high-speed";
+        case Family::Mixed:
+            return "mixed";
     }
     return "?";
 }
@@ -92,10 +108,12 @@ struct Grid {
     int rows = 0;
     std::vector<std::uint8_t> solid;
     void set(int i, int j, bool v) {
-        if (i >= 0 && j >= 0 && i < columns && j < rows) solid[static_cast<std::size_t>(j * columns + i)] = v ? 1 : 0;
+        if (i >= 0 && j >= 0 && i < columns && j < rows)
+            solid[static_cast<std::size_t>(j * columns + i)] = v ? 1 : 0;
     }
     bool get(int i, int j) const {
-        return i >= 0 && j >= 0 && i < columns && j < rows && solid[static_cast<std::size_t>(j * columns + i)] != 0;
+        return i >= 0 && j >= 0 && i < columns && j < rows &&
+               solid[static_cast<std::size_t>(j * columns + i)] != 0;
     }
 };
 
@@ -121,7 +139,8 @@ rc::Gen<double> genOrigin(int tile) {
 template <class T>
 rc::Gen<T> genLength(int tile, int maxEighths) {
     return rc::gen::weightedOneOf<T>(
-        {{8, rc::gen::map(rc::gen::inRange(1, maxEighths + 1), [tile](int n) { return static_cast<T>(n * tile / 8.0); })},
+        {{8, rc::gen::map(rc::gen::inRange(1, maxEighths + 1),
+                          [tile](int n) { return static_cast<T>(n * tile / 8.0); })},
          {2, rc::gen::map(rc::gen::inRange(1, maxEighths * tile / 8 * 10 + 1),
                           [](int n) { return static_cast<T>(n / 10.0); })}});
 }
@@ -134,13 +153,16 @@ rc::Gen<T> genDisplacement(int tile, T at) {
     return rc::gen::weightedOneOf<T>(
         {{2, rc::gen::just(T(0))},
          {1, rc::gen::map(rc::gen::inRange(-3, 4), [ulp](int n) { return static_cast<T>(n) * ulp / 4; })},
-         {6, rc::gen::map(rc::gen::inRange(-64, 65), [tile](int n) { return static_cast<T>(n * tile / 8.0); })},
-         {2, rc::gen::map(rc::gen::inRange(-800, 801), [tile](int n) { return static_cast<T>(n * tile / 8.0); })},
+         {6,
+          rc::gen::map(rc::gen::inRange(-64, 65), [tile](int n) { return static_cast<T>(n * tile / 8.0); })},
+         {2, rc::gen::map(rc::gen::inRange(-800, 801),
+                          [tile](int n) { return static_cast<T>(n * tile / 8.0); })},
          {2, rc::gen::map(rc::gen::inRange(-3000, 3001), [](int n) { return static_cast<T>(n / 10.0); })}});
 }
 
 template <class T>
-Scene<T> makeScene(const Grid<T>& g, double ox, double oy, double tile, Box<T> box, std::vector<Vec2<T>> moves) {
+Scene<T> makeScene(const Grid<T>& g, double ox, double oy, double tile, Box<T> box,
+                   std::vector<Vec2<T>> moves) {
     Scene<T> s;
     s.map.origin = {static_cast<T>(ox), static_cast<T>(oy)};
     s.map.tileSize = {static_cast<T>(tile), static_cast<T>(tile)};
@@ -161,7 +183,9 @@ void clearUnder(Grid<T>& g, double ox, double oy, double tile, Box<T> box) {
     const double y1 = y0 + static_cast<double>(box.size.y) / tile;
     // Cell indices clamped to just outside the grid first: a box far beyond the map (the extreme
     // family) would overflow an int.
-    const auto cell = [](double v, int cells) { return static_cast<int>(std::max(-2.0, std::min(v, cells + 1.0))); };
+    const auto cell = [](double v, int cells) {
+        return static_cast<int>(std::max(-2.0, std::min(v, cells + 1.0)));
+    };
     for (int j = cell(std::floor(y0) - 1, g.rows); j <= cell(std::floor(y1), g.rows); ++j)
         for (int i = cell(std::floor(x0) - 1, g.columns); i <= cell(std::floor(x1), g.columns); ++i)
             if (i + 1 > x0 && i < x1 && j + 1 > y0 && j < y1) g.set(i, j, false);
@@ -169,7 +193,8 @@ void clearUnder(Grid<T>& g, double ox, double oy, double tile, Box<T> box) {
 
 template <class T>
 T offGrid(T v, int direction) {
-    return std::nextafter(v, direction > 0 ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity());
+    return std::nextafter(
+        v, direction > 0 ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity());
 }
 
 /// Random maps: density, floors, walls, corridors, stairs, single tiles.
@@ -180,7 +205,8 @@ rc::Gen<GeneratedScene<T>> genLayoutScene(Family family) {
         const double ox = *genOrigin<T>(tile);
         const double oy = *genOrigin<T>(tile);
         Grid<T> g;
-        g.columns = *rc::gen::weightedOneOf<int>({{8, rc::gen::inRange(1, 17)}, {1, rc::gen::inRange(17, 65)}});
+        g.columns =
+            *rc::gen::weightedOneOf<int>({{8, rc::gen::inRange(1, 17)}, {1, rc::gen::inRange(17, 65)}});
         g.rows = *rc::gen::weightedOneOf<int>({{8, rc::gen::inRange(1, 17)}, {1, rc::gen::inRange(17, 65)}});
         g.solid.assign(static_cast<std::size_t>(g.columns * g.rows), 0);
         switch (family) {
@@ -192,7 +218,8 @@ rc::Gen<GeneratedScene<T>> genLayoutScene(Family family) {
                 if (*rc::gen::arbitrary<bool>()) {  // a wall one tile thick
                     const int col = *rc::gen::inRange(0, g.columns);
                     for (int j = 0; j < g.rows; ++j) g.set(col, j, true);
-                    if (*rc::gen::arbitrary<bool>()) g.set(col, *rc::gen::inRange(0, g.rows), false);  // a gap
+                    if (*rc::gen::arbitrary<bool>())
+                        g.set(col, *rc::gen::inRange(0, g.rows), false);  // a gap
                 }
                 break;
             }
@@ -202,13 +229,16 @@ rc::Gen<GeneratedScene<T>> genLayoutScene(Family family) {
                     for (int j = std::max(0, g.rows - 1 - i / step); j < g.rows; ++j) g.set(i, j, true);
                 break;
             }
-            case Family::SingleTile: g.set(*rc::gen::inRange(0, g.columns), *rc::gen::inRange(0, g.rows), true); break;
+            case Family::SingleTile:
+                g.set(*rc::gen::inRange(0, g.columns), *rc::gen::inRange(0, g.rows), true);
+                break;
             default: {
                 const int percent = *rc::gen::element(0, 10, 30, 50, 80);
                 // A roll shrinks toward 0, which here means empty: a shrunk counterexample keeps
                 // only the solid cells it needs. Fixed size: inRange scales with RapidCheck's size,
                 // which would thin out the maps of the early cases.
-                for (auto& c : g.solid) c = *rc::gen::resize(100, rc::gen::inRange(0, 100)) >= 100 - percent ? 1 : 0;
+                for (auto& c : g.solid)
+                    c = *rc::gen::resize(100, rc::gen::inRange(0, 100)) >= 100 - percent ? 1 : 0;
                 break;
             }
         }
@@ -223,7 +253,8 @@ rc::Gen<GeneratedScene<T>> genLayoutScene(Family family) {
         const int frames = *rc::gen::weightedOneOf<int>({{6, rc::gen::just(1)}, {3, rc::gen::inRange(2, 5)}});
         for (int f = 0; f < frames; ++f)
             moves.push_back({*genDisplacement<T>(tile, box.pos.x), *genDisplacement<T>(tile, box.pos.y)});
-        return GeneratedScene<T>{makeScene(g, ox, oy, tile, box, moves), family, ox != 0 && std::fabs(ox) >= 1048576.0};
+        return GeneratedScene<T>{makeScene(g, ox, oy, tile, box, moves), family,
+                                 ox != 0 && std::fabs(ox) >= 1048576.0};
     });
 }
 
@@ -282,11 +313,20 @@ rc::Gen<GeneratedScene<T>> genCornerScene(Family family) {
         Vec2<T> d{static_cast<T>(2 * hx), static_cast<T>(2 * hy)};
         if (family == Family::CornerPass) {
             switch (*rc::gen::inRange(0, 5)) {  // 0: exact pass; else nudge one input by one ulp
-                case 1: d.x = offGrid(d.x, *rc::gen::element(-1, 1)); break;
-                case 2: d.y = offGrid(d.y, *rc::gen::element(-1, 1)); break;
-                case 3: box.pos.x = offGrid(box.pos.x, *rc::gen::element(-1, 1)); break;
-                case 4: box.pos.y = offGrid(box.pos.y, *rc::gen::element(-1, 1)); break;
-                default: break;
+                case 1:
+                    d.x = offGrid(d.x, *rc::gen::element(-1, 1));
+                    break;
+                case 2:
+                    d.y = offGrid(d.y, *rc::gen::element(-1, 1));
+                    break;
+                case 3:
+                    box.pos.x = offGrid(box.pos.x, *rc::gen::element(-1, 1));
+                    break;
+                case 4:
+                    box.pos.y = offGrid(box.pos.y, *rc::gen::element(-1, 1));
+                    break;
+                default:
+                    break;
             }
         }
         clearUnder(g, ox, oy, tile, box);
@@ -319,9 +359,14 @@ rc::Gen<GeneratedScene<T>> genFloorScene(Family family) {
             T w = T(tile);
             T x = static_cast<T>(ox + gap * tile);
             switch (*rc::gen::inRange(0, 3)) {
-                case 1: w = offGrid(w, 1); break;                          // one ulp too wide
-                case 2: x = offGrid(x, *rc::gen::element(-1, 1)); break;   // one ulp off the gap
-                default: break;
+                case 1:
+                    w = offGrid(w, 1);
+                    break;  // one ulp too wide
+                case 2:
+                    x = offGrid(x, *rc::gen::element(-1, 1));
+                    break;  // one ulp off the gap
+                default:
+                    break;
             }
             box = {{x, static_cast<T>(floorY - 2.0 * tile)}, {w, T(tile)}};
             moves.push_back({0, static_cast<T>(*rc::gen::inRange(1, 5) * tile)});
@@ -336,17 +381,18 @@ rc::Gen<GeneratedScene<T>> genFloorScene(Family family) {
                    {static_cast<T>(w), static_cast<T>(h)}};
             moves.push_back({static_cast<T>(2 * hx), static_cast<T>(2 * fall)});
             const int slides = *rc::gen::inRange(0, 6);
-            for (int k = 0; k < slides; ++k) moves.push_back({static_cast<T>(2 * hx), static_cast<T>(tile / 4.0)});
+            for (int k = 0; k < slides; ++k)
+                moves.push_back({static_cast<T>(2 * hx), static_cast<T>(tile / 4.0)});
         } else {  // Resting
             // Bottom exactly on the floor: sizes on the tile/8 grid keep y = floorY - h exact.
             const T h = static_cast<T>(*rc::gen::inRange(1, 25) * tile / 8.0);
             const T w = *genLength<T>(tile, 24);
             const T y = static_cast<T>(floorY - static_cast<double>(h));
             box = {{static_cast<T>(ox + *rc::gen::inRange(0, g.columns * 8) * tile / 8.0), y}, {w, h}};
-            const T vx = *rc::gen::weightedOneOf<T>({{2, rc::gen::just(T(0))},
-                                                      {3, rc::gen::map(rc::gen::inRange(-32, 33), [tile](int n) {
-                                                           return static_cast<T>(n * tile / 16.0);
-                                                       })}});
+            const T vx = *rc::gen::weightedOneOf<T>(
+                {{2, rc::gen::just(T(0))}, {3, rc::gen::map(rc::gen::inRange(-32, 33), [tile](int n) {
+                                                return static_cast<T>(n * tile / 16.0);
+                                            })}});
             const T gravity = static_cast<T>(*rc::gen::inRange(1, 33) * tile / 32.0);
             const int frames = *rc::gen::inRange(2, 40);
             for (int k = 0; k < frames; ++k) moves.push_back({vx, gravity});
@@ -372,7 +418,8 @@ rc::Gen<GeneratedScene<T>> genFarSubUlpScene() {
         g.rows = 5;
         g.solid.assign(25, 0);
         g.set(2, 2, true);
-        for (int k = 0; k < 3; ++k) g.set(*rc::gen::inRange(0, 5), *rc::gen::inRange(0, 5), *rc::gen::arbitrary<bool>());
+        for (int k = 0; k < 3; ++k)
+            g.set(*rc::gen::inRange(0, 5), *rc::gen::inRange(0, 5), *rc::gen::arbitrary<bool>());
         const double ox = far * *rc::gen::element(1, -1);
         const double oy = far / 2 * *rc::gen::element(1, -1);
         const T w = static_cast<T>(*rc::gen::inRange(1, 100) / 100.0);
@@ -387,11 +434,13 @@ rc::Gen<GeneratedScene<T>> genFarSubUlpScene() {
         // the other a few ulps: the motion that lets rounding undo a corner miss.
         const auto sign = [] { return *rc::gen::element(1.0, -1.0); };
         const double slow = sign() * *rc::gen::inRange(1, 100) / 100.0 * ulp;
-        const double fast = sign() * (*rc::gen::inRange(5, 40) * ulp / 10.0 + *rc::gen::inRange(0, 7) / 1000.0);
+        const double fast =
+            sign() * (*rc::gen::inRange(5, 40) * ulp / 10.0 + *rc::gen::inRange(0, 7) / 1000.0);
         const bool slowOnX = *rc::gen::arbitrary<bool>();
         const auto move = [&](bool xAxis) { return static_cast<T>(xAxis == slowOnX ? slow : fast); };
         clearUnder(g, ox, oy, tile, box);
-        return GeneratedScene<T>{makeScene(g, ox, oy, tile, box, {{move(true), move(false)}}), Family::FarSubUlp, true};
+        return GeneratedScene<T>{makeScene(g, ox, oy, tile, box, {{move(true), move(false)}}),
+                                 Family::FarSubUlp, true};
     });
 }
 
@@ -433,11 +482,14 @@ rc::Gen<GeneratedScene<T>> genFarEdgeScene() {
         g.rows = 6;
         g.solid.assign(36, 0);
         g.set(3, 3, true);  // the tile beyond the line x = ox + 3*tile, one row down
-        for (int k = 0; k < 2; ++k) g.set(*rc::gen::inRange(3, 6), *rc::gen::inRange(3, 6), *rc::gen::arbitrary<bool>());
+        for (int k = 0; k < 2; ++k)
+            g.set(*rc::gen::inRange(3, 6), *rc::gen::inRange(3, 6), *rc::gen::arbitrary<bool>());
         const double line = ox + 3 * tile;
-        const double ulp = static_cast<double>(std::nextafter(static_cast<T>(line), std::numeric_limits<T>::infinity())) -
-                           static_cast<double>(static_cast<T>(line));
-        const T w = static_cast<T>(*rc::gen::inRange(101, 400) / 100.0 * tile / 4);  // decimal: off the lattice
+        const double ulp =
+            static_cast<double>(std::nextafter(static_cast<T>(line), std::numeric_limits<T>::infinity())) -
+            static_cast<double>(static_cast<T>(line));
+        const T w =
+            static_cast<T>(*rc::gen::inRange(101, 400) / 100.0 * tile / 4);  // decimal: off the lattice
         const T h = static_cast<T>(*rc::gen::inRange(1, 9) * tile / 8.0);
         // Far edge a few ulps past the line; bottom a little above the tile's top.
         const T x = static_cast<T>(line + *rc::gen::inRange(1, 5) * ulp - static_cast<double>(w));
@@ -453,7 +505,8 @@ rc::Gen<GeneratedScene<T>> genFarEdgeScene() {
                            ? static_cast<T>(-(offset + fraction * ulp))
                            : static_cast<T>(-*rc::gen::inRange(1, 17) * ulp / 4);
         const T down = static_cast<T>(gapY + *rc::gen::inRange(1, 9) * tile / 8.0);
-        const T back = static_cast<T>(*rc::gen::element(1.0, 3.0, 8.0) * ulp + *rc::gen::element(0.0, tile / 2));
+        const T back =
+            static_cast<T>(*rc::gen::element(1.0, 3.0, 8.0) * ulp + *rc::gen::element(0.0, tile / 2));
         std::vector<Vec2<T>> moves{{away, down}, {back, T(0)}, {back, static_cast<T>(tile / 8.0)}};
         Grid<T> cleared = g;
         clearUnder(cleared, ox, oy, tile, box);
@@ -515,14 +568,16 @@ rc::Gen<GeneratedScene<T>> genFineBitsScene() {
             g.solid.assign(64, 0);
             for (int k = 0; k < 12; ++k) g.set(*rc::gen::inRange(0, 8), *rc::gen::inRange(0, 8), true);
             const double size = isFloat ? tile * (1 + std::ldexp(1.0, -23)) / 2 : 8 + std::ldexp(1.0, -40);
-            const Box<T> box{{static_cast<T>(ox + *rc::gen::inRange(0, 48) * tile / 8), static_cast<T>(ox + 3 * tile)},
-                             {static_cast<T>(size), static_cast<T>(size)}};
+            const Box<T> box{
+                {static_cast<T>(ox + *rc::gen::inRange(0, 48) * tile / 8), static_cast<T>(ox + 3 * tile)},
+                {static_cast<T>(size), static_cast<T>(size)}};
             clearUnder(g, ox, ox, tile, box);
             // One axis moves on the tile grid, the other by a value of full precision whose
             // finest bit lies 50 to 120 bits below the origin's: from just inside double's 53
             // bits (where the resolver's float fast path must still be exact, or refuse the
             // frame) to past the 128- and 192-bit integer tiers.
-            const T coarse = static_cast<T>(*rc::gen::inRange(-64, 65) * tile / 8 * *rc::gen::element(1.0, 1.0, 1024.0));
+            const T coarse =
+                static_cast<T>(*rc::gen::inRange(-64, 65) * tile / 8 * *rc::gen::element(1.0, 1.0, 1024.0));
             const int below = isFloat ? *rc::gen::element(26, 27, 28, 29, 30, 31, 41, 55, 75, 96)
                                       : *rc::gen::element(11, 25, 45, 67);
             const T fine = static_cast<T>(std::ldexp(1.0 + std::ldexp(1.0, 1 - digits), e - below) *
@@ -557,8 +612,9 @@ rc::Gen<GeneratedScene<T>> genExtremeScene() {
             return static_cast<T>(std::ldexp(*rc::gen::element(1.0, -1.0, 1.5, -0.75), e));
         };
         const auto small = [tile] { return static_cast<T>(*rc::gen::inRange(-32, 33) * tile / 8); };
-        Box<T> box{{static_cast<T>(*rc::gen::inRange(0, 8) * tile), static_cast<T>(*rc::gen::inRange(0, 8) * tile)},
-                   {static_cast<T>(tile * 0.75), static_cast<T>(tile)}};
+        Box<T> box{
+            {static_cast<T>(*rc::gen::inRange(0, 8) * tile), static_cast<T>(*rc::gen::inRange(0, 8) * tile)},
+            {static_cast<T>(tile * 0.75), static_cast<T>(tile)}};
         if (kind == 3) {  // far beyond the map
             const int e = isFloat ? *rc::gen::element(60, 90, 120) : *rc::gen::element(60, 300, 1000);
             box.pos = {static_cast<T>(std::ldexp(*rc::gen::element(1.0, -1.0), e)), box.pos.y};
@@ -607,9 +663,11 @@ rc::Gen<GeneratedScene<T>> genFilterBandScene() {
             a = near[rng() % 6];
             b = near[rng() % 6];
             if (a == b) continue;
-            K = std::ldexp(1.0, isFloat ? 8 + static_cast<int>(rng() % 6) : 24 + static_cast<int>(rng() % 14));
+            K = std::ldexp(1.0,
+                           isFloat ? 8 + static_cast<int>(rng() % 6) : 24 + static_cast<int>(rng() % 14));
             const int bits = isFloat ? 8 : 38;  // a*g and b*g stay exact
-            g = -std::ldexp(static_cast<double>((rng() >> (64 - bits)) | 1), -bits + static_cast<int>(rng() % 8) - 2);
+            g = -std::ldexp(static_cast<double>((rng() >> (64 - bits)) | 1),
+                            -bits + static_cast<int>(rng() % 8) - 2);
             if (isFloat) break;
             // The resolver's comparison: p = fl(Dx.hi * vy), q = fl(Dy.hi * vx), D = fl(p - q).
             const double dx = a * K - a * g;
@@ -653,8 +711,10 @@ rc::Gen<GeneratedScene<T>> genHighSpeedScene() {
         g.solid.assign(static_cast<std::size_t>(g.columns * g.rows), 0);
         const int sx = *rc::gen::element(1, -1);
         Box<T> box;
-        box.size = {static_cast<T>(*rc::gen::inRange(2, 11) * tile / 8.0), static_cast<T>(*rc::gen::inRange(2, 11) * tile / 8.0)};
-        const int startColumn = sx > 0 ? *rc::gen::inRange(0, 4) : *rc::gen::inRange(g.columns - 8, g.columns - 4);
+        box.size = {static_cast<T>(*rc::gen::inRange(2, 11) * tile / 8.0),
+                    static_cast<T>(*rc::gen::inRange(2, 11) * tile / 8.0)};
+        const int startColumn =
+            sx > 0 ? *rc::gen::inRange(0, 4) : *rc::gen::inRange(g.columns - 8, g.columns - 4);
         const int startRow = *rc::gen::inRange(0, g.rows - 1);
         box.pos = {static_cast<T>(ox + startColumn * tile + *rc::gen::inRange(0, 8) * tile / 8.0),
                    static_cast<T>(oy + startRow * tile + *rc::gen::inRange(0, 8) * tile / 8.0)};
@@ -667,23 +727,32 @@ rc::Gen<GeneratedScene<T>> genHighSpeedScene() {
         const int walls = *rc::gen::inRange(1, 4);
         for (int k = 0; k < walls; ++k) {
             const int reach = std::max(2, eighths / 8);
-            const int i = startColumn + sx * (2 + *rc::gen::resize(rc::kNominalSize, rc::gen::inRange(0, reach)));
-            const bool full = *rc::gen::weightedOneOf<bool>({{3, rc::gen::just(true)}, {2, rc::gen::just(false)}});
+            const int i =
+                startColumn + sx * (2 + *rc::gen::resize(rc::kNominalSize, rc::gen::inRange(0, reach)));
+            const bool full =
+                *rc::gen::weightedOneOf<bool>({{3, rc::gen::just(true)}, {2, rc::gen::just(false)}});
             const int from = full ? 0 : *rc::gen::inRange(0, g.rows);
             const int to = full ? g.rows - 1 : *rc::gen::inRange(from, g.rows);
             for (int j = from; j <= to; ++j) g.set(i, j, true);
         }
         const int scattered = *rc::gen::inRange(0, 7);
-        for (int k = 0; k < scattered; ++k) g.set(*rc::gen::inRange(8, 121), *rc::gen::inRange(0, g.rows), true);
+        for (int k = 0; k < scattered; ++k)
+            g.set(*rc::gen::inRange(8, 121), *rc::gen::inRange(0, g.rows), true);
         clearUnder(g, ox, oy, tile, box);
         double dy = 0;
         switch (*rc::gen::inRange(0, 3)) {
-            case 1: dy = *rc::gen::inRange(-80, 81) * speed / 800.0; break;  // a shallow slope
-            case 2: dy = *rc::gen::inRange(-16, 17) * tile / 8.0; break;     // up to two tiles across
-            default: break;                                                   // level
+            case 1:
+                dy = *rc::gen::inRange(-80, 81) * speed / 800.0;
+                break;  // a shallow slope
+            case 2:
+                dy = *rc::gen::inRange(-16, 17) * tile / 8.0;
+                break;  // up to two tiles across
+            default:
+                break;  // level
         }
         std::vector<Vec2<T>> moves{{static_cast<T>(sx * speed), static_cast<T>(dy)}};
-        return GeneratedScene<T>{makeScene(g, ox, oy, tile, box, moves), Family::HighSpeed, std::fabs(ox) >= 1048576.0};
+        return GeneratedScene<T>{makeScene(g, ox, oy, tile, box, moves), Family::HighSpeed,
+                                 std::fabs(ox) >= 1048576.0};
     });
 }
 
@@ -693,11 +762,11 @@ rc::Gen<GeneratedScene<T>> genHighSpeedScene() {
 template <class T>
 rc::Gen<GeneratedScene<T>> genScene(Family family) {
     using detail::genCornerScene;
-    using detail::genFarEdgeScene;
     using detail::genExtremeScene;
+    using detail::genFarEdgeScene;
+    using detail::genFarSubUlpScene;
     using detail::genFilterBandScene;
     using detail::genFineBitsScene;
-    using detail::genFarSubUlpScene;
     using detail::genFloorScene;
     using detail::genHighSpeedScene;
     using detail::genLayoutScene;
@@ -705,19 +774,29 @@ rc::Gen<GeneratedScene<T>> genScene(Family family) {
         case Family::Random:
         case Family::Floor:
         case Family::Stairs:
-        case Family::SingleTile: return genLayoutScene<T>(family);
+        case Family::SingleTile:
+            return genLayoutScene<T>(family);
         case Family::CornerTie:
-        case Family::CornerPass: return genCornerScene<T>(family);
+        case Family::CornerPass:
+            return genCornerScene<T>(family);
         case Family::SeamLanding:
         case Family::Gap:
-        case Family::Resting: return genFloorScene<T>(family);
-        case Family::FarSubUlp: return genFarSubUlpScene<T>();
-        case Family::FarEdge: return genFarEdgeScene<T>();
-        case Family::FineBits: return genFineBitsScene<T>();
-        case Family::Extreme: return genExtremeScene<T>();
-        case Family::FilterBand: return genFilterBandScene<T>();
-        case Family::HighSpeed: return genHighSpeedScene<T>();
-        case Family::Mixed: break;
+        case Family::Resting:
+            return genFloorScene<T>(family);
+        case Family::FarSubUlp:
+            return genFarSubUlpScene<T>();
+        case Family::FarEdge:
+            return genFarEdgeScene<T>();
+        case Family::FineBits:
+            return genFineBitsScene<T>();
+        case Family::Extreme:
+            return genExtremeScene<T>();
+        case Family::FilterBand:
+            return genFilterBandScene<T>();
+        case Family::HighSpeed:
+            return genHighSpeedScene<T>();
+        case Family::Mixed:
+            break;
     }
     return rc::gen::weightedOneOf<GeneratedScene<T>>({
         {4, genLayoutScene<T>(Family::Random)},

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "tilesweep/scene/scene.h"
+#include "tilesweep/sweep.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -8,14 +11,11 @@
 #include <random>
 #include <vector>
 
-#include "tilesweep/scene/scene.h"
-#include "tilesweep/sweep.h"
-
 // The benchmarks' frame scenarios (scenarios/README.md): pre-generated frames for the
-// side-by-side benchmarks of tilesweep, the inexact twin and the swept-bounds grid resolver (resolve_bench.cpp), and for the decision-agreement count
-// (twin_agreement.cpp): one 256x256 map of 16-px tiles per scenario and kFrameCount independent
-// frames (box, move) on it. Fixed seeds: the same frames every run, on every machine with the
-// same standard library.
+// side-by-side benchmarks of tilesweep, the inexact twin and the swept-bounds grid resolver
+// (resolve_bench.cpp), and for the decision-agreement count (twin_agreement.cpp): one 256x256 map of 16-px
+// tiles per scenario and kFrameCount independent frames (box, move) on it. Fixed seeds: the same frames every
+// run, on every machine with the same standard library.
 
 namespace tilesweep::scenarios {
 
@@ -30,12 +30,18 @@ enum class FrameKind { Random30, FloorAndWalls, RestingOnFloor, FreeFlight, FarR
 /// The name used in benchmark names, BM_<Impl>_<name>.
 inline const char* nameOf(FrameKind kind) noexcept {
     switch (kind) {
-        case FrameKind::Random30: return "Random30";
-        case FrameKind::FloorAndWalls: return "FloorAndWalls";
-        case FrameKind::RestingOnFloor: return "RestingOnFloor";
-        case FrameKind::FreeFlight: return "FreeFlight";
-        case FrameKind::FarRandom30: return "FarRandom30";
-        case FrameKind::ZeroMove: return "ZeroMove";
+        case FrameKind::Random30:
+            return "Random30";
+        case FrameKind::FloorAndWalls:
+            return "FloorAndWalls";
+        case FrameKind::RestingOnFloor:
+            return "RestingOnFloor";
+        case FrameKind::FreeFlight:
+            return "FreeFlight";
+        case FrameKind::FarRandom30:
+            return "FarRandom30";
+        case FrameKind::ZeroMove:
+            return "ZeroMove";
     }
     return "?";
 }
@@ -65,8 +71,11 @@ FrameScenario<T> makeFrameScenario(FrameKind kind, double tilesPerFrame) {
     s.map.columns = n;
     s.map.rows = n;
     s.map.solid.assign(static_cast<std::size_t>(n) * n, 0);
-    const auto at = [](int i, int j) { return static_cast<std::size_t>(j) * n + static_cast<std::size_t>(i); };
-    const bool random30 = kind == FrameKind::Random30 || kind == FrameKind::FarRandom30 || kind == FrameKind::ZeroMove;
+    const auto at = [](int i, int j) {
+        return static_cast<std::size_t>(j) * n + static_cast<std::size_t>(i);
+    };
+    const bool random30 =
+        kind == FrameKind::Random30 || kind == FrameKind::FarRandom30 || kind == FrameKind::ZeroMove;
     const bool floors = kind == FrameKind::FloorAndWalls || kind == FrameKind::RestingOnFloor;
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
@@ -87,8 +96,9 @@ FrameScenario<T> makeFrameScenario(FrameKind kind, double tilesPerFrame) {
             // Standing exactly on a floor tile's top (y + h == its top edge), walking at up to
             // 2 px/frame, with one frame of gravity (900 px/s^2 at 60 Hz: 0.25 px) pulling down.
             if (j % 12 != 11 || s.map.solid[at(i, j)] == 0) continue;
-            s.boxes.push_back({{static_cast<T>(i * kFrameTile + 4 * unit(rng)), static_cast<T>(j * kFrameTile - 12)},
-                               {T(12), T(12)}});
+            s.boxes.push_back(
+                {{static_cast<T>(i * kFrameTile + 4 * unit(rng)), static_cast<T>(j * kFrameTile - 12)},
+                 {T(12), T(12)}});
             s.moves.push_back({static_cast<T>(4 * unit(rng) - 2), T(0.25)});
             continue;
         }
@@ -127,7 +137,8 @@ FrameScenario<T> makeMapScenario(int size, FrameKind kind, double tilesPerFrame,
             bool solid = false;
             if (kind == FrameKind::Random30) solid = unit(rng) < 0.3;
             // Floors every 12 rows with gaps, walls every 20 columns with doors.
-            if (kind == FrameKind::FloorAndWalls) solid = (j % 12 == 11 && i % 9 != 4) || (i % 20 == 19 && j % 12 < 8);
+            if (kind == FrameKind::FloorAndWalls)
+                solid = (j % 12 == 11 && i % 9 != 4) || (i % 20 == 19 && j % 12 < 8);
             s.map.solid[at(i, j)] = solid ? 1 : 0;
         }
     const int lo = size / 2 - std::min(size / 2, 32) + 2;
@@ -139,8 +150,9 @@ FrameScenario<T> makeMapScenario(int size, FrameKind kind, double tilesPerFrame,
         if (s.map.solid[at(i, j)] != 0) continue;
         const double angle = unit(rng) * 6.283185307179586;
         const double speed = tilesPerFrame * kFrameTile;
-        s.boxes.push_back({{static_cast<T>(i * kFrameTile + 2 + unit(rng)), static_cast<T>(j * kFrameTile + 2 + unit(rng))},
-                           {T(12), T(12)}});
+        s.boxes.push_back(
+            {{static_cast<T>(i * kFrameTile + 2 + unit(rng)), static_cast<T>(j * kFrameTile + 2 + unit(rng))},
+             {T(12), T(12)}});
         s.moves.push_back({static_cast<T>(speed * std::cos(angle)), static_cast<T>(speed * std::sin(angle))});
     }
     return s;

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "tilesweep/tile_map.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <random>
 #include <vector>
-
-#include "tilesweep/tile_map.h"
 
 // Platformer levels (scenarios/README.md): a bordered map of 128 x 48 cells with ground three
 // cells thick broken by pits, platforms and walls standing on the ground, at tile sizes and
@@ -36,7 +36,9 @@ struct PlatformLevel {
 /// the same level).
 template <class T>
 [[nodiscard]] PlatformLevel<T> buildPlatformLevel(std::mt19937_64& random) {
-    const auto uniform = [&random](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(random); };
+    const auto uniform = [&random](double lo, double hi) {
+        return std::uniform_real_distribution<double>(lo, hi)(random);
+    };
     PlatformLevel<T> level;
     level.solid.assign(static_cast<std::size_t>(kLevelColumns * kLevelRows), 0);
     const auto set = [&level](std::int32_t i, std::int32_t j) {

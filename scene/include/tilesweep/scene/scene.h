@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "tilesweep/math.h"
+#include "tilesweep/resolve.h"
+#include "tilesweep/tile_map.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include "tilesweep/math.h"
-#include "tilesweep/resolve.h"
-#include "tilesweep/tile_map.h"
 
 // Scenes and their results as the command-line tool, the regression corpus and outside
 // harnesses exchange them: one JSON object per line (../shared/CONTRACT.md, "Scene files").
@@ -37,18 +37,18 @@ struct TileMap {
 /// rounded (once, to nearest) to T.
 template <class T>
 struct Scene {
-    std::string name;               ///< the scene's "name" field, or empty
+    std::string name;  ///< the scene's "name" field, or empty
     TileMap<T> map;
     Box<T> box{};
-    std::vector<Vec2<T>> moves;     ///< one displacement per frame, in order; never empty
+    std::vector<Vec2<T>> moves;  ///< one displacement per frame, in order; never empty
 };
 
 /// What one frame of a scene produced.
 template <class T>
 struct FrameResult {
     Vec2<T> position{};
-    std::vector<Contact<T>> contacts;   ///< step by step; within a step by row, then column
-    std::vector<Cell> startOverlaps;    ///< solid cells overlapped at the frame's start
+    std::vector<Contact<T>> contacts;  ///< step by step; within a step by row, then column
+    std::vector<Cell> startOverlaps;   ///< solid cells overlapped at the frame's start
 };
 
 /// A parsed scene line: either a scene, or an error naming the field that is wrong.
