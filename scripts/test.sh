@@ -5,7 +5,7 @@
 #   bash scripts/test.sh -L unit              # arguments go to ctest (here: the unit tests only)
 #   TILESWEEP_PRESET=asan-portable bash scripts/test.sh
 #
-# TILESWEEP_PRESET picks the preset of CMakePresets.json (dev, asan, portable, asan-portable,
+# TILESWEEP_PRESET picks the preset of CMakePresets.json (dev, asan, portable, portable-suite, asan-portable,
 # fuzz); TILESWEEP_SANITIZE=ON is short for the asan preset. Labels: unit, property, oracle,
 # corpus, soak, fuzz-replay, cli.
 set -euo pipefail
