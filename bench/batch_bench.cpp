@@ -4,7 +4,7 @@
 // stay the same, so the mix stays the same). Items/s is mover-frames/s; real time, since a
 // batch spans threads.
 //
-//     build/bench/tilesweep_batch_bench --benchmark_filter=Mix
+//     build/release/bench/tilesweep_batch_bench --benchmark_filter=Mix
 //
 // The map: 256 x 256 tiles of 16 px, floors every 16 rows with one-tile gaps, walls four tiles
 // high every 32 columns standing on the floors, open air in between. The movers (12 x 14 px):
