@@ -4,6 +4,7 @@
 #include "axis_sweep.h"
 #include "fast_frame.h"
 #include "lattice.h"
+#include "validity.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,27 +16,20 @@
 // (axis_sweep.h), on the lattice of this one pair.
 
 namespace tilesweep {
+using detail::isFinite;
+
 namespace {
 
+/// The state and contact axis of a verdict (the time is the caller's); true when it blocks.
 template <class T>
-bool isFinite(Vec2<T> v) noexcept {
-    return std::isfinite(v.x) && std::isfinite(v.y);
-}
-
-template <class T, class Num>
-BoxSweepOutput<T> sweepOnLattice(const BoxSweepInput<T>& in, const detail::Dyadic* d, int exponent) noexcept {
-    const auto lat = [exponent](detail::Dyadic v) { return detail::toLattice<Num>(v, exponent); };
-    const auto mx = detail::makeAxisMotion(lat(d[0]), lat(d[2]), lat(d[4]));
-    const auto my = detail::makeAxisMotion(lat(d[1]), lat(d[3]), lat(d[5]));
-    const auto test = detail::testTile(mx, my, lat(d[6]), lat(d[8]), lat(d[7]), lat(d[9]));
-    BoxSweepOutput<T> out;
-    switch (test.verdict) {
+bool recordVerdict(detail::TileVerdict verdict, const BoxSweepInput<T>& in, BoxSweepOutput<T>& out) noexcept {
+    switch (verdict) {
         case detail::TileVerdict::Misses:
             out.state = BoxSweepState::Misses;
-            return out;
+            return false;
         case detail::TileVerdict::StartsOverlapping:
             out.state = BoxSweepState::StartsOverlapping;
-            return out;
+            return false;
         case detail::TileVerdict::BlocksOnX:
             out.axis = Axis::X;
             break;
@@ -47,6 +41,17 @@ BoxSweepOutput<T> sweepOnLattice(const BoxSweepInput<T>& in, const detail::Dyadi
             break;
     }
     out.state = BoxSweepState::Blocks;
+    return true;
+}
+
+template <class T, class Num>
+BoxSweepOutput<T> sweepOnLattice(const BoxSweepInput<T>& in, const detail::Dyadic* d, int exponent) noexcept {
+    const auto lat = [exponent](detail::Dyadic v) { return detail::toLattice<Num>(v, exponent); };
+    const auto mx = detail::makeAxisMotion(lat(d[0]), lat(d[2]), lat(d[4]));
+    const auto my = detail::makeAxisMotion(lat(d[1]), lat(d[3]), lat(d[5]));
+    const auto test = detail::testTile(mx, my, lat(d[6]), lat(d[8]), lat(d[7]), lat(d[9]));
+    BoxSweepOutput<T> out;
+    if (!recordVerdict(test.verdict, in, out)) return out;
     out.time = detail::roundRatioToNearest<T>(test.time.num, test.time.den);
     return out;
 }
@@ -100,24 +105,7 @@ bool sweepFast(const BoxSweepInput<float>& in, BoxSweepOutput<float>& out) noexc
     const detail::FastTileTest<> test =
         detail::testTileFast(mx, my, static_cast<double>(in.tileMin.x), static_cast<double>(in.tileMax.x),
                              static_cast<double>(in.tileMin.y), static_cast<double>(in.tileMax.y), refined);
-    switch (test.verdict) {
-        case detail::TileVerdict::Misses:
-            out.state = BoxSweepState::Misses;
-            return true;
-        case detail::TileVerdict::StartsOverlapping:
-            out.state = BoxSweepState::StartsOverlapping;
-            return true;
-        case detail::TileVerdict::BlocksOnX:
-            out.axis = Axis::X;
-            break;
-        case detail::TileVerdict::BlocksOnY:
-            out.axis = Axis::Y;
-            break;
-        case detail::TileVerdict::Tie:
-            out.axis = detail::settleTie(in.xFaceExposed, in.yFaceExposed);
-            break;
-    }
-    out.state = BoxSweepState::Blocks;
+    if (!recordVerdict(test.verdict, in, out)) return true;
     return detail::roundTimeToFloat(test.time, refined, out.time);
 }
 

@@ -2,6 +2,7 @@
 #include "tilesweep/mover.h"
 
 #include "free_move.h"
+#include "validity.h"
 
 #include <cmath>
 #include <limits>
@@ -9,17 +10,10 @@
 // The game-loop calls: prepareMap, maxContacts and moveAndSlide, over resolveMove.
 
 namespace tilesweep {
+using detail::isFinite;
+using detail::isPositive;
+
 namespace {
-
-template <class T>
-bool isFinite(Vec2<T> v) noexcept {
-    return std::isfinite(v.x) && std::isfinite(v.y);
-}
-
-template <class T>
-bool isPositive(Vec2<T> v) noexcept {
-    return isFinite(v) && v.x > 0 && v.y > 0;
-}
 
 template <class T>
 void prepare(const TileMapView<T>& map, MapError& error, Vec2<double>& inverse,

@@ -1,27 +1,16 @@
 // SPDX-License-Identifier: MIT
+#include "validity.h"
+
 #include "tilesweep/resolve.h"
 #include "tilesweep/tile_map.h"
-
-#include <cmath>
 
 // Validity predicates (box2d's b2IsValid*): the cheap checks every entry point makes before it
 // computes anything. Map edge representability is O(columns + rows) and lives in
 // validateTileMap (tile_map.cpp), which callers run once per map.
 
 namespace tilesweep {
-namespace {
-
-template <class T>
-bool isFinite(Vec2<T> v) noexcept {
-    return std::isfinite(v.x) && std::isfinite(v.y);
-}
-
-template <class T>
-bool isPositive(Vec2<T> v) noexcept {
-    return isFinite(v) && v.x > 0 && v.y > 0;
-}
-
-}  // namespace
+using detail::isFinite;
+using detail::isPositive;
 
 template <class T>
 bool isValid(const SweepInput<T>& input) noexcept {
