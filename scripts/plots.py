@@ -244,6 +244,21 @@ TOLERANCE_PANELS = (("inside_depth", "deepest inside a tile"),
 ZERO_FLOOR = 1e-9  # where a tolerance of 0 (the claim held) is drawn on the log axis
 
 
+def breach_quantile(histogram, q):
+    """The upper edge of the binade holding the q-quantile of a breach histogram ({bin: count}; bin 0:
+    no breach; bin k: [2^(k-42), 2^(k-41)) pixels), as audit/engine_rates.cpp computes it."""
+    counts = {int(k): n for k, n in histogram.items()}
+    total = sum(counts.values())
+    if total == 0:
+        return 0.0
+    needed, seen = math.ceil(q * total), 0
+    for k in sorted(counts):
+        seen += counts[k]
+        if seen >= needed:
+            return 0.0 if k == 0 else 2.0 ** (k - 41)
+    return 2.0 ** 41
+
+
 def tolerance_vs_distance(rates):
     """Per claim, the largest breach (pixels) of every engine against the distance from the origin
     (the far families), with each engine's documented tolerance as a dashed line."""
@@ -261,6 +276,8 @@ def tolerance_vs_distance(rates):
             # Engines that agree draw on top of each other: markers differ in shape and size.
             ax.plot(xs, [max(v, ZERO_FLOOR) for v in values], marker=markers[e % len(markers)], color=colour(e),
                     label=engine["name"], linewidth=1.4, markersize=9 - 1.2 * (e % 4), alpha=0.85)
+            p99 = [breach_quantile(rates["cells"][e][k]["breach_histograms"][panel], 0.99) for k, _ in far]
+            ax.plot(xs, [max(v, ZERO_FLOOR) for v in p99], color=colour(e), linestyle=":", linewidth=1.2)
             if engine["documented_tolerance"] > 0:
                 ax.axhline(engine["documented_tolerance"], color=colour(e), linestyle="--", linewidth=1)
         ax.set_yscale("log")
@@ -268,8 +285,9 @@ def tolerance_vs_distance(rates):
         ax.set_xticks(xs, labels)
         ax.set_title(title, fontsize=10)
         ax.set_xlabel("distance from the origin (pixels)")
-    axes[0].set_ylabel("largest breach, pixels (bottom row: none)")
+    axes[0].set_ylabel("largest breach (solid), pixels; bottom row: none")
     handles, names = axes[0].get_legend_handles_labels()
+    handles.append(matplotlib.lines.Line2D([], [], color="#666666", linestyle=":", label="99% of scenes within"))
     handles.append(matplotlib.lines.Line2D([], [], color="#666666", linestyle="--", label="engine's documented tolerance"))
     fig.legend(handles=handles, loc="lower center", ncol=len(handles), frameon=False, bbox_to_anchor=(0.5, -0.06))
     fig.suptitle(f"The tolerance each claim would need, {rates['cases']} scenes per family", fontsize=11)
