@@ -42,7 +42,9 @@ struct CApi<float> {
     static ts_error move(const Map* m, const Mover* v, Result* r, ContactC* c, std::int32_t n) {
         return ts_move_and_slide_f(m, v, r, c, n);
     }
-    static ts_error setSolid(Map* m, std::int32_t i, std::int32_t j, int s) { return ts_map_set_solid_f(m, i, j, s); }
+    static ts_error setSolid(Map* m, std::int32_t i, std::int32_t j, int s) {
+        return ts_map_set_solid_f(m, i, j, s);
+    }
 };
 template <>
 struct CApi<double> {
@@ -56,7 +58,9 @@ struct CApi<double> {
     static ts_error move(const Map* m, const Mover* v, Result* r, ContactC* c, std::int32_t n) {
         return ts_move_and_slide_d(m, v, r, c, n);
     }
-    static ts_error setSolid(Map* m, std::int32_t i, std::int32_t j, int s) { return ts_map_set_solid_d(m, i, j, s); }
+    static ts_error setSolid(Map* m, std::int32_t i, std::int32_t j, int s) {
+        return ts_map_set_solid_d(m, i, j, s);
+    }
 };
 
 template <class T>
@@ -101,13 +105,16 @@ Flags flagsOf(const Contact<T>* contacts, std::int32_t count) {
 template <class T>
 std::string compareMove(const MoveResult<T>& got, const SweepResult<T>& want, const Flags& flags) {
     const MoveStatus status = want.status == Status::Blocked ? MoveStatus::Blocked : MoveStatus::Moved;
-    if (got.status != status) return "status " + std::to_string(int(got.status)) + " != " + std::to_string(int(status));
+    if (got.status != status)
+        return "status " + std::to_string(int(got.status)) + " != " + std::to_string(int(status));
     if (!sameBits(got.position.x, want.position.x) || !sameBits(got.position.y, want.position.y))
         return "position differs";
     if (got.contactCount != want.contactCount)
-        return "contactCount " + std::to_string(got.contactCount) + " != " + std::to_string(want.contactCount);
+        return "contactCount " + std::to_string(got.contactCount) +
+               " != " + std::to_string(want.contactCount);
     if (got.blockedX != flags.blockedX || got.blockedY != flags.blockedY || got.onGround != flags.onGround ||
-        got.onCeiling != flags.onCeiling || got.onWall != flags.onWall || got.wallNormalX != flags.wallNormalX)
+        got.onCeiling != flags.onCeiling || got.onWall != flags.onWall ||
+        got.wallNormalX != flags.wallNormalX)
         return "flags differ";
     return {};
 }
@@ -121,9 +128,9 @@ std::string compareStored(const Contact<T>* got, const Contact<T>* want, std::in
 
 /// One frame, every boundary; empty when all agree with `want` (room to spare).
 template <class T>
-std::string checkFrame(const Scene<T>& scene, const PreparedMap<T>& prepared, const typename CApi<T>::Map* cmap,
-                       const Box<T>& box, Vec2<T> move, const SweepResult<T>& want,
-                       const std::vector<Contact<T>>& wanted) {
+std::string checkFrame(const Scene<T>& scene, const PreparedMap<T>& prepared,
+                       const typename CApi<T>::Map* cmap, const Box<T>& box, Vec2<T> move,
+                       const SweepResult<T>& want, const std::vector<Contact<T>>& wanted) {
     const std::int32_t n = want.contactCount;
     const std::int32_t bound = maxContacts(box.size, scene.map.tileSize);
     const Flags flags = flagsOf(wanted.data(), n);
@@ -135,8 +142,8 @@ std::string checkFrame(const Scene<T>& scene, const PreparedMap<T>& prepared, co
         Cell overlaps[64];
         const SweepResult<T> got =
             resolveMove<T>({scene.map.view(), box, move}, {exact.data(), n, overlaps, 64});
-        if (got.status != want.status || got.contactCount != n || !sameBits(got.position.x, want.position.x) ||
-            !sameBits(got.position.y, want.position.y))
+        if (got.status != want.status || got.contactCount != n ||
+            !sameBits(got.position.x, want.position.x) || !sameBits(got.position.y, want.position.y))
             return "resolveMove into exactly " + std::to_string(n) + " contacts: a different result";
         if (std::string why = compareStored(exact.data(), wanted.data(), n); !why.empty())
             return "resolveMove into exactly " + std::to_string(n) + " contacts: " + why;
@@ -144,7 +151,8 @@ std::string checkFrame(const Scene<T>& scene, const PreparedMap<T>& prepared, co
     // moveAndSlide into exactly n, exactly the bound, and no buffer.
     const bool wide = bound > kInlineContacts;
     const auto expectRefused = [&](const MoveResult<T>& got, const std::string& at) -> std::string {
-        if (got.status != MoveStatus::ContactBufferTooSmall) return at + ": not refused as ContactBufferTooSmall";
+        if (got.status != MoveStatus::ContactBufferTooSmall)
+            return at + ": not refused as ContactBufferTooSmall";
         if (got.contactCount != bound) return at + ": refused without the bound as contactCount";
         return {};
     };
@@ -158,7 +166,8 @@ std::string checkFrame(const Scene<T>& scene, const PreparedMap<T>& prepared, co
             if (std::string why = expectRefused(got, at); !why.empty()) return why;
         } else {
             if (std::string why = compareMove(got, want, flags); !why.empty()) return at + ": " + why;
-            if (std::string why = compareStored(exact.data(), wanted.data(), n); !why.empty()) return at + ": " + why;
+            if (std::string why = compareStored(exact.data(), wanted.data(), n); !why.empty())
+                return at + ": " + why;
         }
     }
     if (bound <= kLargestBufferTried) {
@@ -166,7 +175,8 @@ std::string checkFrame(const Scene<T>& scene, const PreparedMap<T>& prepared, co
         const MoveResult<T> got = moveAndSlide(prepared, input, full.data(), bound);
         const std::string at = "moveAndSlide into exactly maxContacts = " + std::to_string(bound);
         if (std::string why = compareMove(got, want, flags); !why.empty()) return at + ": " + why;
-        if (std::string why = compareStored(full.data(), wanted.data(), n); !why.empty()) return at + ": " + why;
+        if (std::string why = compareStored(full.data(), wanted.data(), n); !why.empty())
+            return at + ": " + why;
     }
     {
         const MoveResult<T> got = moveAndSlide(prepared, input);
@@ -186,7 +196,8 @@ std::string checkFrame(const Scene<T>& scene, const PreparedMap<T>& prepared, co
         buffer.assign(static_cast<std::size_t>(capacity) + 1, typename C::ContactC{});
         return C::move(cmap, &mover, &result, buffer.data(), capacity);
     };
-    const auto compareC = [&](ts_error code, const typename C::Result& r, const std::vector<typename C::ContactC>& b,
+    const auto compareC = [&](ts_error code, const typename C::Result& r,
+                              const std::vector<typename C::ContactC>& b,
                               const std::string& at) -> std::string {
         if (code != TS_OK) return at + ": " + ts_error_message(code);
         if (!sameBits(r.position.x, want.position.x) || !sameBits(r.position.y, want.position.y))
@@ -222,7 +233,8 @@ std::string checkFrame(const Scene<T>& scene, const PreparedMap<T>& prepared, co
         const ts_error code = callC(bound, buffer, result);
         if (std::string why = compareC(code, result, buffer, at); !why.empty()) return why;
         if (wide) {
-            const std::string below = "ts_move_and_slide into one below ts_max_contacts = " + std::to_string(bound);
+            const std::string below =
+                "ts_move_and_slide into one below ts_max_contacts = " + std::to_string(bound);
             const ts_error short1 = callC(bound - 1, buffer, result);
             if (short1 == TS_ERROR_CONTACT_BUFFER_TOO_SMALL) {
                 if (result.contact_count != bound || result.status != TS_MOVE_CONTACT_BUFFER_TOO_SMALL)
@@ -267,7 +279,8 @@ std::string reportsEachCErrorByItsCause(const Scene<T>& scene) {
     using C = CApi<T>;
     constexpr int digits = std::numeric_limits<T>::digits;
     const TileMapView<T> view = scene.map.view();
-    std::vector<std::uint8_t> cells(view.solid, view.solid + static_cast<std::size_t>(view.columns) * view.rows);
+    std::vector<std::uint8_t> cells(view.solid,
+                                    view.solid + static_cast<std::size_t>(view.columns) * view.rows);
     typename C::Desc base = descOf(view);
     if (cells.empty()) {
         cells.assign(1, 0);
@@ -275,7 +288,8 @@ std::string reportsEachCErrorByItsCause(const Scene<T>& scene) {
         base.rows = 1;
     }
     base.solid = cells.data();
-    const auto expect = [](ts_error got, ts_error want, const char* field, const std::string& cause) -> std::string {
+    const auto expect = [](ts_error got, ts_error want, const char* field,
+                           const std::string& cause) -> std::string {
         if (got != want)
             return cause + ": got " + std::to_string(int(got)) + " (" + ts_error_message(got) + "), want " +
                    std::to_string(int(want)) + " (" + ts_error_message(want) + ")";
@@ -331,17 +345,20 @@ std::string reportsEachCErrorByItsCause(const Scene<T>& scene) {
     typename C::Map* raw = nullptr;
     if (C::create(&base, &raw) != TS_OK) return why.empty() ? "ts_map_create refused the scene's map" : why;
     const MapHandle<T> map(raw);
-    check(expect(C::setSolid(map.get(), base.columns, 0, 1), TS_ERROR_CELL_OUT_OF_RANGE, "cell", "cell i = columns"));
+    check(expect(C::setSolid(map.get(), base.columns, 0, 1), TS_ERROR_CELL_OUT_OF_RANGE, "cell",
+                 "cell i = columns"));
     check(expect(C::setSolid(map.get(), 0, -1, 1), TS_ERROR_CELL_OUT_OF_RANGE, "cell", "cell j = -1"));
     typename C::Result result{};
     typename C::Mover mover = moverOf(scene.box, scene.moves.front());
-    check(expect(C::move(map.get(), nullptr, &result, nullptr, 0), TS_ERROR_NULL_ARGUMENT, "NULL", "a NULL mover"));
+    check(expect(C::move(map.get(), nullptr, &result, nullptr, 0), TS_ERROR_NULL_ARGUMENT, "NULL",
+                 "a NULL mover"));
     mover.displacement.y = std::numeric_limits<T>::quiet_NaN();
     check(expect(C::move(map.get(), &mover, &result, nullptr, 0), TS_ERROR_INVALID_INPUT, "mover",
                  "a NaN displacement"));
     mover = moverOf(scene.box, scene.moves.front());
     mover.box.size.x = 0;
-    check(expect(C::move(map.get(), &mover, &result, nullptr, 0), TS_ERROR_INVALID_INPUT, "mover", "a box size 0"));
+    check(expect(C::move(map.get(), &mover, &result, nullptr, 0), TS_ERROR_INVALID_INPUT, "mover",
+                 "a box size 0"));
     // A box 70 tiles wide (maxContacts 75) moving into a solid cell, with 74 entries.
     if (cells.size() >= 2 && base.columns >= 2) {
         std::vector<std::uint8_t> one(cells.size(), 0);
@@ -356,8 +373,9 @@ std::string reportsEachCErrorByItsCause(const Scene<T>& scene) {
             const typename C::Mover w{{{base.origin.x + tx - 70 * tx - tx / 2, base.origin.y}, {70 * tx, ty}},
                                       {tx, T(0)}};
             std::vector<typename C::ContactC> buffer(80);
-            check(expect(C::move(wideMap.get(), &w, &result, buffer.data(), 74), TS_ERROR_CONTACT_BUFFER_TOO_SMALL,
-                         "contacts", "a box 70 tiles wide with 74 entries"));
+            check(expect(C::move(wideMap.get(), &w, &result, buffer.data(), 74),
+                         TS_ERROR_CONTACT_BUFFER_TOO_SMALL, "contacts",
+                         "a box 70 tiles wide with 74 entries"));
         }
     }
     return why;

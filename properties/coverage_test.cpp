@@ -60,8 +60,8 @@ TEST(CoverageFloors, aFloorFarAboveTheTrueShareIsInsufficientCoverageNotAFailure
 }
 
 TEST(CoverageFloors, aFloorNearTheTrueShareDrawsMoreCasesButNeverFails) {
-    const Property p =
-        makeProperty("hitsAsOftenAsItDoes", "matchesExactReferenceBitForBit", "float", "random", {{"hit", 0.12}});
+    const Property p = makeProperty("hitsAsOftenAsItDoes", "matchesExactReferenceBitForBit", "float",
+                                    "random", {{"hit", 0.12}});
     RunOptions options;
     options.cases = 50;
     options.maxCases = 3200;

@@ -703,6 +703,33 @@ int smallestInputExponent(const Scene<T>& scene) {
     return lowest;
 }
 
+/// The most significant bits any input of the scene needs (its significand without trailing zeros).
+template <class T>
+int widestSignificand(const Scene<T>& scene) {
+    int widest = 0;
+    const auto note = [&widest](T v) {
+        if (v == 0 || !std::isfinite(v)) return;
+        int e = 0;
+        auto m = static_cast<std::int64_t>(
+            std::ldexp(std::frexp(std::fabs(v), &e), std::numeric_limits<T>::digits));
+        int bits = std::numeric_limits<T>::digits;
+        while (m % 2 == 0) {
+            m /= 2;
+            --bits;
+        }
+        widest = std::max(widest, bits);
+    };
+    for (const Vec2<T>& v : {scene.map.origin, scene.map.tileSize, scene.box.pos, scene.box.size}) {
+        note(v.x);
+        note(v.y);
+    }
+    for (const Vec2<T>& m : scene.moves) {
+        note(m.x);
+        note(m.y);
+    }
+    return widest;
+}
+
 /// The path that decided the scene's frames (src/decision_path.h): "exact" when any frame fell
 /// back to the lattice, else "filtered" when any predicate needed the exact refinement, else "fast".
 template <class T>
@@ -775,6 +802,11 @@ std::vector<std::string> classifyScene(const Scene<T>& scene) {
     if (path != "fast") tags.push_back("fallback");
     // A near tie its refinement settled: no exact tie, yet the filter could not decide alone.
     if (path == "filtered" && !tie && hit) tags.push_back("near-tie-refined");
+    // Code only double frames reach: a refinement on inputs of more than 27 significant bits,
+    // where TwoProduct's split leaves both low halves nonzero (productError's aLow * bLow term)
+    // and contact times are exact pairs rounded by roundTimeToDouble's remainder test.
+    if (std::is_same<T, double>::value && path == "filtered" && widestSignificand(scene) > 27)
+        tags.push_back("full-precision-refined");
     // The tiny end of the range: some nonzero input below 2^-500 (double) or 2^-100 (float),
     // where a product of two inputs would underflow a double (or come near it).
     if (smallestInputExponent(scene) < (std::is_same<T, float>::value ? -100 : -500)) tags.push_back("tiny");

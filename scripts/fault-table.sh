@@ -7,6 +7,10 @@
 #   bash scripts/fault-table.sh [CASES]            every fault; writes docs/fault-table.md (CASES: 4000)
 #   TILESWEEP_FAULTS="NAME ..." bash scripts/fault-table.sh [CASES]
 #                                                  only those; prints the rows, writes no file
+#   TILESWEEP_MUTANTS=1 bash scripts/fault-table.sh [CASES]
+#                                                  the mutants of scripts/mutants.txt instead (or
+#                                                  TILESWEEP_MUTANTS="NAME ..."): each applied to its
+#                                                  file for the build only, then restored; prints rows
 #
 # Each fault gets its own build directory under build-faults/ (TILESWEEP_FAULT_DIR); ccache, when
 # installed, shares the unchanged objects between them. Run it under `nice` on a shared machine.
@@ -16,6 +20,33 @@ source "$root/scripts/setup.sh"
 cases=${1:-4000}
 listed=$(sed -n 's|^//   \([A-Z][A-Z0-9_]*\) .*|\1|p' "$root/src/fault_injection.h")
 faults=(${TILESWEEP_FAULTS:-$listed})
+mutants=${TILESWEEP_MUTANTS:-}
+if [ -n "$mutants" ]; then
+    all=$(sed -n 's/^\([A-Z][A-Z0-9_]*\) |||.*/\1/p' "$root/scripts/mutants.txt")
+    [ "$mutants" = 1 ] && mutants=$all
+    faults=($mutants)
+fi
+# Applies (or with "restore", undoes) a mutant of scripts/mutants.txt in the working tree.
+mutate() {
+    python3 - "$root" "$1" "${2:-apply}" <<'PY'
+import os, sys
+root, name, mode = sys.argv[1:]
+for line in open(os.path.join(root, "scripts/mutants.txt")):
+    parts = line.rstrip("\n").split(" ||| ")
+    if line.startswith("#") or len(parts) != 4 or parts[0] != name:
+        continue
+    path = os.path.join(root, parts[1])
+    text = open(path).read()
+    before, after = (parts[2], parts[3]) if mode == "apply" else (parts[3], parts[2])
+    if text.count(before) != 1:
+        sys.exit(f"mutant {name}: the text occurs {text.count(before)} times in {parts[1]}")
+    open(path, "w").write(text.replace(before, after))
+    print(parts[1])
+    break
+else:
+    sys.exit(f"no mutant {name}")
+PY
+}
 out=${TILESWEEP_FAULT_DIR:-$root/build-faults}
 launcher=()
 if command -v ccache >/dev/null; then
@@ -31,11 +62,26 @@ for fault in "${faults[@]}"; do
     where=$(grep -l "TILESWEEP_FAULT_$fault\b" -r "$root/src" "$root/oracle" "$root/cmake" 2>/dev/null |
         grep -v fault_injection.h | sed "s|$root/||" | sort | tr '\n' ' ')
     build="$out/$fault"
-    cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTILESWEEP_FAULT="$fault" "${launcher[@]}" \
+    define=$fault
+    if [ -n "$mutants" ]; then
+        define=""
+        where=$(mutate "$fault")
+        trap 'mutate "$fault" restore >/dev/null; rm -f "$table"' EXIT
+    fi
+    cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTILESWEEP_FAULT="$define" "${launcher[@]}" \
         -DTILESWEEP_BUILD_BENCH=OFF -DTILESWEEP_BUILD_CLI=OFF -DTILESWEEP_BUILD_AUDIT=OFF \
         -DTILESWEEP_BUILD_SOAK=OFF -DTILESWEEP_BUILD_ADAPTERS=OFF -DTILESWEEP_BUILD_EXAMPLES=OFF \
         -DTILESWEEP_BUILD_FUZZ=OFF >/dev/null 2>&1
-    cmake --build "$build" >"$build/build.log" 2>&1
+    built=0
+    cmake --build "$build" >"$build/build.log" 2>&1 || built=$?
+    if [ -n "$mutants" ]; then
+        mutate "$fault" restore >/dev/null
+        trap 'rm -f "$table"' EXIT
+    fi
+    if [ "$built" -ne 0 ]; then
+        row "| $fault | $where | does not build | - | - |"
+        continue
+    fi
     corpus="$build/corpus"
     rm -rf "$corpus"
     start=$SECONDS
@@ -61,7 +107,7 @@ PY
 )
     row "| $fault | $where | $caught | $smallest | $((SECONDS - start)) |"
 done
-if [ -z "${TILESWEEP_FAULTS:-}" ]; then
+if [ -z "${TILESWEEP_FAULTS:-}" ] && [ -z "$mutants" ]; then
     {
         echo "# Fault table"
         echo
