@@ -93,6 +93,7 @@ PropertyOutcome runClaimOnce(const std::string& propertyName, const Claim<T>& cl
     GeneratedScene<T> lastFailure;
     std::string lastMessage;
     bool failed = false;
+    int counted = 0;  // failing cases, when counting (!options.shrink)
     const auto property = [&] {
         const GeneratedScene<T> g = *genScene<T>(family);
         // One RC_TAG per case (a second would replace the first): the classes, space-separated.
@@ -110,6 +111,15 @@ PropertyOutcome runClaimOnce(const std::string& propertyName, const Claim<T>& cl
             return;  // a rehearsal (scene_runner.h): the case's scenes are noted, not judged
         }
         if (!message.empty()) {
+            if (!options.shrink) {  // counting: every case is judged; the first failure is kept
+                if (!failed) {
+                    lastFailure = g;
+                    lastMessage = message;
+                }
+                failed = true;
+                ++counted;
+                return;
+            }
             // RapidCheck shrinks by keeping failing cases, so the last failure seen is the
             // minimal one it reports.
             lastFailure = g;
@@ -121,6 +131,7 @@ PropertyOutcome runClaimOnce(const std::string& propertyName, const Claim<T>& cl
     rc::detail::TestParams params;
     params.seed = options.seed;
     params.maxSuccess = options.cases;
+    params.disableShrinking = !options.shrink;
     rc::detail::TestMetadata metadata;
     metadata.id = propertyName;
     metadata.description = propertyName;
@@ -138,10 +149,20 @@ PropertyOutcome runClaimOnce(const std::string& propertyName, const Claim<T>& cl
                 std::string tag;
                 while (words >> tag) outcome.tagCounts[tag] += count;
             }
-        outcome.passed = true;
+        outcome.passed = counted == 0;
+        if (counted > 0) {
+            outcome.cases = success.numSuccess - counted;
+            outcome.failedCases = counted;
+            outcome.sceneLine = formatScene(lastFailure.scene);
+            outcome.failure = lastMessage;
+            outcome.message = lastMessage + "\n(" + std::to_string(counted) + " of " +
+                              std::to_string(success.numSuccess) + " cases failed; the first, not shrunk) " +
+                              familyName(lastFailure.family) + " scene: " + outcome.sceneLine;
+        }
     } else if (result.template is<rc::detail::FailureResult>()) {
         const auto failure = result.template get<rc::detail::FailureResult>();
         outcome.cases = failure.numSuccess;
+        outcome.failedCases = 1;
         outcome.message = lastMessage + "\n" +
                           (failed ? familyName(lastFailure.family) + std::string(" scene: ") +
                                         formatScene(lastFailure.scene)

@@ -25,6 +25,8 @@ struct RunOptions {
     /// Most cases a run may draw, in all, to settle its coverage floors (coverage_judgement.h);
     /// 0: the larger of 8 x cases and kDefaultCoverageCases.
     long long maxCases = 0;
+    bool shrink = true;  ///< false: count instead: every case is judged, the failures counted and the
+                         ///< first one kept unshrunk (later rounds of a property already shrunk)
 };
 
 /// The least cap on a run's cases when its floors need more than `cases` to settle: enough for
@@ -35,8 +37,10 @@ inline constexpr long long kDefaultCoverageCases = 16000;
 /// that is the generator's shortfall, never the resolver's (coverage tags come from the scene and
 /// the exact reference), so it is reported apart from `passed`.
 struct PropertyOutcome {
-    bool passed = false;                   ///< no case falsified the claim
-    int cases = 0;                         ///< cases that passed, over every coverage round
+    bool passed = false;  ///< no case falsified the claim
+    int cases = 0;        ///< cases that passed, over every coverage round
+    int failedCases = 0;  ///< cases that falsified the claim: 1 when a run stops at its first failure
+                          ///< to shrink it, every failing case when it counts (RunOptions::shrink false)
     std::map<std::string, int> tagCounts;  ///< cases per coverage tag
     std::string message;                   ///< why the claim failed (the counterexample)
     /// The floors certainly missed (insufficient coverage), each with its share and interval;
