@@ -42,6 +42,10 @@ namespace {
 using properties::Property;
 using properties::PropertyOutcome;
 
+/// How long shrinking one counterexample may take with an outside resolver, by default: every
+/// candidate is a request (a process run, in file mode).
+constexpr double kOutsideShrinkSeconds = 10;
+
 /// How many failure messages a property keeps for the summary (the first ones: the shrunk
 /// counterexample, then counting rounds).
 constexpr std::size_t kMessagesPerProperty = 3;
@@ -122,7 +126,10 @@ void runRounds(const std::vector<const Property*>& work, int worker, int jobs, c
                        static_cast<std::uint64_t>(round) * static_cast<std::uint64_t>(shard.count) +
                        static_cast<std::uint64_t>(shard.index);
             run.cases = options.cases;
-            run.shrink = !shrunk[k];
+            run.shrink = !shrunk[k] && !options.noShrink;
+            run.shrinkSeconds = options.shrinkSeconds >= 0 ? options.shrinkSeconds
+                                : options.resolverCmd.empty() ? 0.0
+                                                              : kOutsideShrinkSeconds;
             if (run.shrink) run.corpusDir = corpusDirOf(options);  // one regression file a property
             if (process) prefetchRound(*work[k], run, *process);
             const PropertyOutcome o = work[k]->run(run);
@@ -212,6 +219,13 @@ CLI::App* addCheckCommand(CLI::App& app, CheckOptions& options) {
         ->type_name("FILE.md");
     command->add_flag("--keep-going", options.keepGoing,
                       "Keep running rounds after a failure, to measure failure rates over the whole budget");
+    command
+        ->add_option("--shrink-seconds", options.shrinkSeconds,
+                     "Stop shrinking a counterexample after this long, keeping the smallest found (default:\n"
+                     "10 with --resolver-cmd, no limit otherwise)")
+        ->check(CLI::NonNegativeNumber);
+    command->add_flag("--no-shrink", options.noShrink,
+                      "Never shrink: report each failure as found and count every failing case (throughput)");
     command
         ->add_option("--shard", options.shard,
                      "K/N: run slice K (from 0) of N: round r uses seed + r*N + K, so N runs cover\n"

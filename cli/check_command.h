@@ -29,6 +29,8 @@ struct CheckOptions {
     std::string scalar;             ///< "float" or "double"; empty: both (built-in), float (outside)
     std::string report;             ///< a conformance report (Markdown) to write; empty: none
     bool keepGoing = false;         ///< keep running rounds after a failure (failure rates)
+    double shrinkSeconds = -1;      ///< per counterexample; < 0: 10 s with --resolver-cmd, else no limit
+    bool noShrink = false;          ///< never shrink: every round counts its failures (throughput)
     std::string shard = "0/1";      ///< K/N: round r runs seed + r*N + K (shard.h)
     std::string json;               ///< the run as JSON, for `tilesweep merge`; empty: none
     bool quiet = false;             ///< no per-run progress lines

@@ -94,7 +94,18 @@ PropertyOutcome runClaimOnce(const std::string& propertyName, const Claim<T>& cl
     std::string lastMessage;
     bool failed = false;
     int counted = 0;  // failing cases, when counting (!options.shrink)
+    std::chrono::steady_clock::time_point firstFailure{};
+    bool shrinkingStopped = false;
     const auto property = [&] {
+        // Past the shrinking budget every further candidate counts as passing, unjudged, so that
+        // RapidCheck ends with the smallest failing case found so far (with an outside resolver
+        // each candidate is a request: an engine that starts slowly would shrink for minutes).
+        if (failed && options.shrink && options.shrinkSeconds > 0 &&
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - firstFailure).count() >
+                options.shrinkSeconds) {
+            shrinkingStopped = true;
+            return;
+        }
         const GeneratedScene<T> g = *genScene<T>(family);
         // One RC_TAG per case (a second would replace the first): the classes, space-separated.
         std::string tags = std::string("family:") + familyName(g.family);
@@ -122,6 +133,7 @@ PropertyOutcome runClaimOnce(const std::string& propertyName, const Claim<T>& cl
             }
             // RapidCheck shrinks by keeping failing cases, so the last failure seen is the
             // minimal one it reports.
+            if (!failed) firstFailure = std::chrono::steady_clock::now();
             lastFailure = g;
             lastMessage = message;
             failed = true;
@@ -163,6 +175,7 @@ PropertyOutcome runClaimOnce(const std::string& propertyName, const Claim<T>& cl
         const auto failure = result.template get<rc::detail::FailureResult>();
         outcome.cases = failure.numSuccess;
         outcome.failedCases = 1;
+        if (shrinkingStopped) lastMessage += " (shrinking stopped after the --shrink-seconds budget)";
         outcome.message = lastMessage + "\n" +
                           (failed ? familyName(lastFailure.family) + std::string(" scene: ") +
                                         formatScene(lastFailure.scene)

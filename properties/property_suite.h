@@ -25,6 +25,8 @@ struct RunOptions {
     /// Most cases a run may draw, in all, to settle its coverage floors (coverage_judgement.h);
     /// 0: the larger of 8 x cases and kDefaultCoverageCases.
     long long maxCases = 0;
+    double shrinkSeconds = 0;  ///< stop shrinking this long after the first failure (keeping the
+                               ///< smallest case found so far); 0: no limit
     bool shrink = true;  ///< false: count instead: every case is judged, the failures counted and the
                          ///< first one kept unshrunk (later rounds of a property already shrunk)
 };

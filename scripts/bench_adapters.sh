@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# How fast the suite holds each engine to the contract: `tilesweep check --resolver-cmd` against
+# every adapter whose runtime is here, one after the other, each for the same budget on all
+# cores, every round kept going and none shrinking (--keep-going --no-shrink: every case is
+# judged and every failure counted, so the figure is the engine's, not shrinking's).
+# Writes docs/bench/adapters.md (cases judged per second, passed and failed, with the machine's
+# load before and after each run) unless --out says otherwise. A benchmark, not a test: it
+# asserts nothing; read the figures against the targets in the README.
+#
+#   bash scripts/bench_adapters.sh                  # 20 s each, 1000 cases a property per round
+#   bash scripts/bench_adapters.sh --seconds 60 --cases 2000 --out /tmp/adapters.md
+#
+# Needs the dev build (bash scripts/test.sh builds it); the Godot and Rapier adapters install
+# their runtimes on first use (adapters/README.md).
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+seconds=20
+cases=1000
+out=$root/docs/bench/adapters.md
+while [ $# -gt 0 ]; do
+    case $1 in
+        --seconds) seconds=$2; shift 2 ;;
+        --cases) cases=$2; shift 2 ;;
+        --out) out=$2; shift 2 ;;
+        *) echo "bench_adapters: unknown option $1 (--seconds S, --cases N, --out FILE)" >&2; exit 2 ;;
+    esac
+done
+build=${TILESWEEP_BUILD_DIR:-$root/build/dev}
+tool=$build/cli/tilesweep
+if [ ! -x "$tool" ]; then
+    echo "bench_adapters: $tool not found: build first (bash scripts/test.sh)" >&2
+    exit 2
+fi
+
+# name | command | what it is
+engines=(
+    "tilesweep|$tool resolve --scalar float|tilesweep itself through a pipe: the suite's own cost"
+    "tilesweep (file mode)|$tool resolve --scalar float {in} > {out}|the same, one process run per batch"
+    "twin|$build/adapters/tilesweep_twin_adapter|the inexact game-style twin (C++)"
+    "box2d|$build/adapters/tilesweep_box2d_adapter|Box2D 2.4 b2TimeOfImpact per tile (C++)"
+    "godot|${TILESWEEP_ADAPTERS:-$root/adapters}/godot/run.sh {in} {out}|Godot 3 body_test_motion (GDScript, file mode)"
+    "rapier|${TILESWEEP_ADAPTERS:-$root/adapters}/rapier/run.sh|Rapier KinematicCharacterController (node, pipe)"
+)
+
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+{
+    echo "# Conformance throughput: the suite against each engine"
+    echo
+    echo "\`bash scripts/bench_adapters.sh --seconds $seconds --cases $cases\` on $(nproc) cores ($(uname -m),"
+    echo "$(lscpu 2>/dev/null | sed -n 's/^Model name: *//p' | head -1)); each run is"
+    echo "\`tilesweep check --resolver-cmd CMD --scalar float --cases $cases --seconds $seconds --keep-going --no-shrink\`."
+    echo "Cases judged per second count every case, passed or failed; rounds rehearse on tilesweep"
+    echo "and send each property round to the engine in one batch."
+    echo
+    echo "| engine | what | cases judged | passed | failed | cases/s | properties failed | load before, after |"
+    echo "|---|---|---:|---:|---:|---:|---:|---|"
+} > "$scratch/report.md"
+for entry in "${engines[@]}"; do
+    IFS='|' read -r name command what <<<"$entry"
+    first=${command%% *}
+    if [ ! -x "$first" ]; then
+        echo "bench_adapters: $name skipped: $first is not built or not here" >&2
+        echo "| $name | $what | skipped: not here | | | | | |" >> "$scratch/report.md"
+        continue
+    fi
+    load_before=$(cut -d' ' -f1 /proc/loadavg)
+    echo "bench_adapters: $name for $seconds s" >&2
+    "$tool" check --resolver-cmd "$command" --scalar float --cases "$cases" --seconds "$seconds" --keep-going --no-shrink \
+        --corpus "$scratch/corpus" --json "$scratch/$name.json" > "$scratch/$name.out" 2>&1 || true
+    load_after=$(cut -d' ' -f1 /proc/loadavg)
+    summary=$(grep -E '^[0-9]+ cases in ' "$scratch/$name.out" | tail -1)
+    if [ -z "$summary" ]; then
+        echo "bench_adapters: $name gave no summary; its output ends:" >&2
+        tail -5 "$scratch/$name.out" >&2
+        echo "| $name | $what | no summary | | | | | $load_before, $load_after |" >> "$scratch/report.md"
+        continue
+    fi
+    judged=$(echo "$summary" | awk '{print $1}')
+    rate=$(echo "$summary" | sed -n 's/.*: \([0-9]*\) cases\/s.*/\1/p')
+    failed_properties=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$scratch/$name.out" | awk '{print $3}')
+    failed_cases=$(python3 -c 'import json,sys; print(sum(r["failures"] for r in json.load(open(sys.argv[1]))["rows"]))' \
+        "$scratch/$name.json")
+    echo "| $name | $what | $judged | $((judged - failed_cases)) | $failed_cases | $rate | $failed_properties | $load_before, $load_after |" \
+        >> "$scratch/report.md"
+done
+mkdir -p "$(dirname "$out")"
+cp "$scratch/report.md" "$out"
+cat "$out"
