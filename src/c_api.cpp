@@ -67,6 +67,8 @@ ts_error errorOf(MapError e) noexcept {
             return TS_ERROR_MAP_UNREPRESENTABLE_EDGE_X;
         case MapError::UnrepresentableEdgeY:
             return TS_ERROR_MAP_UNREPRESENTABLE_EDGE_Y;
+        case MapError::InexactArithmetic:
+            return TS_ERROR_INEXACT_ARITHMETIC;
     }
     return TS_ERROR_MAP_NEGATIVE_DIMENSIONS;
 }
@@ -252,6 +254,9 @@ const char* ts_error_message(int error) {
             return "out of memory";
         case TS_ERROR_THREADS:
             return "pool: a worker thread could not be started";
+        case TS_ERROR_INEXACT_ARITHMETIC:
+            return "arithmetic: the floating-point environment is not exact (rounding mode not to nearest, "
+                   "fused multiply-add or excess precision); the library refuses every map";
     }
     return "unknown tilesweep error code";
 }

@@ -55,7 +55,8 @@ typedef enum ts_error {
     TS_ERROR_CONTACT_BUFFER_TOO_SMALL = 9,   /**< give ts_max_contacts_* entries */
     TS_ERROR_CELL_OUT_OF_RANGE = 10,         /**< a cell index outside the map */
     TS_ERROR_OUT_OF_MEMORY = 11,             /**< allocation failed (map or pool creation only) */
-    TS_ERROR_THREADS = 12                    /**< a worker thread could not be started */
+    TS_ERROR_THREADS = 12,                   /**< a worker thread could not be started */
+    TS_ERROR_INEXACT_ARITHMETIC = 13         /**< rounding not to nearest, FMA or excess precision */
 } ts_error;
 
 /** How a move ended (ts_result_*.status). */
