@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "tilesweep/batch.h"
 
+#include "batch_run.h"
+
 #include <atomic>
 #include <condition_variable>
 #include <mutex>
@@ -123,11 +125,21 @@ void BatchPool::run(std::size_t count, std::size_t chunk, void (*work)(void*, st
     s.done.wait(lock, [&] { return s.active.load() == 0; });
 }
 
-namespace {
+namespace detail {
 
-/// Movers per chunk: large enough that the shared cursor is touched rarely (a chunk is tens of
-/// microseconds of work), small enough that two threads finish within a chunk of each other.
-constexpr std::size_t kBatchChunk = 256;
+void runBatch(std::size_t count, void (*work)(void*, std::size_t, std::size_t), void* context,
+              BatchPool* pool) noexcept {
+    if (count == 0) return;
+    if (pool == nullptr) {
+        work(context, 0, count);
+        return;
+    }
+    pool->run(count, kBatchChunk, work, context);
+}
+
+}  // namespace detail
+
+namespace {
 
 template <class T>
 struct BatchJob {
@@ -145,13 +157,9 @@ void runRange(void* context, std::size_t begin, std::size_t end) {
 template <class T>
 void batchOf(const PreparedMap<T>& map, const MoveInput<T>* inputs, MoveResult<T>* results, std::size_t count,
              BatchPool* pool) noexcept {
-    if (inputs == nullptr || results == nullptr || count == 0) return;
+    if (inputs == nullptr || results == nullptr) return;
     BatchJob<T> job{&map, inputs, results};
-    if (pool == nullptr) {
-        runRange<T>(&job, 0, count);
-        return;
-    }
-    pool->run(count, kBatchChunk, &runRange<T>, &job);
+    detail::runBatch(count, &runRange<T>, &job, pool);
 }
 
 }  // namespace

@@ -1,24 +1,50 @@
 // SPDX-License-Identifier: MIT
-// The C API (include/tilesweep/tilesweep.h) over the game-loop and batch calls. Every entry
-// point catches everything (allocation and thread start are the only things that can throw)
-// and reports a ts_error; none aborts.
+// The C API (include/tilesweep/tilesweep.h) over the game-loop and batch calls. Nothing here
+// throws but the pool's thread start, which is caught; memory comes from the map's allocator
+// (malloc by default), never from operator new, and no C++ object is made in a caller's buffer.
+#include "batch_run.h"
+
 #include "tilesweep/batch.h"
 #include "tilesweep/mover.h"
 #include "tilesweep/tilesweep.h"
 
-#include <cstring>
+#include <cstdlib>
 #include <new>
-#include <vector>
+#include <type_traits>
 
-struct ts_map_f {
-    std::vector<std::uint8_t> cells;
-    tilesweep::PreparedMap<float> map;
+static_assert(TILESWEEP_VERSION_MAJOR >= 0 && TILESWEEP_VERSION_MINOR < 100 && TILESWEEP_VERSION_PATCH < 100,
+              "TILESWEEP_VERSION packs minor and patch in two decimal digits each");
+
+namespace {
+
+void* mallocAllocate(std::size_t size, void*) { return std::malloc(size); }
+void mallocRelease(void* memory, std::size_t, void*) { std::free(memory); }
+
+/// The allocator a map keeps: the caller's, or malloc and free.
+ts_allocator allocatorOf(const ts_allocator* given) noexcept {
+    if (given != nullptr && given->allocate != nullptr && given->release != nullptr) return *given;
+    return ts_allocator{&mallocAllocate, &mallocRelease, nullptr};
+}
+
+}  // namespace
+
+// A map is one block from its allocator: this header, then columns * rows cells.
+template <class T>
+struct MapBlock {
+    ts_allocator allocator;
+    std::size_t bytes;  ///< the block's size, header included
+    tilesweep::PreparedMap<T> map;
+
+    [[nodiscard]] std::uint8_t* cells() noexcept { return reinterpret_cast<std::uint8_t*>(this + 1); }
 };
 
-struct ts_map_d {
-    std::vector<std::uint8_t> cells;
-    tilesweep::PreparedMap<double> map;
-};
+struct ts_map_f : MapBlock<float> {};
+struct ts_map_d : MapBlock<double> {};
+static_assert(sizeof(ts_map_f) == sizeof(MapBlock<float>) && sizeof(ts_map_d) == sizeof(MapBlock<double>),
+              "the cells start right after the header");
+static_assert(std::is_trivially_destructible<tilesweep::Contact<float>>::value &&
+                  std::is_trivially_destructible<tilesweep::Contact<double>>::value,
+              "a scratch contact list is released without destructor calls");
 
 struct ts_pool {
     explicit ts_pool(int threads) : pool(threads) {}
@@ -36,7 +62,7 @@ template <>
 struct Types<float> {
     using Map = ts_map_f;
     using Desc = ts_map_desc_f;
-    using Vec = ts_vec2f;
+    using Vec = ts_vec2_f;
     using Mover = ts_mover_f;
     using Result = ts_result_f;
     using ContactC = ts_contact_f;
@@ -45,7 +71,7 @@ template <>
 struct Types<double> {
     using Map = ts_map_d;
     using Desc = ts_map_desc_d;
-    using Vec = ts_vec2d;
+    using Vec = ts_vec2_d;
     using Mover = ts_mover_d;
     using Result = ts_result_d;
     using ContactC = ts_contact_d;
@@ -112,6 +138,7 @@ void toResult(const tilesweep::MoveResult<T>& r, typename Types<T>::Result& out)
 
 template <class T>
 ts_error createMap(const typename Types<T>::Desc* desc, typename Types<T>::Map** out) noexcept {
+    using Map = typename Types<T>::Map;
     if (out == nullptr) return TS_ERROR_NULL_ARGUMENT;
     *out = nullptr;
     if (desc == nullptr) return TS_ERROR_NULL_ARGUMENT;
@@ -120,19 +147,30 @@ ts_error createMap(const typename Types<T>::Desc* desc, typename Types<T>::Map**
                                    desc->rows, desc->solid};
     const MapError header = tilesweep::validateTileMap(view);
     if (header != MapError::None) return errorOf(header);
-    auto* map = new (std::nothrow) typename Types<T>::Map;
-    if (map == nullptr) return TS_ERROR_OUT_OF_MEMORY;
-    try {
-        const auto cells = static_cast<std::size_t>(desc->columns) * static_cast<std::size_t>(desc->rows);
-        map->cells.assign(desc->solid, desc->solid + cells);
-    } catch (...) {
-        delete map;
-        return TS_ERROR_OUT_OF_MEMORY;
-    }
-    view.solid = map->cells.data();
+    const ts_allocator allocator = allocatorOf(desc->allocator);
+    // validateTileMap bounds columns * rows by kMaxCells (2^31 - 1): no overflow.
+    const auto cells = static_cast<std::size_t>(desc->columns) * static_cast<std::size_t>(desc->rows);
+    const std::size_t bytes = sizeof(Map) + cells;
+    void* memory = allocator.allocate(bytes, allocator.user);
+    if (memory == nullptr) return TS_ERROR_OUT_OF_MEMORY;
+    auto* map = new (memory) Map{};  // the library's own block, not the caller's storage
+    map->allocator = allocator;
+    map->bytes = bytes;
+    std::uint8_t* copy = map->cells();
+    for (std::size_t k = 0; k < cells; ++k) copy[k] = desc->solid[k];
+    view.solid = copy;
     map->map = tilesweep::prepareMap(view);
     *out = map;
     return errorOf(map->map.error());
+}
+
+template <class Map>
+void destroyMap(Map* map) noexcept {
+    if (map == nullptr) return;
+    const ts_allocator allocator = map->allocator;
+    const std::size_t bytes = map->bytes;
+    map->~Map();
+    allocator.release(map, bytes, allocator.user);
 }
 
 template <class T>
@@ -140,10 +178,22 @@ ts_error setSolid(typename Types<T>::Map* map, std::int32_t i, std::int32_t j, i
     if (map == nullptr) return TS_ERROR_NULL_ARGUMENT;
     const auto& v = map->map.view();
     if (i < 0 || j < 0 || i >= v.columns || j >= v.rows) return TS_ERROR_CELL_OUT_OF_RANGE;
-    map->cells[static_cast<std::size_t>(j) * static_cast<std::size_t>(v.columns) +
-               static_cast<std::size_t>(i)] = solid != 0 ? 1 : 0;
+    map->cells()[static_cast<std::size_t>(j) * static_cast<std::size_t>(v.columns) +
+                 static_cast<std::size_t>(i)] = solid != 0 ? 1 : 0;
     return TS_OK;
 }
+
+template <class T>
+void copyContacts(const tilesweep::Contact<T>* from, std::int32_t count,
+                  typename Types<T>::ContactC* to) noexcept {
+    for (std::int32_t k = 0; k < count; ++k) {
+        const tilesweep::Contact<T>& c = from[k];
+        to[k] = {c.tile.i, c.tile.j, c.normal.x, c.normal.y, c.time};
+    }
+}
+
+/// Whether a move's contacts were resolved (and so may be copied out).
+bool wasResolved(MoveStatus s) noexcept { return s == MoveStatus::Moved || s == MoveStatus::Blocked; }
 
 template <class T>
 ts_error moveOne(const typename Types<T>::Map* map, const typename Types<T>::Mover* mover,
@@ -152,40 +202,30 @@ ts_error moveOne(const typename Types<T>::Map* map, const typename Types<T>::Mov
     if (map == nullptr || mover == nullptr || result == nullptr) return TS_ERROR_NULL_ARGUMENT;
     if (contacts == nullptr) capacity = 0;
     const tilesweep::MoveInput<T> input = toInput<T>(*mover);
-    tilesweep::MoveResult<T> r;
     const std::int32_t bound = tilesweep::maxContacts(input.box.size, map->map.view().tileSize);
-    tilesweep::Contact<T> local[tilesweep::kInlineContacts];
     if (capacity >= bound && bound > tilesweep::kInlineContacts) {
-        // A box too wide for the inline contacts, with a buffer that holds its bound: resolve
-        // into the caller's storage as Contact<T>s (same size: the static_assert), then turn
-        // each into a ts_contact_* in place. Only such wide boxes pay for this.
-        using ContactC = typename Types<T>::ContactC;
-        static_assert(sizeof(ContactC) == sizeof(tilesweep::Contact<T>), "in-place conversion");
-        auto* raw = reinterpret_cast<unsigned char*>(contacts);
-        const std::size_t size = sizeof(ContactC);
-        for (std::int32_t k = 0; k < bound; ++k)
-            new (raw + static_cast<std::size_t>(k) * size) tilesweep::Contact<T>{};
-        r = tilesweep::moveAndSlide(map->map, input,
-                                    std::launder(reinterpret_cast<tilesweep::Contact<T>*>(raw)), bound);
-        for (std::int32_t k = 0; k < r.contactCount && k < bound; ++k) {
-            tilesweep::Contact<T> c;
-            std::memcpy(&c, raw + static_cast<std::size_t>(k) * size, size);
-            new (raw + static_cast<std::size_t>(k) * size)
-                ContactC{c.tile.i, c.tile.j, c.normal.x, c.normal.y, c.time};
-        }
+        // A box too wide for the inline contacts, with a buffer that holds its bound: resolve into
+        // a scratch list of Contact<T> from the map's allocator, then copy into the caller's
+        // ts_contact_*s. Only such wide boxes (over 30 tiles on a side) pay for this.
+        const std::size_t bytes = static_cast<std::size_t>(bound) * sizeof(tilesweep::Contact<T>);
+        void* memory = map->allocator.allocate(bytes, map->allocator.user);
+        if (memory == nullptr) return TS_ERROR_OUT_OF_MEMORY;
+        auto* scratch = static_cast<tilesweep::Contact<T>*>(memory);
+        for (std::int32_t k = 0; k < bound; ++k) new (scratch + k) tilesweep::Contact<T>{};
+        const tilesweep::MoveResult<T> r = tilesweep::moveAndSlide(map->map, input, scratch, bound);
+        if (wasResolved(r.status) && r.contactCount <= bound)
+            copyContacts<T>(scratch, r.contactCount, contacts);
+        map->allocator.release(memory, bytes, map->allocator.user);  // Contact<T> is trivially destructible
         toResult(r, *result);
         return errorOf(r.status);
     }
     // Otherwise the frame's contacts fit the inline array (or the frame is refused as too wide
-    // for the buffer given): copy them out when they fit the caller's capacity.
-    r = tilesweep::moveAndSlide(
+    // for the buffer given): copy them out when the move was resolved and they fit the capacity.
+    tilesweep::Contact<T> local[tilesweep::kInlineContacts];
+    const tilesweep::MoveResult<T> r = tilesweep::moveAndSlide(
         map->map, input, local,
         capacity < tilesweep::kInlineContacts ? capacity : tilesweep::kInlineContacts);
-    if (r.contactCount <= capacity)
-        for (std::int32_t k = 0; k < r.contactCount; ++k) {
-            const tilesweep::Contact<T>& c = local[k];
-            contacts[k] = {c.tile.i, c.tile.j, c.normal.x, c.normal.y, c.time};
-        }
+    if (wasResolved(r.status) && r.contactCount <= capacity) copyContacts<T>(local, r.contactCount, contacts);
     toResult(r, *result);
     return errorOf(r.status);
 }
@@ -210,10 +250,7 @@ ts_error moveBatch(const typename Types<T>::Map* map, const typename Types<T>::M
     if (map == nullptr || ((movers == nullptr || results == nullptr) && count > 0))
         return TS_ERROR_NULL_ARGUMENT;
     CBatch<T> job{&map->map, movers, results};
-    if (pool == nullptr)
-        runCBatch<T>(&job, 0, count);
-    else
-        pool->pool.run(count, 256, &runCBatch<T>, &job);
+    tilesweep::detail::runBatch(count, &runCBatch<T>, &job, pool != nullptr ? &pool->pool : nullptr);
     ts_error worst = TS_OK;
     for (std::size_t k = 0; k < count && worst == TS_OK; ++k)
         worst = errorOf(static_cast<MoveStatus>(results[k].status));
@@ -223,6 +260,8 @@ ts_error moveBatch(const typename Types<T>::Map* map, const typename Types<T>::M
 }  // namespace
 
 extern "C" {
+
+uint32_t ts_get_version(void) { return TILESWEEP_VERSION; }
 
 const char* ts_error_message(int error) {
     // An int, not a ts_error: a caller may pass any code, and loading a value outside the
@@ -263,8 +302,8 @@ const char* ts_error_message(int error) {
 
 ts_error ts_map_create_f(const ts_map_desc_f* desc, ts_map_f** out) { return createMap<float>(desc, out); }
 ts_error ts_map_create_d(const ts_map_desc_d* desc, ts_map_d** out) { return createMap<double>(desc, out); }
-void ts_map_destroy_f(ts_map_f* map) { delete map; }
-void ts_map_destroy_d(ts_map_d* map) { delete map; }
+void ts_map_destroy_f(ts_map_f* map) { destroyMap(map); }
+void ts_map_destroy_d(ts_map_d* map) { destroyMap(map); }
 ts_error ts_map_set_solid_f(ts_map_f* map, int32_t i, int32_t j, int solid) {
     return setSolid<float>(map, i, j, solid);
 }
@@ -272,11 +311,11 @@ ts_error ts_map_set_solid_d(ts_map_d* map, int32_t i, int32_t j, int solid) {
     return setSolid<double>(map, i, j, solid);
 }
 
-int32_t ts_max_contacts_f(ts_vec2f box, ts_vec2f tile) {
+int32_t ts_max_contacts_f(ts_vec2_f box, ts_vec2_f tile) {
     return tilesweep::maxContacts(tilesweep::Vec2<float>{box.x, box.y},
                                   tilesweep::Vec2<float>{tile.x, tile.y});
 }
-int32_t ts_max_contacts_d(ts_vec2d box, ts_vec2d tile) {
+int32_t ts_max_contacts_d(ts_vec2_d box, ts_vec2_d tile) {
     return tilesweep::maxContacts(tilesweep::Vec2<double>{box.x, box.y},
                                   tilesweep::Vec2<double>{tile.x, tile.y});
 }

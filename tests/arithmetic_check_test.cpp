@@ -44,8 +44,10 @@ TEST(Arithmetic, everyDirectedRoundingModeIsRefused) {
             RoundingMode scope(mode);
             ASSERT_TRUE(scope.ok()) << "fesetround(" << mode << ")";
             exact = tilesweep::isArithmeticExact();
-            floatError = tilesweep::validateTileMap(tilesweep::TileMapView<float>{{0, 0}, {16, 16}, 2, 2, kCells});
-            doubleError = tilesweep::validateTileMap(tilesweep::TileMapView<double>{{0, 0}, {16, 16}, 2, 2, kCells});
+            floatError =
+                tilesweep::validateTileMap(tilesweep::TileMapView<float>{{0, 0}, {16, 16}, 2, 2, kCells});
+            doubleError =
+                tilesweep::validateTileMap(tilesweep::TileMapView<double>{{0, 0}, {16, 16}, 2, 2, kCells});
             prepared = tilesweep::prepareMap(tilesweep::TileMapView<float>{{0, 0}, {16, 16}, 2, 2, kCells});
         }
         EXPECT_FALSE(exact) << "mode " << mode;

@@ -6,6 +6,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static int failures = 0;
@@ -24,7 +25,7 @@ static const uint8_t level[32] = {
 };
 
 static void testFloat(void) {
-    ts_map_desc_f desc = {{0, 0}, {16, 16}, 8, 4, level};
+    ts_map_desc_f desc = {{0, 0}, {16, 16}, 8, 4, level, NULL};
     ts_map_f* map = NULL;
     ts_mover_f mover = {{{4, 30}, {12, 16}}, {0, 8}};
     ts_result_f r;
@@ -70,7 +71,7 @@ static void testFloat(void) {
 }
 
 static void testDoubleAndBatch(void) {
-    ts_map_desc_d desc = {{0, 0}, {16, 16}, 8, 4, level};
+    ts_map_desc_d desc = {{0, 0}, {16, 16}, 8, 4, level, NULL};
     ts_map_d* map = NULL;
     ts_pool* pool = NULL;
     ts_mover_d movers[1000];
@@ -104,7 +105,7 @@ static void testDoubleAndBatch(void) {
 static void testWideBox(void) {
     /* A box 100 tiles wide lands on 101 floor tiles: more than the inline contacts. */
     static uint8_t wide[2 * 120];
-    ts_map_desc_f desc = {{0, 0}, {16, 16}, 120, 2, wide};
+    ts_map_desc_f desc = {{0, 0}, {16, 16}, 120, 2, wide, NULL};
     ts_map_f* map = NULL;
     ts_mover_f mover = {{{8, 0}, {1600, 8}}, {0, 16}};
     ts_result_f r;
@@ -124,7 +125,7 @@ static void testWideBox(void) {
 }
 
 static void testBadMaps(void) {
-    ts_map_desc_f desc = {{0, 0}, {0, 16}, 8, 4, level};
+    ts_map_desc_f desc = {{0, 0}, {0, 16}, 8, 4, level, NULL};
     ts_map_f* map = (ts_map_f*)&desc; /* overwritten with NULL on failure */
     CHECK(ts_map_create_f(&desc, &map) == TS_ERROR_MAP_NON_POSITIVE_TILE_SIZE && map == NULL);
     desc.tile_size.x = 16;
@@ -143,14 +144,85 @@ static void testBadMaps(void) {
     CHECK(ts_map_create_f(&desc, NULL) == TS_ERROR_NULL_ARGUMENT);
     CHECK(ts_max_contacts_f(desc.tile_size, desc.tile_size) > 0);
     {
-        ts_vec2f zero = {0, 1};
+        ts_vec2_f zero = {0, 1};
         CHECK(ts_max_contacts_f(zero, desc.tile_size) == 0);
     }
 }
 
+/* A counting allocator: every block it gives is given back, with the size it was asked for. */
+typedef struct Counts {
+    int live;
+    int allocations;
+    size_t bytes;
+    int refuse; /* nonzero: allocate returns NULL */
+} Counts;
+
+static void* countingAllocate(size_t size, void* user) {
+    Counts* counts = (Counts*)user;
+    if (counts->refuse) return NULL;
+    ++counts->live;
+    ++counts->allocations;
+    counts->bytes += size;
+    return malloc(size);
+}
+
+static void countingRelease(void* memory, size_t size, void* user) {
+    Counts* counts = (Counts*)user;
+    --counts->live;
+    counts->bytes -= size;
+    free(memory);
+}
+
+static void testAllocator(void) {
+    /* The map comes from the allocator (one block), and so does a wide box's scratch list. */
+    static uint8_t wide[2 * 120];
+    Counts counts = {0, 0, 0, 0};
+    ts_allocator allocator = {countingAllocate, countingRelease, NULL};
+    ts_map_desc_f desc = {{0, 0}, {16, 16}, 120, 2, wide, NULL};
+    ts_map_f* map = NULL;
+    ts_map_f* other = NULL;
+    ts_mover_f mover = {{{8, 0}, {1600, 8}}, {0, 16}};
+    ts_result_f r;
+    static ts_contact_f contacts[200];
+    int k;
+    allocator.user = &counts;
+    desc.allocator = &allocator;
+    for (k = 120; k < 240; ++k) wide[k] = 1;
+    CHECK(ts_map_create_f(&desc, &map) == TS_OK);
+    CHECK(counts.live == 1 && counts.allocations == 1 && counts.bytes > 240);
+    CHECK(ts_move_and_slide_f(map, &mover, &r, contacts, 200) == TS_OK);
+    CHECK(r.contact_count == 101 && contacts[100].i == 100 && counts.live == 1 && counts.allocations == 2);
+    counts.refuse = 1;
+    CHECK(ts_move_and_slide_f(map, &mover, &r, contacts, 200) == TS_ERROR_OUT_OF_MEMORY);
+    CHECK(ts_map_create_f(&desc, &other) == TS_ERROR_OUT_OF_MEMORY && other == NULL);
+    counts.refuse = 0;
+    ts_map_destroy_f(map);
+    CHECK(counts.live == 0 && counts.bytes == 0);
+}
+
+static void testRefusedMovesLeaveContactsAlone(void) {
+    /* A refused move stores no contact: the buffer keeps what the caller put in it. */
+    ts_map_desc_f desc = {{0, 0}, {16, 16}, 8, 4, level, NULL};
+    ts_map_f* map = NULL;
+    ts_mover_f mover = {{{4, 30}, {12, 16}}, {NAN, 8}};
+    ts_result_f r;
+    ts_contact_f contacts[4];
+    memset(contacts, 0x5a, sizeof contacts);
+    CHECK(ts_map_create_f(&desc, &map) == TS_OK);
+    CHECK(ts_move_and_slide_f(map, &mover, &r, contacts, 4) == TS_ERROR_INVALID_INPUT);
+    CHECK(contacts[0].i == 0x5a5a5a5a && contacts[0].j == 0x5a5a5a5a);
+    ts_map_destroy_f(map);
+}
+
+static void testVersion(void) {
+    CHECK(ts_get_version() == TILESWEEP_VERSION);
+    CHECK(TILESWEEP_VERSION ==
+          TILESWEEP_VERSION_MAJOR * 10000 + TILESWEEP_VERSION_MINOR * 100 + TILESWEEP_VERSION_PATCH);
+}
+
 static void testMessages(void) {
     int code;
-    for (code = 0; code <= 12; ++code) {
+    for (code = 0; code <= 13; ++code) {
         const char* m = ts_error_message(code);
         CHECK(m != NULL && strlen(m) > 0 && strcmp(m, "unknown tilesweep error code") != 0);
     }
@@ -164,6 +236,9 @@ int main(void) {
     testWideBox();
     testBadMaps();
     testMessages();
+    testAllocator();
+    testRefusedMovesLeaveContactsAlone();
+    testVersion();
     if (failures != 0) {
         fprintf(stderr, "%d checks failed\n", failures);
         return 1;
