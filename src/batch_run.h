@@ -16,7 +16,7 @@ inline constexpr std::size_t kBatchChunk = 256;
 
 /// Calls work(context, begin, end) over disjoint ranges covering [0, count): on `pool` when it
 /// is given, else on the calling thread.
-void runBatch(std::size_t count, void (*work)(void* context, std::size_t begin, std::size_t end), void* context,
-              BatchPool* pool) noexcept;
+void runBatch(std::size_t count, void (*work)(void* context, std::size_t begin, std::size_t end),
+              void* context, BatchPool* pool) noexcept;
 
 }  // namespace tilesweep::detail

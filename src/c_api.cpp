@@ -132,8 +132,21 @@ void toResult(const tilesweep::MoveResult<T>& r, typename Types<T>::Result& out)
     out.on_ceiling = r.onCeiling ? 1 : 0;
     out.on_wall = r.onWall ? 1 : 0;
     out.wall_normal_x = r.wallNormalX;
+    out.contacts_stored = r.contactsStored ? 1 : 0;
     out.contact_count = r.contactCount;
     out.start_overlap_count = r.startOverlapCount;
+    out.clipped_displacement = {r.clippedDisplacement.x, r.clippedDisplacement.y};
+}
+
+template <class T>
+typename Types<T>::Vec clipVelocity(typename Types<T>::Vec v, const typename Types<T>::Result* r) noexcept {
+    if (r == nullptr) return v;
+    tilesweep::MoveResult<T> flags;
+    flags.onGround = r->on_ground != 0;
+    flags.onCeiling = r->on_ceiling != 0;
+    flags.wallNormalX = r->wall_normal_x;
+    const tilesweep::Vec2<T> clipped = tilesweep::clipVelocity(toVec<T>(v), flags);
+    return {clipped.x, clipped.y};
 }
 
 template <class T>
@@ -213,20 +226,20 @@ ts_error moveOne(const typename Types<T>::Map* map, const typename Types<T>::Mov
         auto* scratch = static_cast<tilesweep::Contact<T>*>(memory);
         for (std::int32_t k = 0; k < bound; ++k) new (scratch + k) tilesweep::Contact<T>{};
         const tilesweep::MoveResult<T> r = tilesweep::moveAndSlide(map->map, input, scratch, bound);
-        if (wasResolved(r.status) && r.contactCount <= bound)
-            copyContacts<T>(scratch, r.contactCount, contacts);
+        if (wasResolved(r.status) && r.contactsStored) copyContacts<T>(scratch, r.contactCount, contacts);
         map->allocator.release(memory, bytes, map->allocator.user);  // Contact<T> is trivially destructible
         toResult(r, *result);
         return errorOf(r.status);
     }
-    // Otherwise the frame's contacts fit the inline array (or the frame is refused as too wide
-    // for the buffer given): copy them out when the move was resolved and they fit the capacity.
+    // Otherwise the contacts go to the inline array, and are copied out when moveAndSlide says
+    // they were all stored there (never for a refused move).
     tilesweep::Contact<T> local[tilesweep::kInlineContacts];
     const tilesweep::MoveResult<T> r = tilesweep::moveAndSlide(
         map->map, input, local,
         capacity < tilesweep::kInlineContacts ? capacity : tilesweep::kInlineContacts);
-    if (wasResolved(r.status) && r.contactCount <= capacity) copyContacts<T>(local, r.contactCount, contacts);
+    if (wasResolved(r.status) && r.contactsStored) copyContacts<T>(local, r.contactCount, contacts);
     toResult(r, *result);
+    if (contacts == nullptr) result->contacts_stored = 0;
     return errorOf(r.status);
 }
 
@@ -327,6 +340,13 @@ ts_error ts_move_and_slide_f(const ts_map_f* map, const ts_mover_f* mover, ts_re
 ts_error ts_move_and_slide_d(const ts_map_d* map, const ts_mover_d* mover, ts_result_d* result,
                              ts_contact_d* contacts, int32_t capacity) {
     return moveOne<double>(map, mover, result, contacts, capacity);
+}
+
+ts_vec2_f ts_clip_velocity_f(ts_vec2_f velocity, const ts_result_f* result) {
+    return clipVelocity<float>(velocity, result);
+}
+ts_vec2_d ts_clip_velocity_d(ts_vec2_d velocity, const ts_result_d* result) {
+    return clipVelocity<double>(velocity, result);
 }
 
 ts_error ts_pool_create(int32_t threads, ts_pool** out) {

@@ -28,7 +28,9 @@ bool sameResult(const MoveResult<T>& a, const MoveResult<T>& b) {
     return std::memcmp(&a.position, &b.position, sizeof a.position) == 0 && a.status == b.status &&
            a.blockedX == b.blockedX && a.blockedY == b.blockedY && a.onGround == b.onGround &&
            a.onCeiling == b.onCeiling && a.onWall == b.onWall && a.wallNormalX == b.wallNormalX &&
-           a.contactCount == b.contactCount && a.startOverlapCount == b.startOverlapCount;
+           a.contactCount == b.contactCount && a.startOverlapCount == b.startOverlapCount &&
+           std::memcmp(&a.clippedDisplacement, &b.clippedDisplacement, sizeof a.clippedDisplacement) == 0 &&
+           a.contactsStored == b.contactsStored;
 }
 
 TYPED_TEST(Batch, givesEveryMoverWhatResolveMoveGivesItAlone) {
@@ -62,7 +64,6 @@ TYPED_TEST(Batch, givesEveryMoverWhatResolveMoveGivesItAlone) {
             // And the core resolver, with a buffer large enough for any of these frames.
             const SweepResult<T> s = resolveMove<T>({level.view(), inputs[k].box, inputs[k].displacement},
                                                     {contacts.data(), 4096, nullptr, 0});
-            if (alone[k].status == MoveStatus::ContactBufferTooSmall) continue;
             ASSERT_EQ(std::memcmp(&s.position, &byTwo[k].position, sizeof s.position), 0)
                 << "map " << m << " mover " << k;
             ASSERT_EQ(s.contactCount, byTwo[k].contactCount);

@@ -16,9 +16,9 @@
 // byte scan over those cells, before any exact work. A batch allocates nothing: the pool's
 // threads are made when the pool is, and the caller owns the inputs and the results.
 //
-// Usage, every frame:
+// Usage, every frame (tests/header_recipes_test.cpp runs it as written):
 //
-//     tilesweep::BatchPool pool(2);                          // once: the caller + 1 worker
+//     tilesweep::BatchPool pool(2);  // once: the caller + 1 worker
 //     tilesweep::moveAndSlideBatch(map, inputs.data(), results.data(), inputs.size(), &pool);
 
 namespace tilesweep {
@@ -51,9 +51,8 @@ private:
 };
 
 /// Resolves inputs[k] into results[k] for k < count, each exactly as moveAndSlide(map,
-/// inputs[k]) with no contact buffer (so a box wider than kInlineContacts allows gets
-/// MoveStatus::ContactBufferTooSmall; use moveAndSlide with a buffer for it). `pool` null runs
-/// on the calling thread. Inputs and results must not overlap.
+/// inputs[k]) with no contact buffer (flags, positions and counts; no contacts). `pool` null
+/// runs on the calling thread. Inputs and results must not overlap.
 void moveAndSlideBatch(const PreparedMap<float>& map, const MoveInput<float>* inputs,
                        MoveResult<float>* results, std::size_t count, BatchPool* pool = nullptr) noexcept;
 /// The same in double.

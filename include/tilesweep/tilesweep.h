@@ -22,10 +22,12 @@
  *     ts_map_f* map;
  *     ts_map_desc_f desc = {{0, 0}, {16, 16}, columns, rows, cells, NULL};  (1 = solid; malloc)
  *     if (ts_map_create_f(&desc, &map) != TS_OK) ...;                 (copies the cells)
- *     ts_mover_f mover = {{{x, y}, {w, h}}, {vx * dt, vy * dt}};
+ *     ts_vec2_f velocity = {vx, vy};
+ *     ts_mover_f mover = {{{x, y}, {w, h}}, {velocity.x * dt, velocity.y * dt}};
  *     ts_result_f r;
- *     ts_move_and_slide_f(map, &mover, &r, NULL, 0);
- *     x = r.position.x; y = r.position.y; if (r.on_ground) vy = 0;
+ *     ts_move_and_slide_f(map, &mover, &r, NULL, 0);                  (no contact buffer needed)
+ *     x = r.position.x; y = r.position.y;
+ *     velocity = ts_clip_velocity_f(velocity, &r);  (stops on floors, ceilings and walls)
  *     ts_map_destroy_f(map);
  */
 
@@ -72,7 +74,7 @@ typedef enum ts_error {
     TS_ERROR_MAP_TOO_LARGE = 6,              /**< more than 2^31 - 1 cells */
     TS_ERROR_MAP_UNREPRESENTABLE_EDGE_X = 7, /**< some tile edge on x is not exactly a float/double */
     TS_ERROR_MAP_UNREPRESENTABLE_EDGE_Y = 8, /**< likewise on y */
-    TS_ERROR_CONTACT_BUFFER_TOO_SMALL = 9,   /**< give ts_max_contacts_* entries */
+    TS_ERROR_CONTACT_BUFFER_TOO_SMALL = 9,   /**< never returned since 0.2 */
     TS_ERROR_CELL_OUT_OF_RANGE = 10,         /**< a cell index outside the map */
     TS_ERROR_OUT_OF_MEMORY = 11,             /**< allocation failed (map or pool creation only) */
     TS_ERROR_THREADS = 12,                   /**< a worker thread could not be started */
@@ -84,7 +86,7 @@ typedef enum ts_move_status {
     TS_MOVE_MOVED = 0,                   /**< nothing hit: moved the whole way */
     TS_MOVE_BLOCKED = 1,                 /**< at least one tile hit */
     TS_MOVE_INVALID_INPUT = 2,           /**< refused: nothing moved */
-    TS_MOVE_CONTACT_BUFFER_TOO_SMALL = 3 /**< refused: contact_count is the buffer size needed */
+    TS_MOVE_CONTACT_BUFFER_TOO_SMALL = 3 /**< never returned since 0.2 (see contacts_stored) */
 } ts_move_status;
 
 /** A vector (x to the right, y downward). */
@@ -151,18 +153,22 @@ typedef struct ts_mover_d {
     ts_vec2_d displacement;
 } ts_mover_d;
 
-/** What happened to one mover; the flags come from the normals of every contact. */
+/** What happened to one mover. The flags come from the solver's steps: right with or without a
+ *  contact buffer, for a box of any size. y grows downward: on_ground is a floor below the box
+ *  (in a y-up world, read on_ground and on_ceiling the other way round). */
 typedef struct ts_result_f {
-    ts_vec2_f position;          /**< the end position; the start unless moved or blocked */
-    uint8_t status;              /**< a ts_move_status */
-    uint8_t blocked_x;           /**< a tile stopped the motion on x (= on_wall) */
-    uint8_t blocked_y;           /**< a tile stopped the motion on y */
-    uint8_t on_ground;           /**< a contact with normal (0, -1) */
-    uint8_t on_ceiling;          /**< a contact with normal (0, 1) */
-    uint8_t on_wall;             /**< a contact with normal (+-1, 0) */
-    int8_t wall_normal_x;        /**< 1: wall on the left, -1: on the right, 0: none */
-    int32_t contact_count;       /**< tiles hit; stored iff <= the capacity given */
-    int32_t start_overlap_count; /**< solid tiles overlapped at the start (never blocking) */
+    ts_vec2_f position;             /**< the end position; the start unless moved or blocked */
+    uint8_t status;                 /**< a ts_move_status */
+    uint8_t blocked_x;              /**< a tile stopped the motion on x (= on_wall) */
+    uint8_t blocked_y;              /**< a tile stopped the motion on y */
+    uint8_t on_ground;              /**< a contact with normal (0, -1) */
+    uint8_t on_ceiling;             /**< a contact with normal (0, 1) */
+    uint8_t on_wall;                /**< a contact with normal (+-1, 0) */
+    int8_t wall_normal_x;           /**< 1: wall on the left, -1: on the right, 0: none */
+    uint8_t contacts_stored;        /**< the buffer given holds all contact_count contacts */
+    int32_t contact_count;          /**< tiles hit, stored or not */
+    int32_t start_overlap_count;    /**< solid tiles overlapped at the start (never blocking) */
+    ts_vec2_f clipped_displacement; /**< the displacement with the blocked components zeroed */
 } ts_result_f;
 typedef struct ts_result_d {
     ts_vec2_d position;
@@ -173,8 +179,10 @@ typedef struct ts_result_d {
     uint8_t on_ceiling;
     uint8_t on_wall;
     int8_t wall_normal_x;
+    uint8_t contacts_stored;
     int32_t contact_count;
     int32_t start_overlap_count;
+    ts_vec2_d clipped_displacement;
 } ts_result_d;
 
 /** One tile hit: cell (i, j), the normal leaving its face, the fraction of the frame elapsed. */
@@ -211,15 +219,22 @@ TILESWEEP_EXPORT ts_error ts_map_set_solid_d(ts_map_d* map, int32_t i, int32_t j
 TILESWEEP_EXPORT int32_t ts_max_contacts_f(ts_vec2_f box_size, ts_vec2_f tile_size);
 TILESWEEP_EXPORT int32_t ts_max_contacts_d(ts_vec2_d box_size, ts_vec2_d tile_size);
 
-/** Resolves one frame of one mover into *result. contacts (may be NULL) receives all of the
- *  frame's contacts when they fit in capacity, otherwise none. TS_ERROR_INVALID_INPUT and
- *  TS_ERROR_CONTACT_BUFFER_TOO_SMALL also fill *result (start position, its status). A box
- *  whose ts_max_contacts_* is above 64 (over 30 tiles on a side) resolves through a scratch list
- *  from the map's allocator when it is given a buffer (TS_ERROR_OUT_OF_MEMORY if that fails). */
+/** Resolves one frame of one mover into *result. contacts (optional, may be NULL) receives all
+ *  of the frame's contacts when capacity >= ts_max_contacts_*, or >= contact_count for a frame of
+ *  at most 64 contacts; otherwise none (result->contacts_stored says which). The flags never
+ *  need the buffer. TS_ERROR_INVALID_INPUT also fills *result (start position, its status). A
+ *  box whose ts_max_contacts_* is above 64 (over 30 tiles on a side) given a buffer that large
+ *  resolves through a scratch list from the map's allocator (TS_ERROR_OUT_OF_MEMORY if that
+ *  fails). */
 TILESWEEP_EXPORT ts_error ts_move_and_slide_f(const ts_map_f* map, const ts_mover_f* mover,
                                               ts_result_f* result, ts_contact_f* contacts, int32_t capacity);
 TILESWEEP_EXPORT ts_error ts_move_and_slide_d(const ts_map_d* map, const ts_mover_d* mover,
                                               ts_result_d* result, ts_contact_d* contacts, int32_t capacity);
+
+/** velocity with the components that push into a face the move hit set to zero (x into the
+ *  wall, y down onto a floor or up into a ceiling); call it after every move. */
+TILESWEEP_EXPORT ts_vec2_f ts_clip_velocity_f(ts_vec2_f velocity, const ts_result_f* result);
+TILESWEEP_EXPORT ts_vec2_d ts_clip_velocity_d(ts_vec2_d velocity, const ts_result_d* result);
 
 /** Starts a pool of `threads` threads for the batch calls (the caller counts as one). */
 TILESWEEP_EXPORT ts_error ts_pool_create(int32_t threads, ts_pool** out);
@@ -227,9 +242,8 @@ TILESWEEP_EXPORT ts_error ts_pool_create(int32_t threads, ts_pool** out);
 TILESWEEP_EXPORT void ts_pool_destroy(ts_pool* pool);
 
 /** Resolves movers[k] into results[k], k < count, each as ts_move_and_slide_* with no contact
- *  buffer; pool may be NULL (this thread only). TS_ERROR_INVALID_INPUT (or
- *  TS_ERROR_CONTACT_BUFFER_TOO_SMALL) when some mover was refused: its status says so, the
- *  others are resolved. */
+ *  buffer; pool may be NULL (this thread only). TS_ERROR_INVALID_INPUT when some mover was
+ *  refused: its status says so, the others are resolved. */
 TILESWEEP_EXPORT ts_error ts_move_and_slide_batch_f(const ts_map_f* map, const ts_mover_f* movers,
                                                     ts_result_f* results, size_t count, ts_pool* pool);
 TILESWEEP_EXPORT ts_error ts_move_and_slide_batch_d(const ts_map_d* map, const ts_mover_d* movers,

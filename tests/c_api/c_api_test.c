@@ -38,7 +38,7 @@ static void testFloat(void) {
     CHECK(r.status == TS_MOVE_BLOCKED);
     CHECK(r.position.x == 4.0f && r.position.y == 32.0f);
     CHECK(r.on_ground && r.blocked_y && !r.on_wall && !r.on_ceiling);
-    CHECK(r.contact_count == 1);
+    CHECK(r.contact_count == 1 && r.contacts_stored);
     CHECK(contacts[0].i == 0 && contacts[0].j == 3 && contacts[0].nx == 0 && contacts[0].ny == -1);
     CHECK(contacts[0].time == 0.25f);
     /* Walks right 40 along the floor from x = 60 (right edge 72) into the wall at x = 96:
@@ -50,6 +50,15 @@ static void testFloat(void) {
     CHECK(ts_move_and_slide_f(map, &mover, &r, NULL, 0) == TS_OK);
     CHECK(r.position.x == 84.0f && r.position.y == 32.0f);
     CHECK(r.on_wall && r.wall_normal_x == -1 && r.blocked_x && !r.on_ground);
+    CHECK(r.clipped_displacement.x == 0.0f && r.clipped_displacement.y == 0.0f && !r.contacts_stored);
+    {
+        /* Walking into the wall stops the walk; walking away from it does not. */
+        ts_vec2_f into = {120, 0}, away = {-120, 0}, clipped;
+        clipped = ts_clip_velocity_f(into, &r);
+        CHECK(clipped.x == 0.0f && clipped.y == 0.0f);
+        clipped = ts_clip_velocity_f(away, &r);
+        CHECK(clipped.x == -120.0f);
+    }
     /* The wall removed between frames: the same move goes the whole way. */
     CHECK(ts_map_set_solid_f(map, 6, 2, 0) == TS_OK);
     CHECK(ts_move_and_slide_f(map, &mover, &r, NULL, 0) == TS_OK);
@@ -116,10 +125,13 @@ static void testWideBox(void) {
     CHECK(ts_map_create_f(&desc, &map) == TS_OK);
     bound = ts_max_contacts_f(mover.box.size, desc.tile_size);
     CHECK(bound == 104);
-    CHECK(ts_move_and_slide_f(map, &mover, &r, NULL, 0) == TS_ERROR_CONTACT_BUFFER_TOO_SMALL);
-    CHECK(r.status == TS_MOVE_CONTACT_BUFFER_TOO_SMALL && r.contact_count == bound && r.position.y == 0.0f);
+    /* No buffer: resolved all the same, flags and all; nothing stored. */
+    CHECK(ts_move_and_slide_f(map, &mover, &r, NULL, 0) == TS_OK);
+    CHECK(r.status == TS_MOVE_BLOCKED && r.contact_count == 101 && r.position.y == 8.0f && r.on_ground);
+    CHECK(!r.contacts_stored && r.clipped_displacement.x == 0.0f && r.clipped_displacement.y == 0.0f);
+    /* A buffer of ts_max_contacts_f entries receives them all. */
     CHECK(ts_move_and_slide_f(map, &mover, &r, contacts, bound) == TS_OK);
-    CHECK(r.contact_count == 101 && r.position.y == 8.0f && r.on_ground);
+    CHECK(r.contact_count == 101 && r.position.y == 8.0f && r.on_ground && r.contacts_stored);
     for (k = 0; k < 101; ++k) CHECK(contacts[k].i == k && contacts[k].j == 1 && contacts[k].ny == -1);
     ts_map_destroy_f(map);
 }
