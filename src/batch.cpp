@@ -127,9 +127,30 @@ void BatchPool::run(std::size_t count, std::size_t chunk, void (*work)(void*, st
 
 namespace detail {
 
+namespace {
+
+/// A pool-style work function behind the TaskSystem's range signature.
+struct TaskAdapter {
+    void (*work)(void*, std::size_t, std::size_t);
+    void* context;
+};
+
+void runAdaptedTask(std::size_t begin, std::size_t end, void* taskContext) {
+    const auto& adapter = *static_cast<const TaskAdapter*>(taskContext);
+    adapter.work(adapter.context, begin, end);
+}
+
+}  // namespace
+
 void runBatch(std::size_t count, void (*work)(void*, std::size_t, std::size_t), void* context,
-              BatchPool* pool) noexcept {
+              BatchPool* pool, const TaskSystem* tasks) noexcept {
     if (count == 0) return;
+    if (tasks != nullptr && tasks->enqueue != nullptr) {
+        TaskAdapter adapter{work, context};
+        void* handle = tasks->enqueue(&runAdaptedTask, count, kBatchChunk, &adapter, tasks->userContext);
+        if (handle != nullptr && tasks->finish != nullptr) tasks->finish(handle, tasks->userContext);
+        return;
+    }
     if (pool == nullptr) {
         work(context, 0, count);
         return;
@@ -156,22 +177,32 @@ void runRange(void* context, std::size_t begin, std::size_t end) {
 
 template <class T>
 void batchOf(const PreparedMap<T>& map, const MoveInput<T>* inputs, MoveResult<T>* results, std::size_t count,
-             BatchPool* pool) noexcept {
+             BatchPool* pool, const TaskSystem* tasks) noexcept {
     if (inputs == nullptr || results == nullptr) return;
     BatchJob<T> job{&map, inputs, results};
-    detail::runBatch(count, &runRange<T>, &job, pool);
+    detail::runBatch(count, &runRange<T>, &job, pool, tasks);
 }
 
 }  // namespace
 
 void moveAndSlideBatch(const PreparedMap<float>& map, const MoveInput<float>* inputs,
                        MoveResult<float>* results, std::size_t count, BatchPool* pool) noexcept {
-    batchOf(map, inputs, results, count, pool);
+    batchOf(map, inputs, results, count, pool, nullptr);
 }
 
 void moveAndSlideBatch(const PreparedMap<double>& map, const MoveInput<double>* inputs,
                        MoveResult<double>* results, std::size_t count, BatchPool* pool) noexcept {
-    batchOf(map, inputs, results, count, pool);
+    batchOf(map, inputs, results, count, pool, nullptr);
+}
+
+void moveAndSlideBatch(const PreparedMap<float>& map, const MoveInput<float>* inputs,
+                       MoveResult<float>* results, std::size_t count, const TaskSystem& tasks) noexcept {
+    batchOf(map, inputs, results, count, nullptr, &tasks);
+}
+
+void moveAndSlideBatch(const PreparedMap<double>& map, const MoveInput<double>* inputs,
+                       MoveResult<double>* results, std::size_t count, const TaskSystem& tasks) noexcept {
+    batchOf(map, inputs, results, count, nullptr, &tasks);
 }
 
 }  // namespace tilesweep

@@ -14,9 +14,10 @@ namespace tilesweep::detail {
 /// microseconds of work), small enough that two threads finish within a chunk of each other.
 inline constexpr std::size_t kBatchChunk = 256;
 
-/// Calls work(context, begin, end) over disjoint ranges covering [0, count): on `pool` when it
-/// is given, else on the calling thread.
+/// Calls work(context, begin, end) over disjoint ranges covering [0, count): on the game's job
+/// system when `tasks` has an enqueue callback, else on `pool` when it is given, else on the
+/// calling thread.
 void runBatch(std::size_t count, void (*work)(void* context, std::size_t begin, std::size_t end),
-              void* context, BatchPool* pool) noexcept;
+              void* context, BatchPool* pool, const TaskSystem* tasks = nullptr) noexcept;
 
 }  // namespace tilesweep::detail

@@ -259,11 +259,19 @@ void runCBatch(void* context, std::size_t begin, std::size_t end) {
 
 template <class T>
 ts_error moveBatch(const typename Types<T>::Map* map, const typename Types<T>::Mover* movers,
-                   typename Types<T>::Result* results, std::size_t count, ts_pool* pool) noexcept {
+                   typename Types<T>::Result* results, std::size_t count, ts_pool* pool,
+                   const ts_task_system* cTasks = nullptr) noexcept {
     if (map == nullptr || ((movers == nullptr || results == nullptr) && count > 0))
         return TS_ERROR_NULL_ARGUMENT;
     CBatch<T> job{&map->map, movers, results};
-    tilesweep::detail::runBatch(count, &runCBatch<T>, &job, pool != nullptr ? &pool->pool : nullptr);
+    tilesweep::TaskSystem tasks;
+    if (cTasks != nullptr) {
+        // The C and C++ task callbacks have the same parameters, in the same order.
+        tasks.enqueue = cTasks->enqueue;
+        tasks.finish = cTasks->finish;
+        tasks.userContext = cTasks->user_context;
+    }
+    tilesweep::detail::runBatch(count, &runCBatch<T>, &job, pool != nullptr ? &pool->pool : nullptr, &tasks);
     ts_error worst = TS_OK;
     for (std::size_t k = 0; k < count && worst == TS_OK; ++k)
         worst = errorOf(static_cast<MoveStatus>(results[k].status));
@@ -370,6 +378,17 @@ ts_error ts_move_and_slide_batch_f(const ts_map_f* map, const ts_mover_f* movers
 ts_error ts_move_and_slide_batch_d(const ts_map_d* map, const ts_mover_d* movers, ts_result_d* results,
                                    size_t count, ts_pool* pool) {
     return moveBatch<double>(map, movers, results, count, pool);
+}
+
+ts_error ts_move_and_slide_batch_tasks_f(const ts_map_f* map, const ts_mover_f* movers, ts_result_f* results,
+                                         size_t count, const ts_task_system* tasks) {
+    if (tasks == nullptr) return TS_ERROR_NULL_ARGUMENT;
+    return moveBatch<float>(map, movers, results, count, nullptr, tasks);
+}
+ts_error ts_move_and_slide_batch_tasks_d(const ts_map_d* map, const ts_mover_d* movers, ts_result_d* results,
+                                         size_t count, const ts_task_system* tasks) {
+    if (tasks == nullptr) return TS_ERROR_NULL_ARGUMENT;
+    return moveBatch<double>(map, movers, results, count, nullptr, tasks);
 }
 
 }  // extern "C"

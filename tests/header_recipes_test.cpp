@@ -39,7 +39,7 @@ void resolveRecipe(Box<float>& player, Vec2<float> velocity, std::vector<Cell>& 
     tilesweep::ResolveOutput<float> out{contacts, 16, overlaps, 16};
     auto result = tilesweep::resolveMove({map, player, velocity * dt}, out);
     if (result.status != tilesweep::Status::InvalidInput) player.pos = result.position;
-    bool onGround = result.blockedY && velocity.y > 0;  // y grows downward
+    bool onGround = result.blockedY && velocity.y > 0;       // y grows downward
     for (int k = 0; k < result.contactCount && k < 16; ++k)  // beyond 16: some, unspecified
         hits.push_back(contacts[k].tile);
     // [recipe:end]
@@ -97,7 +97,8 @@ TEST(HeaderRecipes, moverRecipeLandsAndStops) {
 // ---- batch.h ----
 
 TEST(HeaderRecipes, batchRecipeGivesEachMoverItsOwnFrame) {
-    const auto map = tilesweep::prepareMap(tilesweep::TileMapView<float>{{0, 0}, {16, 16}, columns, rows, cells});
+    const auto map =
+        tilesweep::prepareMap(tilesweep::TileMapView<float>{{0, 0}, {16, 16}, columns, rows, cells});
     std::vector<tilesweep::MoveInput<float>> inputs(1000, {{{4, 20}, {10, 10}}, {0, 16}});
     inputs[7].displacement = {0, 1};
     std::vector<tilesweep::MoveResult<float>> results(inputs.size());
@@ -172,8 +173,8 @@ TEST(HeaderRecipes, areQuotedVerbatim) {
     for (const std::string name : {"resolve.h", "mover.h", "batch.h"}) {
         const std::vector<std::string> recipe = headerRecipe(root + "/include/tilesweep/" + name);
         ASSERT_FALSE(recipe.empty()) << name << " has no usage recipe";
-        EXPECT_EQ(recipe, region(source, name)) << "include/tilesweep/" << name
-                                                << " and tests/header_recipes_test.cpp differ";
+        EXPECT_EQ(recipe, region(source, name))
+            << "include/tilesweep/" << name << " and tests/header_recipes_test.cpp differ";
     }
 }
 

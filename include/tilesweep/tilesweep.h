@@ -249,6 +249,29 @@ TILESWEEP_EXPORT ts_error ts_move_and_slide_batch_f(const ts_map_f* map, const t
 TILESWEEP_EXPORT ts_error ts_move_and_slide_batch_d(const ts_map_d* map, const ts_mover_d* movers,
                                                     ts_result_d* results, size_t count, ts_pool* pool);
 
+/** A range of a batch's work: items [begin, end), on any thread. */
+typedef void ts_task_fn(size_t begin, size_t end, void* task_context);
+
+/** A game's job system for the batch calls (Box2D's enqueueTask/finishTask). enqueue runs
+ *  task over disjoint ranges covering [0, item_count), each at least min_range items long but
+ *  the last, on any threads (the calling one included), and returns a handle for finish, or
+ *  NULL when every range has already run; finish waits until every range of that handle has
+ *  run. A batch calls each once. */
+typedef struct ts_task_system {
+    void* (*enqueue)(ts_task_fn* task, size_t item_count, size_t min_range, void* task_context,
+                     void* user_context);
+    void (*finish)(void* user_task, void* user_context);
+    void* user_context; /**< passed to both */
+} ts_task_system;
+
+/** ts_move_and_slide_batch_* on a game's job system: the same results, bit for bit. */
+TILESWEEP_EXPORT ts_error ts_move_and_slide_batch_tasks_f(const ts_map_f* map, const ts_mover_f* movers,
+                                                          ts_result_f* results, size_t count,
+                                                          const ts_task_system* tasks);
+TILESWEEP_EXPORT ts_error ts_move_and_slide_batch_tasks_d(const ts_map_d* map, const ts_mover_d* movers,
+                                                          ts_result_d* results, size_t count,
+                                                          const ts_task_system* tasks);
+
 #ifdef __cplusplus
 }
 #endif

@@ -226,6 +226,59 @@ static void testRefusedMovesLeaveContactsAlone(void) {
     ts_map_destroy_f(map);
 }
 
+/* A job system that runs the ranges it is given last one first, on this thread, and counts the
+ * calls: the batch must not depend on the order its ranges run in. */
+typedef struct Jobs {
+    int enqueued;
+    int finished;
+    size_t ranges;
+} Jobs;
+
+static void* enqueueBackwards(ts_task_fn* task, size_t count, size_t min_range, void* task_context,
+                              void* user) {
+    Jobs* jobs = (Jobs*)user;
+    size_t begin = (count - 1) / min_range * min_range;
+    ++jobs->enqueued;
+    for (;;) {
+        size_t end = count - begin < min_range ? count : begin + min_range;
+        task(begin, end, task_context);
+        ++jobs->ranges;
+        if (begin == 0) break;
+        begin -= min_range;
+    }
+    return jobs;
+}
+
+static void finishJobs(void* user_task, void* user) {
+    Jobs* jobs = (Jobs*)user;
+    if (user_task == user) ++jobs->finished;
+}
+
+static void testTaskSystem(void) {
+    ts_map_desc_f desc = {{0, 0}, {16, 16}, 8, 4, level, NULL};
+    ts_map_f* map = NULL;
+    static ts_mover_f movers[1000];
+    static ts_result_f results[1000];
+    ts_result_f single;
+    Jobs jobs = {0, 0, 0};
+    ts_task_system tasks = {enqueueBackwards, finishJobs, NULL};
+    size_t k;
+    tasks.user_context = &jobs;
+    CHECK(ts_map_create_f(&desc, &map) == TS_OK);
+    for (k = 0; k < 1000; ++k) {
+        ts_mover_f m = {{{(float)(k % 100), (float)(k % 37)}, {10, 10}}, {(float)(k % 13) - 6.5f, 9.25f}};
+        movers[k] = m;
+    }
+    CHECK(ts_move_and_slide_batch_tasks_f(map, movers, results, 1000, &tasks) == TS_OK);
+    CHECK(jobs.enqueued == 1 && jobs.finished == 1 && jobs.ranges > 1);
+    for (k = 0; k < 1000; ++k) {
+        CHECK(ts_move_and_slide_f(map, &movers[k], &single, NULL, 0) == TS_OK);
+        CHECK(memcmp(&single, &results[k], sizeof single) == 0);
+    }
+    CHECK(ts_move_and_slide_batch_tasks_f(map, movers, results, 1000, NULL) == TS_ERROR_NULL_ARGUMENT);
+    ts_map_destroy_f(map);
+}
+
 static void testVersion(void) {
     CHECK(ts_get_version() == TILESWEEP_VERSION);
     CHECK(TILESWEEP_VERSION ==
@@ -251,6 +304,7 @@ int main(void) {
     testAllocator();
     testRefusedMovesLeaveContactsAlone();
     testVersion();
+    testTaskSystem();
     if (failures != 0) {
         fprintf(stderr, "%d checks failed\n", failures);
         return 1;
