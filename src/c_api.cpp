@@ -95,6 +95,8 @@ ts_error errorOf(MapError e) noexcept {
             return TS_ERROR_MAP_UNREPRESENTABLE_EDGE_Y;
         case MapError::InexactArithmetic:
             return TS_ERROR_INEXACT_ARITHMETIC;
+        case MapError::NotPrepared:  // a C map is always prepared by ts_map_create_*
+            return TS_ERROR_NULL_ARGUMENT;
     }
     return TS_ERROR_MAP_NEGATIVE_DIMENSIONS;
 }

@@ -75,6 +75,8 @@ const char* describe(MapError error) noexcept {
             return "map.tile: a tile edge on x is not representable";
         case MapError::UnrepresentableEdgeY:
             return "map.tile: a tile edge on y is not representable";
+        case MapError::NotPrepared:
+            return "map: not prepared (a default-constructed PreparedMap; use prepareMap)";
         case MapError::InexactArithmetic:
             return "arithmetic: the floating-point environment is not exact (rounding mode not to "
                    "nearest, fused multiply-add or excess precision); the library refuses every map";

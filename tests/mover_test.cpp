@@ -99,6 +99,9 @@ TYPED_TEST(Mover, badInputIsRefusedNotResolved) {
     EXPECT_EQ(refused.error(), MapError::NonPositiveTileSize);
     EXPECT_EQ(moveAndSlide(refused, {{{0, 0}, {4, 4}}, {1, 0}}).status, MoveStatus::InvalidInput);
     EXPECT_EQ(moveAndSlide(PreparedMap<T>{}, {{{0, 0}, {4, 4}}, {1, 0}}).status, MoveStatus::InvalidInput);
+    EXPECT_EQ(PreparedMap<T>{}.error(), MapError::NotPrepared);
+    EXPECT_STREQ(describe(MapError::NotPrepared),
+                 "map: not prepared (a default-constructed PreparedMap; use prepareMap)");
 }
 
 // A box 100 tiles wide has maxContacts 104 + 3 > kInlineContacts: with no buffer the frame is

@@ -45,7 +45,7 @@ namespace tilesweep {
 template <class T>
 class PreparedMap {
 public:
-    /// An empty, invalid map (error() is NegativeDimensions); use prepareMap.
+    /// An empty, invalid map (error() is NotPrepared); use prepareMap.
     PreparedMap() noexcept = default;
 
     /// The map as resolveMove takes it.
@@ -62,7 +62,7 @@ private:
     friend PreparedMap<double> prepareMap(const TileMapView<double>& map) noexcept;
 
     TileMapView<T> view_{};
-    MapError error_ = MapError::NegativeDimensions;
+    MapError error_ = MapError::NotPrepared;
     Vec2<double> inverseTileSize_{0, 0};
 };
 
@@ -100,6 +100,7 @@ struct MoveResult {
     bool onCeiling = false;              ///< a ceiling was hit: a contact with normal (0, 1)
     bool onWall = false;                 ///< a wall was hit: a contact with normal (1, 0) or (-1, 0)
     std::int8_t wallNormalX = 0;         ///< the wall's normal on x: 1 (wall on the left), -1 (right), 0
+    bool contactsStored = false;         ///< the caller's buffer holds all contactCount contacts
     std::int32_t contactCount = 0;       ///< tiles hit this frame, stored or not
     std::int32_t startOverlapCount = 0;  ///< solid tiles the box overlapped at the start (it may
                                          ///< leave them; they never block)
@@ -107,7 +108,6 @@ struct MoveResult {
     /// the contact normals): the motion the box still had on the axes it slid along. Exact: each
     /// component is the input's or zero.
     Vec2<T> clippedDisplacement{};
-    bool contactsStored = false;  ///< the caller's buffer holds all contactCount contacts
 };
 
 /// `velocity` with the components that push into a face this frame hit set to zero: x when

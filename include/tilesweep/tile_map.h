@@ -41,6 +41,7 @@ enum class MapError : std::uint8_t {
     UnrepresentableEdgeX,  ///< some origin.x + i*tileSize.x, 0 <= i <= columns, is not a T
     UnrepresentableEdgeY,  ///< some origin.y + j*tileSize.y, 0 <= j <= rows, is not a T
     InexactArithmetic,     ///< isArithmeticExact() is false here: no map can be resolved exactly
+    NotPrepared,           ///< a default-constructed PreparedMap: no map was given to prepareMap
 };
 
 /// The largest number of cells a map may have (2^31 - 1: a cell index fits an int32).
