@@ -178,9 +178,11 @@ std::vector<FrameResult<T>> runFrames(const Scene<T>& scene, Resolve resolve) {
         }
         FrameResult<T> f;
         f.position = r.position;
-        f.contacts.assign(contacts.begin(), contacts.begin() + std::max<std::int32_t>(r.contactCount, 0));
-        f.startOverlaps.assign(overlaps.begin(),
-                               overlaps.begin() + std::max<std::int32_t>(r.startOverlapCount, 0));
+        // Only non-empty ranges: GCC 12 at -O3 warns (-Wnonnull) on the memmove of zero bytes into
+        // the fresh vector's null storage that assign() would otherwise reach.
+        if (r.contactCount > 0) f.contacts.assign(contacts.begin(), contacts.begin() + r.contactCount);
+        if (r.startOverlapCount > 0)
+            f.startOverlaps.assign(overlaps.begin(), overlaps.begin() + r.startOverlapCount);
         frames.push_back(std::move(f));
         start = r.position;
     }

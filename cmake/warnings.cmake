@@ -8,18 +8,34 @@ if(TILESWEEP_FAULT)
     add_compile_definitions(TILESWEEP_FAULT_${TILESWEEP_FAULT})
 endif()
 
+# Fused multiply-add changes the rounding of a*b+c; the library's exact arithmetic (Dekker's
+# TwoProduct, Knuth's TwoSum), the oracles, the corpus replay and the bit-for-bit comparisons
+# assume every product and sum is rounded on its own (box2d, earcut). GCC's default is
+# -ffp-contract=fast, so this is set on the library targets themselves (src/CMakeLists.txt), not
+# only here: a game that builds them with its own flags keeps it. MSVC does not contract unless
+# asked (/fp:contract). The library checks the arithmetic it gets at run time too
+# (src/arithmetic_check.cpp).
+set(tilesweep_fp_contract
+    $<$<NOT:$<CXX_COMPILER_ID:MSVC>>:$<IF:$<STREQUAL:${TILESWEEP_FAULT},FMA>,-ffp-contract=fast,-ffp-contract=off>>)
+
 add_library(tilesweep_warnings INTERFACE)
 target_compile_options(tilesweep_warnings INTERFACE
     -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion
-    # Fused multiply-add changes the rounding of a*b+c; the oracles, the corpus replay and the
-    # bit-for-bit comparisons assume every product and sum is rounded on its own (box2d, earcut).
-    $<IF:$<STREQUAL:${TILESWEEP_FAULT},FMA>,-ffp-contract=fast,-ffp-contract=off>
+    ${tilesweep_fp_contract}
     # GoogleTest's TYPED_TEST_SUITE(Suite, Types) leaves its variadic argument empty, which clang's
     # -Wpedantic reports at every use.
     $<$<CXX_COMPILER_ID:Clang>:-Wno-gnu-zero-variadic-macro-arguments>
     $<$<BOOL:${TILESWEEP_WERROR}>:-Werror>)
 
 
+if(TILESWEEP_SANITIZE AND TILESWEEP_SANITIZE_THREAD)
+    message(FATAL_ERROR "tilesweep: TILESWEEP_SANITIZE and TILESWEEP_SANITIZE_THREAD cannot be combined")
+endif()
+if(TILESWEEP_SANITIZE_THREAD)
+    # ThreadSanitizer over the batch pool (preset tsan); like the others, on every target.
+    add_compile_options(-fsanitize=thread -fno-omit-frame-pointer)
+    add_link_options(-fsanitize=thread)
+endif()
 if(TILESWEEP_SANITIZE)
     # Sanitizers must cover everything, so they go on every target, including third-party code
     # compiled here (box2d).

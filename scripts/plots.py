@@ -102,39 +102,62 @@ def error_vs_magnitude(report):
     return fig
 
 
+def share_label(percent):
+    """A cell's share as text: exact 0 stays "0", small shares keep a significant digit."""
+    if percent == 0:
+        return "0"
+    if percent < 0.1:
+        return "<0.1"
+    if percent < 10:
+        return f"{percent:.1f}"
+    return f"{percent:.0f}"
+
+
 def failures_per_family(report):
-    """Share of scenes whose decisions differ, and that tunnel or end inside, per family."""
+    """Heatmaps, families by implementations: the share of scenes (%) whose decisions differ, and
+    that tunnel or end inside, written in every cell (so a 0 is a 0, not a missing bar)."""
+    from matplotlib.colors import PowerNorm  # noqa: E402  (only this chart needs it)
+
     families = [f["name"] for f in report["families"]]
     impls = report["implementations"]
-    fig, axes = plt.subplots(2, 1, figsize=(max(12.5, 0.45 * len(families) + 3), 7.5), sharex=True)
-    fig.suptitle("Failures per family (% of scenes)")
-    width = 0.8 / len(impls)
-    titles = ("decisions differ from the exact reference (tiles hit or normals)",
-              "tunnels, or ends inside a tile it did not start in")
+    titles = ("decisions differ from the exact reference\n(tiles hit or normals)",
+              "tunnels, or ends inside a tile\nit did not start in")
+    fig, axes = plt.subplots(1, 2, figsize=(2 * (0.62 * len(impls) + 1.2) + 2.5, 0.3 * len(families) + 3.2),
+                             sharey=True)
+    fig.suptitle("Failures per family (% of scenes; grey: not run, float beyond 2^23)")
+    norm = PowerNorm(gamma=0.4, vmin=0, vmax=100)  # small shares already show colour
+    cmap = plt.get_cmap("Reds").copy()
+    cmap.set_bad("#e6e6e6")
     for panel, ax in enumerate(axes):
-        ax.set_title(titles[panel], fontweight="bold")
-        for i, impl in enumerate(impls):
-            xs, heights, skipped = [], [], []
-            for c, name in enumerate(families):
-                x = c - 0.4 + width * (i + 0.5)
+        grid = []
+        for name in families:
+            row = []
+            for impl in impls:
                 cell = impl["families"].get(name)
-                if not cell:
-                    skipped.append(x)
+                if not cell or not cell["scenes"]:
+                    row.append(float("nan"))
                     continue
                 failures = cell["failures"]
                 # A scene can both tunnel and end inside: the larger count is a lower bound of
                 # the union (exact when one implies the other).
                 n = failures["decision"] if panel == 0 else max(failures["tunnel"], failures["inside"])
-                xs.append(x)
-                heights.append(100.0 * n / cell["scenes"] if cell["scenes"] else 0.0)
-            ax.bar(xs, heights, width=width * 0.92, color=colour(i), label=impl["name"] if panel == 0 else None)
-            ax.plot(skipped, [0.5] * len(skipped), linestyle="none", marker=".", color="#999999")
-        ax.set_ylim(0, 100)
-        ax.set_yticks([0, 25, 50, 75, 100], ["0%", "25%", "50%", "75%", "100%"])
-        ax.grid(axis="x", visible=False)
-    axes[1].set_xticks(range(len(families)), families, rotation=35, ha="right")
-    fig.legend(loc="center left", bbox_to_anchor=(1.0, 0.5), frameon=False,
-               title="no bar: 0%\ngrey dots: not run\n(float beyond 2^23)")
+                row.append(100.0 * n / cell["scenes"])
+            grid.append(row)
+        ax.imshow(grid, cmap=cmap, norm=norm, aspect="auto", interpolation="nearest")
+        for r, row in enumerate(grid):
+            for c, value in enumerate(row):
+                if math.isnan(value):
+                    text, ink = "-", "#777777"
+                else:
+                    text, ink = share_label(value), ("white" if norm(value) > 0.6 else "#222222")
+                ax.text(c, r, text, ha="center", va="center", fontsize=7, color=ink)
+        ax.set_title(titles[panel], fontweight="bold")
+        ax.set_xticks(range(len(impls)), [impl["name"] for impl in impls], rotation=40, ha="right")
+        ax.set_yticks(range(len(families)), families)
+        ax.grid(False)
+        ax.tick_params(length=0)
+        for spine in ax.spines.values():
+            spine.set_visible(False)
     fig.tight_layout()
     return fig
 

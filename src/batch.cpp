@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "tilesweep/batch.h"
 
+#include "batch_run.h"
+
 #include <atomic>
 #include <condition_variable>
 #include <mutex>
@@ -123,11 +125,42 @@ void BatchPool::run(std::size_t count, std::size_t chunk, void (*work)(void*, st
     s.done.wait(lock, [&] { return s.active.load() == 0; });
 }
 
+namespace detail {
+
 namespace {
 
-/// Movers per chunk: large enough that the shared cursor is touched rarely (a chunk is tens of
-/// microseconds of work), small enough that two threads finish within a chunk of each other.
-constexpr std::size_t kBatchChunk = 256;
+/// A pool-style work function behind the TaskSystem's range signature.
+struct TaskAdapter {
+    void (*work)(void*, std::size_t, std::size_t);
+    void* context;
+};
+
+void runAdaptedTask(std::size_t begin, std::size_t end, void* taskContext) {
+    const auto& adapter = *static_cast<const TaskAdapter*>(taskContext);
+    adapter.work(adapter.context, begin, end);
+}
+
+}  // namespace
+
+void runBatch(std::size_t count, void (*work)(void*, std::size_t, std::size_t), void* context,
+              BatchPool* pool, const TaskSystem* tasks) noexcept {
+    if (count == 0) return;
+    if (tasks != nullptr && tasks->enqueue != nullptr) {
+        TaskAdapter adapter{work, context};
+        void* handle = tasks->enqueue(&runAdaptedTask, count, kBatchChunk, &adapter, tasks->userContext);
+        if (handle != nullptr && tasks->finish != nullptr) tasks->finish(handle, tasks->userContext);
+        return;
+    }
+    if (pool == nullptr) {
+        work(context, 0, count);
+        return;
+    }
+    pool->run(count, kBatchChunk, work, context);
+}
+
+}  // namespace detail
+
+namespace {
 
 template <class T>
 struct BatchJob {
@@ -144,26 +177,32 @@ void runRange(void* context, std::size_t begin, std::size_t end) {
 
 template <class T>
 void batchOf(const PreparedMap<T>& map, const MoveInput<T>* inputs, MoveResult<T>* results, std::size_t count,
-             BatchPool* pool) noexcept {
-    if (inputs == nullptr || results == nullptr || count == 0) return;
+             BatchPool* pool, const TaskSystem* tasks) noexcept {
+    if (inputs == nullptr || results == nullptr) return;
     BatchJob<T> job{&map, inputs, results};
-    if (pool == nullptr) {
-        runRange<T>(&job, 0, count);
-        return;
-    }
-    pool->run(count, kBatchChunk, &runRange<T>, &job);
+    detail::runBatch(count, &runRange<T>, &job, pool, tasks);
 }
 
 }  // namespace
 
 void moveAndSlideBatch(const PreparedMap<float>& map, const MoveInput<float>* inputs,
                        MoveResult<float>* results, std::size_t count, BatchPool* pool) noexcept {
-    batchOf(map, inputs, results, count, pool);
+    batchOf(map, inputs, results, count, pool, nullptr);
 }
 
 void moveAndSlideBatch(const PreparedMap<double>& map, const MoveInput<double>* inputs,
                        MoveResult<double>* results, std::size_t count, BatchPool* pool) noexcept {
-    batchOf(map, inputs, results, count, pool);
+    batchOf(map, inputs, results, count, pool, nullptr);
+}
+
+void moveAndSlideBatch(const PreparedMap<float>& map, const MoveInput<float>* inputs,
+                       MoveResult<float>* results, std::size_t count, const TaskSystem& tasks) noexcept {
+    batchOf(map, inputs, results, count, nullptr, &tasks);
+}
+
+void moveAndSlideBatch(const PreparedMap<double>& map, const MoveInput<double>* inputs,
+                       MoveResult<double>* results, std::size_t count, const TaskSystem& tasks) noexcept {
+    batchOf(map, inputs, results, count, nullptr, &tasks);
 }
 
 }  // namespace tilesweep

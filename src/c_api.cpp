@@ -1,24 +1,50 @@
 // SPDX-License-Identifier: MIT
-// The C API (include/tilesweep/tilesweep.h) over the game-loop and batch calls. Every entry
-// point catches everything (allocation and thread start are the only things that can throw)
-// and reports a ts_error; none aborts.
+// The C API (include/tilesweep/tilesweep.h) over the game-loop and batch calls. Nothing here
+// throws but the pool's thread start, which is caught; memory comes from the map's allocator
+// (malloc by default), never from operator new, and no C++ object is made in a caller's buffer.
+#include "batch_run.h"
+
 #include "tilesweep/batch.h"
 #include "tilesweep/mover.h"
 #include "tilesweep/tilesweep.h"
 
-#include <cstring>
+#include <cstdlib>
 #include <new>
-#include <vector>
+#include <type_traits>
 
-struct ts_map_f {
-    std::vector<std::uint8_t> cells;
-    tilesweep::PreparedMap<float> map;
+static_assert(TILESWEEP_VERSION_MAJOR >= 0 && TILESWEEP_VERSION_MINOR < 100 && TILESWEEP_VERSION_PATCH < 100,
+              "TILESWEEP_VERSION packs minor and patch in two decimal digits each");
+
+namespace {
+
+void* mallocAllocate(std::size_t size, void*) { return std::malloc(size); }
+void mallocRelease(void* memory, std::size_t, void*) { std::free(memory); }
+
+/// The allocator a map keeps: the caller's, or malloc and free.
+ts_allocator allocatorOf(const ts_allocator* given) noexcept {
+    if (given != nullptr && given->allocate != nullptr && given->release != nullptr) return *given;
+    return ts_allocator{&mallocAllocate, &mallocRelease, nullptr};
+}
+
+}  // namespace
+
+// A map is one block from its allocator: this header, then columns * rows cells.
+template <class T>
+struct MapBlock {
+    ts_allocator allocator;
+    std::size_t bytes;  ///< the block's size, header included
+    tilesweep::PreparedMap<T> map;
+
+    [[nodiscard]] std::uint8_t* cells() noexcept { return reinterpret_cast<std::uint8_t*>(this + 1); }
 };
 
-struct ts_map_d {
-    std::vector<std::uint8_t> cells;
-    tilesweep::PreparedMap<double> map;
-};
+struct ts_map_f : MapBlock<float> {};
+struct ts_map_d : MapBlock<double> {};
+static_assert(sizeof(ts_map_f) == sizeof(MapBlock<float>) && sizeof(ts_map_d) == sizeof(MapBlock<double>),
+              "the cells start right after the header");
+static_assert(std::is_trivially_destructible<tilesweep::Contact<float>>::value &&
+                  std::is_trivially_destructible<tilesweep::Contact<double>>::value,
+              "a scratch contact list is released without destructor calls");
 
 struct ts_pool {
     explicit ts_pool(int threads) : pool(threads) {}
@@ -36,7 +62,7 @@ template <>
 struct Types<float> {
     using Map = ts_map_f;
     using Desc = ts_map_desc_f;
-    using Vec = ts_vec2f;
+    using Vec = ts_vec2_f;
     using Mover = ts_mover_f;
     using Result = ts_result_f;
     using ContactC = ts_contact_f;
@@ -45,7 +71,7 @@ template <>
 struct Types<double> {
     using Map = ts_map_d;
     using Desc = ts_map_desc_d;
-    using Vec = ts_vec2d;
+    using Vec = ts_vec2_d;
     using Mover = ts_mover_d;
     using Result = ts_result_d;
     using ContactC = ts_contact_d;
@@ -74,6 +100,10 @@ ts_error errorOf(MapError e) noexcept {
         case MapError::UnrepresentableEdgeY:
             return TS_ERROR_MAP_UNREPRESENTABLE_EDGE_Y;
 #endif
+        case MapError::InexactArithmetic:
+            return TS_ERROR_INEXACT_ARITHMETIC;
+        case MapError::NotPrepared:  // a C map is always prepared by ts_map_create_*
+            return TS_ERROR_NULL_ARGUMENT;
     }
     return TS_ERROR_MAP_NEGATIVE_DIMENSIONS;
 }
@@ -111,12 +141,26 @@ void toResult(const tilesweep::MoveResult<T>& r, typename Types<T>::Result& out)
     out.on_ceiling = r.onCeiling ? 1 : 0;
     out.on_wall = r.onWall ? 1 : 0;
     out.wall_normal_x = r.wallNormalX;
+    out.contacts_stored = r.contactsStored ? 1 : 0;
     out.contact_count = r.contactCount;
     out.start_overlap_count = r.startOverlapCount;
+    out.clipped_displacement = {r.clippedDisplacement.x, r.clippedDisplacement.y};
+}
+
+template <class T>
+typename Types<T>::Vec clipVelocity(typename Types<T>::Vec v, const typename Types<T>::Result* r) noexcept {
+    if (r == nullptr) return v;
+    tilesweep::MoveResult<T> flags;
+    flags.onGround = r->on_ground != 0;
+    flags.onCeiling = r->on_ceiling != 0;
+    flags.wallNormalX = r->wall_normal_x;
+    const tilesweep::Vec2<T> clipped = tilesweep::clipVelocity(toVec<T>(v), flags);
+    return {clipped.x, clipped.y};
 }
 
 template <class T>
 ts_error createMap(const typename Types<T>::Desc* desc, typename Types<T>::Map** out) noexcept {
+    using Map = typename Types<T>::Map;
     if (out == nullptr) return TS_ERROR_NULL_ARGUMENT;
     *out = nullptr;
     if (desc == nullptr) return TS_ERROR_NULL_ARGUMENT;
@@ -125,19 +169,30 @@ ts_error createMap(const typename Types<T>::Desc* desc, typename Types<T>::Map**
                                    desc->rows, desc->solid};
     const MapError header = tilesweep::validateTileMap(view);
     if (header != MapError::None) return errorOf(header);
-    auto* map = new (std::nothrow) typename Types<T>::Map;
-    if (map == nullptr) return TS_ERROR_OUT_OF_MEMORY;
-    try {
-        const auto cells = static_cast<std::size_t>(desc->columns) * static_cast<std::size_t>(desc->rows);
-        map->cells.assign(desc->solid, desc->solid + cells);
-    } catch (...) {
-        delete map;
-        return TS_ERROR_OUT_OF_MEMORY;
-    }
-    view.solid = map->cells.data();
+    const ts_allocator allocator = allocatorOf(desc->allocator);
+    // validateTileMap bounds columns * rows by kMaxCells (2^31 - 1): no overflow.
+    const auto cells = static_cast<std::size_t>(desc->columns) * static_cast<std::size_t>(desc->rows);
+    const std::size_t bytes = sizeof(Map) + cells;
+    void* memory = allocator.allocate(bytes, allocator.user);
+    if (memory == nullptr) return TS_ERROR_OUT_OF_MEMORY;
+    auto* map = new (memory) Map{};  // the library's own block, not the caller's storage
+    map->allocator = allocator;
+    map->bytes = bytes;
+    std::uint8_t* copy = map->cells();
+    for (std::size_t k = 0; k < cells; ++k) copy[k] = desc->solid[k];
+    view.solid = copy;
     map->map = tilesweep::prepareMap(view);
     *out = map;
     return errorOf(map->map.error());
+}
+
+template <class Map>
+void destroyMap(Map* map) noexcept {
+    if (map == nullptr) return;
+    const ts_allocator allocator = map->allocator;
+    const std::size_t bytes = map->bytes;
+    map->~Map();
+    allocator.release(map, bytes, allocator.user);
 }
 
 template <class T>
@@ -145,10 +200,22 @@ ts_error setSolid(typename Types<T>::Map* map, std::int32_t i, std::int32_t j, i
     if (map == nullptr) return TS_ERROR_NULL_ARGUMENT;
     const auto& v = map->map.view();
     if (i < 0 || j < 0 || i >= v.columns || j >= v.rows) return TS_ERROR_CELL_OUT_OF_RANGE;
-    map->cells[static_cast<std::size_t>(j) * static_cast<std::size_t>(v.columns) +
-               static_cast<std::size_t>(i)] = solid != 0 ? 1 : 0;
+    map->cells()[static_cast<std::size_t>(j) * static_cast<std::size_t>(v.columns) +
+                 static_cast<std::size_t>(i)] = solid != 0 ? 1 : 0;
     return TS_OK;
 }
+
+template <class T>
+void copyContacts(const tilesweep::Contact<T>* from, std::int32_t count,
+                  typename Types<T>::ContactC* to) noexcept {
+    for (std::int32_t k = 0; k < count; ++k) {
+        const tilesweep::Contact<T>& c = from[k];
+        to[k] = {c.tile.i, c.tile.j, c.normal.x, c.normal.y, c.time};
+    }
+}
+
+/// Whether a move's contacts were resolved (and so may be copied out).
+bool wasResolved(MoveStatus s) noexcept { return s == MoveStatus::Moved || s == MoveStatus::Blocked; }
 
 template <class T>
 ts_error moveOne(const typename Types<T>::Map* map, const typename Types<T>::Mover* mover,
@@ -157,41 +224,31 @@ ts_error moveOne(const typename Types<T>::Map* map, const typename Types<T>::Mov
     if (map == nullptr || mover == nullptr || result == nullptr) return TS_ERROR_NULL_ARGUMENT;
     if (contacts == nullptr) capacity = 0;
     const tilesweep::MoveInput<T> input = toInput<T>(*mover);
-    tilesweep::MoveResult<T> r;
     const std::int32_t bound = tilesweep::maxContacts(input.box.size, map->map.view().tileSize);
-    tilesweep::Contact<T> local[tilesweep::kInlineContacts];
     if (capacity >= bound && bound > tilesweep::kInlineContacts) {
-        // A box too wide for the inline contacts, with a buffer that holds its bound: resolve
-        // into the caller's storage as Contact<T>s (same size: the static_assert), then turn
-        // each into a ts_contact_* in place. Only such wide boxes pay for this.
-        using ContactC = typename Types<T>::ContactC;
-        static_assert(sizeof(ContactC) == sizeof(tilesweep::Contact<T>), "in-place conversion");
-        auto* raw = reinterpret_cast<unsigned char*>(contacts);
-        const std::size_t size = sizeof(ContactC);
-        for (std::int32_t k = 0; k < bound; ++k)
-            new (raw + static_cast<std::size_t>(k) * size) tilesweep::Contact<T>{};
-        r = tilesweep::moveAndSlide(map->map, input,
-                                    std::launder(reinterpret_cast<tilesweep::Contact<T>*>(raw)), bound);
-        for (std::int32_t k = 0; k < r.contactCount && k < bound; ++k) {
-            tilesweep::Contact<T> c;
-            std::memcpy(&c, raw + static_cast<std::size_t>(k) * size, size);
-            new (raw + static_cast<std::size_t>(k) * size)
-                ContactC{c.tile.i, c.tile.j, c.normal.x, c.normal.y, c.time};
-        }
+        // A box too wide for the inline contacts, with a buffer that holds its bound: resolve into
+        // a scratch list of Contact<T> from the map's allocator, then copy into the caller's
+        // ts_contact_*s. Only such wide boxes (over 30 tiles on a side) pay for this.
+        const std::size_t bytes = static_cast<std::size_t>(bound) * sizeof(tilesweep::Contact<T>);
+        void* memory = map->allocator.allocate(bytes, map->allocator.user);
+        if (memory == nullptr) return TS_ERROR_OUT_OF_MEMORY;
+        auto* scratch = static_cast<tilesweep::Contact<T>*>(memory);
+        for (std::int32_t k = 0; k < bound; ++k) new (scratch + k) tilesweep::Contact<T>{};
+        const tilesweep::MoveResult<T> r = tilesweep::moveAndSlide(map->map, input, scratch, bound);
+        if (wasResolved(r.status) && r.contactsStored) copyContacts<T>(scratch, r.contactCount, contacts);
+        map->allocator.release(memory, bytes, map->allocator.user);  // Contact<T> is trivially destructible
         toResult(r, *result);
         return errorOf(r.status);
     }
-    // Otherwise the frame's contacts fit the inline array (or the frame is refused as too wide
-    // for the buffer given): copy them out when they fit the caller's capacity.
-    r = tilesweep::moveAndSlide(
+    // Otherwise the contacts go to the inline array, and are copied out when moveAndSlide says
+    // they were all stored there (never for a refused move).
+    tilesweep::Contact<T> local[tilesweep::kInlineContacts];
+    const tilesweep::MoveResult<T> r = tilesweep::moveAndSlide(
         map->map, input, local,
         capacity < tilesweep::kInlineContacts ? capacity : tilesweep::kInlineContacts);
-    if (r.contactCount <= capacity)
-        for (std::int32_t k = 0; k < r.contactCount; ++k) {
-            const tilesweep::Contact<T>& c = local[k];
-            contacts[k] = {c.tile.i, c.tile.j, c.normal.x, c.normal.y, c.time};
-        }
+    if (wasResolved(r.status) && r.contactsStored) copyContacts<T>(local, r.contactCount, contacts);
     toResult(r, *result);
+    if (contacts == nullptr) result->contacts_stored = 0;
     return errorOf(r.status);
 }
 
@@ -211,14 +268,19 @@ void runCBatch(void* context, std::size_t begin, std::size_t end) {
 
 template <class T>
 ts_error moveBatch(const typename Types<T>::Map* map, const typename Types<T>::Mover* movers,
-                   typename Types<T>::Result* results, std::size_t count, ts_pool* pool) noexcept {
+                   typename Types<T>::Result* results, std::size_t count, ts_pool* pool,
+                   const ts_task_system* cTasks = nullptr) noexcept {
     if (map == nullptr || ((movers == nullptr || results == nullptr) && count > 0))
         return TS_ERROR_NULL_ARGUMENT;
     CBatch<T> job{&map->map, movers, results};
-    if (pool == nullptr)
-        runCBatch<T>(&job, 0, count);
-    else
-        pool->pool.run(count, 256, &runCBatch<T>, &job);
+    tilesweep::TaskSystem tasks;
+    if (cTasks != nullptr) {
+        // The C and C++ task callbacks have the same parameters, in the same order.
+        tasks.enqueue = cTasks->enqueue;
+        tasks.finish = cTasks->finish;
+        tasks.userContext = cTasks->user_context;
+    }
+    tilesweep::detail::runBatch(count, &runCBatch<T>, &job, pool != nullptr ? &pool->pool : nullptr, &tasks);
     ts_error worst = TS_OK;
     for (std::size_t k = 0; k < count && worst == TS_OK; ++k)
         worst = errorOf(static_cast<MoveStatus>(results[k].status));
@@ -228,6 +290,8 @@ ts_error moveBatch(const typename Types<T>::Map* map, const typename Types<T>::M
 }  // namespace
 
 extern "C" {
+
+uint32_t ts_get_version(void) { return TILESWEEP_VERSION; }
 
 const char* ts_error_message(int error) {
     // An int, not a ts_error: a caller may pass any code, and loading a value outside the
@@ -259,14 +323,17 @@ const char* ts_error_message(int error) {
             return "out of memory";
         case TS_ERROR_THREADS:
             return "pool: a worker thread could not be started";
+        case TS_ERROR_INEXACT_ARITHMETIC:
+            return "arithmetic: the floating-point environment is not exact (rounding mode not to nearest, "
+                   "fused multiply-add or excess precision); the library refuses every map";
     }
     return "unknown tilesweep error code";
 }
 
 ts_error ts_map_create_f(const ts_map_desc_f* desc, ts_map_f** out) { return createMap<float>(desc, out); }
 ts_error ts_map_create_d(const ts_map_desc_d* desc, ts_map_d** out) { return createMap<double>(desc, out); }
-void ts_map_destroy_f(ts_map_f* map) { delete map; }
-void ts_map_destroy_d(ts_map_d* map) { delete map; }
+void ts_map_destroy_f(ts_map_f* map) { destroyMap(map); }
+void ts_map_destroy_d(ts_map_d* map) { destroyMap(map); }
 ts_error ts_map_set_solid_f(ts_map_f* map, int32_t i, int32_t j, int solid) {
     return setSolid<float>(map, i, j, solid);
 }
@@ -274,11 +341,11 @@ ts_error ts_map_set_solid_d(ts_map_d* map, int32_t i, int32_t j, int solid) {
     return setSolid<double>(map, i, j, solid);
 }
 
-int32_t ts_max_contacts_f(ts_vec2f box, ts_vec2f tile) {
+int32_t ts_max_contacts_f(ts_vec2_f box, ts_vec2_f tile) {
     return tilesweep::maxContacts(tilesweep::Vec2<float>{box.x, box.y},
                                   tilesweep::Vec2<float>{tile.x, tile.y});
 }
-int32_t ts_max_contacts_d(ts_vec2d box, ts_vec2d tile) {
+int32_t ts_max_contacts_d(ts_vec2_d box, ts_vec2_d tile) {
     return tilesweep::maxContacts(tilesweep::Vec2<double>{box.x, box.y},
                                   tilesweep::Vec2<double>{tile.x, tile.y});
 }
@@ -290,6 +357,13 @@ ts_error ts_move_and_slide_f(const ts_map_f* map, const ts_mover_f* mover, ts_re
 ts_error ts_move_and_slide_d(const ts_map_d* map, const ts_mover_d* mover, ts_result_d* result,
                              ts_contact_d* contacts, int32_t capacity) {
     return moveOne<double>(map, mover, result, contacts, capacity);
+}
+
+ts_vec2_f ts_clip_velocity_f(ts_vec2_f velocity, const ts_result_f* result) {
+    return clipVelocity<float>(velocity, result);
+}
+ts_vec2_d ts_clip_velocity_d(ts_vec2_d velocity, const ts_result_d* result) {
+    return clipVelocity<double>(velocity, result);
 }
 
 ts_error ts_pool_create(int32_t threads, ts_pool** out) {
@@ -313,6 +387,17 @@ ts_error ts_move_and_slide_batch_f(const ts_map_f* map, const ts_mover_f* movers
 ts_error ts_move_and_slide_batch_d(const ts_map_d* map, const ts_mover_d* movers, ts_result_d* results,
                                    size_t count, ts_pool* pool) {
     return moveBatch<double>(map, movers, results, count, pool);
+}
+
+ts_error ts_move_and_slide_batch_tasks_f(const ts_map_f* map, const ts_mover_f* movers, ts_result_f* results,
+                                         size_t count, const ts_task_system* tasks) {
+    if (tasks == nullptr) return TS_ERROR_NULL_ARGUMENT;
+    return moveBatch<float>(map, movers, results, count, nullptr, tasks);
+}
+ts_error ts_move_and_slide_batch_tasks_d(const ts_map_d* map, const ts_mover_d* movers, ts_result_d* results,
+                                         size_t count, const ts_task_system* tasks) {
+    if (tasks == nullptr) return TS_ERROR_NULL_ARGUMENT;
+    return moveBatch<double>(map, movers, results, count, nullptr, tasks);
 }
 
 }  // extern "C"

@@ -612,6 +612,8 @@ public:
         if (first.any) {
             if (!finishStep(first)) return false;
             total = first.count;
+            result.blockedX = first.axisHit[0];
+            result.blockedY = first.axisHit[1];
             for (int a = 0; a < 2; ++a)
                 if (first.axisHit[a]) finalPos[a] = touchLow(a, first.touch[a]);
             const int free = first.axisHit[0] ? 1 : 0;
@@ -630,6 +632,8 @@ public:
                     if (!finishStep(second)) return false;
                     total += second.count;
                     finalPos[free] = touchLow(free, second.touch[free]);
+                    (free == 0 ? result.blockedX : result.blockedY) =
+                        true;  // a second step moves on `free` alone
                 }
             }
         }

@@ -59,25 +59,18 @@ MoveResult<T> moveAndSlideOf(const PreparedMap<T>& map, const MoveInput<T>& inpu
     MoveResult<T> r;
     if (detail::tryFreeMove(map.view(), map.inverseTileSize(), input.box, input.displacement, r.position)) {
         r.status = MoveStatus::Moved;
+        r.clippedDisplacement = input.displacement;
+        r.contactsStored = contacts != nullptr && capacity >= 0;  // no contacts: all of them stored
         return r;
     }
+    // A buffer of maxContacts takes the contacts directly; otherwise they go to the stack, so that
+    // the resolver keeps its short-move path (its capacity bounds the cells it lists), and are
+    // copied out when they fit. The flags never depend on either: they come from the steps.
     const std::int32_t bound = maxContactsOf(input.box.size, map.view().tileSize);
+    const bool direct = contacts != nullptr && capacity >= bound;
     Contact<T> local[kInlineContacts];
-    Contact<T>* buffer = contacts;
-    std::int32_t bufferCapacity = capacity;
-    if (contacts == nullptr || capacity < bound) {
-#if defined(TILESWEEP_FAULT_INLINE_LIMIT_EXCLUSIVE)
-        if (bound >= kInlineContacts) {  // deliberate fault: a box at exactly the inline limit refused
-#else
-        if (bound > kInlineContacts) {
-#endif
-            MoveResult<T> tooSmall = refuse(input, MoveStatus::ContactBufferTooSmall);
-            tooSmall.contactCount = bound;
-            return tooSmall;
-        }
-        buffer = local;
-        bufferCapacity = kInlineContacts;
-    }
+    Contact<T>* buffer = direct ? contacts : local;
+    const std::int32_t bufferCapacity = direct ? capacity : kInlineContacts;
     const SweepResult<T> s = resolveMove(SweepInput<T>{map.view(), input.box, input.displacement},
                                          ResolveOutput<T>{buffer, bufferCapacity});
     if (s.status == Status::InvalidInput) return refuse(input, MoveStatus::InvalidInput);
@@ -85,22 +78,26 @@ MoveResult<T> moveAndSlideOf(const PreparedMap<T>& map, const MoveInput<T>& inpu
     r.status = s.status == Status::Blocked ? MoveStatus::Blocked : MoveStatus::Moved;
     r.contactCount = s.contactCount;
     r.startOverlapCount = s.startOverlapCount;
-    // maxContacts proves contactCount <= bound <= bufferCapacity; the min keeps a broken proof
-    // from reading past the buffer (tests/mover_test.cpp would catch it first).
-    const std::int32_t stored = s.contactCount < bufferCapacity ? s.contactCount : bufferCapacity;
-    for (std::int32_t k = 0; k < stored; ++k) {
-        const Normal n = buffer[k].normal;
-        if (n.x != 0) {
-            r.blockedX = true;
-            r.onWall = true;
-            r.wallNormalX = n.x;
-        }
-        if (n.y != 0) r.blockedY = true;
-        if (n.y < 0) r.onGround = true;
-        if (n.y > 0) r.onCeiling = true;
-    }
-    if (buffer == local && contacts != nullptr && s.contactCount <= capacity)
+    // Every contact of an axis has the normal against that axis's motion (a frame moves one way
+    // on each axis), so the blocked axes and the motion's signs give every flag.
+    const Vec2<T> d = input.displacement;
+    r.blockedX = s.blockedX;
+    r.blockedY = s.blockedY;
+    r.onWall = s.blockedX;
+    r.wallNormalX = static_cast<std::int8_t>(s.blockedX ? (d.x > 0 ? -1 : 1) : 0);
+    r.onGround = s.blockedY && d.y > 0;
+    r.onCeiling = s.blockedY && d.y < 0;
+    r.clippedDisplacement = {s.blockedX ? T(0) : d.x, s.blockedY ? T(0) : d.y};
+    if (direct) {
+        r.contactsStored = s.contactCount <= capacity;  // always: maxContacts proves it
+#if defined(TILESWEEP_FAULT_INLINE_LIMIT_EXCLUSIVE)  // deliberate fault: exactly the inline limit is not copied
+    } else if (contacts != nullptr && s.contactCount <= capacity && s.contactCount < kInlineContacts) {
+#else
+    } else if (contacts != nullptr && s.contactCount <= capacity && s.contactCount <= kInlineContacts) {
+#endif
         for (std::int32_t k = 0; k < s.contactCount; ++k) contacts[k] = local[k];
+        r.contactsStored = true;
+    }
     return r;
 }
 

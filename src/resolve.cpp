@@ -163,6 +163,8 @@ public:
         if (first.any) {
             finishStep(first);
             total = first.count;
+            result.blockedX = first.axisHit[0];
+            result.blockedY = first.axisHit[1];
             for (int a = 0; a < 2; ++a)
                 if (first.axisHit[a]) finalPos[a] = first.touch[a];
             const int free = first.axisHit[0] ? 1 : 0;
@@ -176,6 +178,8 @@ public:
                     finishStep(second);
                     total += second.count;
                     finalPos[free] = second.touch[free];
+                    (free == 0 ? result.blockedX : result.blockedY) =
+                        true;  // a second step moves on `free` alone
                 }
             }
         }
@@ -487,5 +491,13 @@ template SweepResult<float> resolveMove<float>(const SweepInput<float>&,
                                                const ResolveOutput<float>&) noexcept;
 template SweepResult<double> resolveMove<double>(const SweepInput<double>&,
                                                  const ResolveOutput<double>&) noexcept;
+
+SweepResult<float> resolveMove(const SweepInput<float>& input, const ResolveOutput<float>& output) noexcept {
+    return resolveMove<float>(input, output);
+}
+SweepResult<double> resolveMove(const SweepInput<double>& input,
+                                const ResolveOutput<double>& output) noexcept {
+    return resolveMove<double>(input, output);
+}
 
 }  // namespace tilesweep

@@ -54,6 +54,8 @@ MapError validateTileMap(const TileMapView<T>& map, std::int64_t* firstBadEdge) 
         if (firstBadEdge != nullptr) *firstBadEdge = badY;
         return MapError::UnrepresentableEdgeY;
     }
+    // Last, so that a bad map reports its own error first; src/arithmetic_check.cpp says why.
+    if (!isArithmeticExact()) return MapError::InexactArithmetic;
     return MapError::None;
 }
 
@@ -73,6 +75,11 @@ const char* describe(MapError error) noexcept {
             return "map.tile: a tile edge on x is not representable";
         case MapError::UnrepresentableEdgeY:
             return "map.tile: a tile edge on y is not representable";
+        case MapError::NotPrepared:
+            return "map: not prepared (a default-constructed PreparedMap; use prepareMap)";
+        case MapError::InexactArithmetic:
+            return "arithmetic: the floating-point environment is not exact (rounding mode not to "
+                   "nearest, fused multiply-add or excess precision); the library refuses every map";
     }
     return "unknown map error";
 }

@@ -99,11 +99,15 @@ TYPED_TEST(Mover, badInputIsRefusedNotResolved) {
     EXPECT_EQ(refused.error(), MapError::NonPositiveTileSize);
     EXPECT_EQ(moveAndSlide(refused, {{{0, 0}, {4, 4}}, {1, 0}}).status, MoveStatus::InvalidInput);
     EXPECT_EQ(moveAndSlide(PreparedMap<T>{}, {{{0, 0}, {4, 4}}, {1, 0}}).status, MoveStatus::InvalidInput);
+    EXPECT_EQ(PreparedMap<T>{}.error(), MapError::NotPrepared);
+    EXPECT_STREQ(describe(MapError::NotPrepared),
+                 "map: not prepared (a default-constructed PreparedMap; use prepareMap)");
 }
 
 // A box 100 tiles wide has maxContacts 104 + 3 > kInlineContacts: with no buffer the frame is
-// refused, with one of maxContacts entries it lands on all 101 floor tiles it spans.
-TYPED_TEST(Mover, wideBoxNeedsABufferOfMaxContacts) {
+// still resolved, flags and all, with no contacts stored; with a buffer of maxContacts entries
+// it stores all 101 floor tiles it lands on.
+TYPED_TEST(Mover, wideBoxGetsItsFlagsWithoutABuffer) {
     using T = TypeParam;
     std::vector<std::string> rows{std::string(120, '.'), std::string(120, '#')};
     test::Level<T> level(rows);
@@ -111,16 +115,52 @@ TYPED_TEST(Mover, wideBoxNeedsABufferOfMaxContacts) {
     const MoveInput<T> in{{{8, 0}, {1600, 8}}, {0, 16}};
     const std::int32_t bound = maxContacts(in.box.size, level.view().tileSize);
     EXPECT_EQ(bound, 102 + 2);
-    const MoveResult<T> refused = moveAndSlide(map, in);
-    EXPECT_EQ(refused.status, MoveStatus::ContactBufferTooSmall);
-    EXPECT_EQ(refused.contactCount, bound);
-    EXPECT_EQ(refused.position, in.box.pos);
+    const MoveResult<T> bare = moveAndSlide(map, in);
+    EXPECT_EQ(bare.status, MoveStatus::Blocked);
+    EXPECT_EQ(bare.contactCount, 101);
+    EXPECT_FALSE(bare.contactsStored);
+    EXPECT_TRUE(bare.onGround && bare.blockedY && !bare.onWall && !bare.onCeiling);
+    EXPECT_EQ(bare.position.y, T(8));
+    std::vector<Contact<T>> shortBuffer(100);
+    const MoveResult<T> cut = moveAndSlide(map, in, shortBuffer.data(), 100);
+    EXPECT_FALSE(cut.contactsStored);
+    EXPECT_EQ(cut.position, bare.position);
     std::vector<Contact<T>> contacts(static_cast<std::size_t>(bound));
     const MoveResult<T> r = moveAndSlide(map, in, contacts.data(), bound);
     EXPECT_EQ(r.status, MoveStatus::Blocked);
     EXPECT_EQ(r.contactCount, 101);
+    EXPECT_TRUE(r.contactsStored);
     EXPECT_TRUE(r.onGround);
     EXPECT_EQ(r.position.y, T(8));
+    EXPECT_EQ(contacts[100].tile, (Cell{100, 1}));
+}
+
+// Jumping into a ceiling while walking into a wall: both blocked components go, clipVelocity
+// zeroes exactly those, and the clipped displacement keeps nothing of them.
+TYPED_TEST(Mover, clipVelocityZeroesWhatPushesIntoTheFacesHit) {
+    using T = TypeParam;
+    // Tile (1, 0) = [16, 32] x [0, 16] above; tile (3, 1) = [48, 64] x [16, 32] to the right.
+    test::Level<T> level({".#..", "...#", "...."});
+    const PreparedMap<T> map = prepareMap(level.view());
+    // A 10x10 box at (20, 20) moving up 8: its top (20) hits the ceiling's bottom (16) at 1/2.
+    const MoveResult<T> up = moveAndSlide(map, {{{20, 20}, {10, 10}}, {0, -8}});
+    EXPECT_TRUE(up.onCeiling && up.blockedY && !up.onGround && !up.onWall);
+    EXPECT_EQ(up.position.y, T(16));
+    EXPECT_EQ(clipVelocity(Vec2<T>{3, -5}, up), (Vec2<T>{3, 0}));
+    EXPECT_EQ(clipVelocity(Vec2<T>{3, 5}, up), (Vec2<T>{3, 5}));  // falling away is kept
+    EXPECT_EQ(up.clippedDisplacement, (Vec2<T>{0, 0}));
+    // Moving right 12 and down 2 from (30, 18) (right edge 40): the wall at 48 stops x at 2/3.
+    const MoveResult<T> right = moveAndSlide(map, {{{30, 18}, {10, 10}}, {12, 2}});
+    EXPECT_TRUE(right.onWall && right.blockedX && !right.blockedY);
+    EXPECT_EQ(right.wallNormalX, -1);
+    EXPECT_EQ(right.position.x, T(38));
+    EXPECT_EQ(right.clippedDisplacement, (Vec2<T>{0, 2}));
+    EXPECT_EQ(clipVelocity(Vec2<T>{6, 1}, right), (Vec2<T>{0, 1}));
+    EXPECT_EQ(clipVelocity(Vec2<T>{-6, 1}, right), (Vec2<T>{-6, 1}));  // walking away is kept
+    const MoveResult<T> free = moveAndSlide(map, {{{0, 34}, {4, 4}}, {3, 1}});
+    EXPECT_EQ(free.status, MoveStatus::Moved);
+    EXPECT_EQ(free.clippedDisplacement, (Vec2<T>{3, 1}));
+    EXPECT_EQ(clipVelocity(Vec2<T>{6, 1}, free), (Vec2<T>{6, 1}));
 }
 
 TEST(Mover, maxContactsOfInvalidSizesIsZero) {
@@ -171,23 +211,30 @@ void expectSameAsResolveMove(const test::RandomScene<T>& scene, std::uint64_t ca
     EXPECT_EQ(r.blockedX, wall) << where;
     EXPECT_EQ(r.blockedY, ground || ceiling) << where;
 
-    // With no buffer, and with a buffer one short of the count: same flags, nothing stored in
-    // the short one (never half-filled).
+    // The solver's blocked axes are those of the contacts' normals.
+    EXPECT_EQ(s.blockedX, wall) << where;
+    EXPECT_EQ(s.blockedY, ground || ceiling) << where;
+    EXPECT_TRUE(r.contactsStored) << where;
+    EXPECT_EQ(r.wallNormalX, wall ? static_cast<std::int8_t>(scene.move.x > 0 ? -1 : 1) : 0) << where;
+
+    // With no buffer, and with a buffer one short of the count: the same frame and flags for a
+    // box of any size, nothing stored in the short one (never half-filled).
     const MoveResult<T> bare = moveAndSlide(map, {scene.box, scene.move});
-    if (bound <= kInlineContacts) {
-        EXPECT_EQ(std::memcmp(&bare.position, &r.position, sizeof r.position), 0) << where;
-        EXPECT_EQ(bare.onGround, r.onGround) << where;
-        EXPECT_EQ(bare.onWall, r.onWall) << where;
-        EXPECT_EQ(bare.contactCount, r.contactCount) << where;
-    } else {
-        EXPECT_EQ(bare.status, MoveStatus::ContactBufferTooSmall) << where;
-    }
-    if (s.contactCount > 0 && bound <= kInlineContacts) {
+    EXPECT_EQ(bare.status, r.status) << where;
+    EXPECT_EQ(std::memcmp(&bare.position, &r.position, sizeof r.position), 0) << where;
+    EXPECT_EQ(bare.onGround, r.onGround) << where;
+    EXPECT_EQ(bare.onCeiling, r.onCeiling) << where;
+    EXPECT_EQ(bare.onWall, r.onWall) << where;
+    EXPECT_EQ(bare.wallNormalX, r.wallNormalX) << where;
+    EXPECT_EQ(bare.contactCount, r.contactCount) << where;
+    EXPECT_FALSE(bare.contactsStored) << where;
+    if (s.contactCount > 0) {
         std::vector<Contact<T>> shortBuffer(static_cast<std::size_t>(s.contactCount));
         for (auto& c : shortBuffer) c.tile = {-7, -7};
         const MoveResult<T> cut =
             moveAndSlide(map, {scene.box, scene.move}, shortBuffer.data(), s.contactCount - 1);
         EXPECT_EQ(cut.contactCount, s.contactCount) << where;
+        EXPECT_FALSE(cut.contactsStored) << where;
         for (const auto& c : shortBuffer) EXPECT_EQ(c.tile, (Cell{-7, -7})) << where << " half-filled";
     }
 }

@@ -7,7 +7,8 @@
 --   luajit main.lua path/to/libtilesweep_c.so [path/to/platformer]
 --
 -- The FFI declarations are read from include/tilesweep/tilesweep.h itself (preprocessor lines
--- dropped), so the script and the header cannot drift apart.
+-- dropped, and the export and deprecation macros), so the script and the header cannot drift
+-- apart. It checks that the library loaded is the version of the header it read.
 local ffi = require("ffi")
 
 local script_dir = (arg and arg[0] or ""):match("^(.*)[/\\]") or "."
@@ -17,20 +18,33 @@ local platformer_path = arg and arg[2]
 local function declarations(path)
     local text = assert(io.open(path, "r"), "cannot open " .. path):read("*a")
     text = text:gsub("/%*.-%*/", "")
-    local kept, skipping = {}, false
+    local kept, skipping, continued = {}, false, false
     for line in (text .. "\n"):gmatch("([^\n]*)\n") do
+        local directive = continued or line:match("^%s*#") ~= nil
+        continued = directive and line:match("\\%s*$") ~= nil  -- a directive continued on the next line
         if line:match("^#ifdef __cplusplus") then
             skipping = true
         elseif skipping then
             if line:match("^#endif") then skipping = false end
-        elseif not line:match("^%s*#") then
-            kept[#kept + 1] = (line:gsub("TILESWEEP_EXPORT ", ""))
+        elseif not directive then
+            line = line:gsub("TILESWEEP_EXPORT ", ""):gsub("%s*TILESWEEP_DEPRECATED%b()", "")
+            kept[#kept + 1] = line
         end
     end
     return table.concat(kept, "\n")
 end
-ffi.cdef(declarations(script_dir .. "/../../include/tilesweep/tilesweep.h"))
+local header = script_dir .. "/../../include/tilesweep/tilesweep.h"
+ffi.cdef(declarations(header))
 local ts = ffi.load(library_path)
+
+-- The library must be the version of the header its declarations came from.
+do
+    local text = assert(io.open(header, "r")):read("*a")
+    local function part(name) return tonumber(text:match("#define TILESWEEP_VERSION_" .. name .. " (%d+)")) end
+    local expected = part("MAJOR") * 10000 + part("MINOR") * 100 + part("PATCH")
+    local loaded = tonumber(ts.ts_get_version())
+    if loaded ~= expected then error(string.format("library version %d, header %d", loaded, expected)) end
+end
 
 local function check(code, what)
     if code ~= ts.TS_OK then error(what .. ": " .. ffi.string(ts.ts_error_message(code))) end

@@ -127,8 +127,7 @@ int runPlatformer(const char* svgPath) {
         const auto r = tilesweep::moveAndSlide(map, {player.box, player.velocity * kDt});
         trace.push_back({player, r});  // the frame's start and its result
         player.box.pos = r.position;
-        if (r.onGround || r.onCeiling) player.velocity.y = 0;
-        if (r.onWall) player.velocity.x = 0;
+        player.velocity = tilesweep::clipVelocity(player.velocity, r);  // floors, ceilings, walls
     }
     // [readme:end]
     std::printf("# frame x y vx vy flags (G ground, W wall, C ceiling): the position at the end\n");

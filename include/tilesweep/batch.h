@@ -16,9 +16,13 @@
 // byte scan over those cells, before any exact work. A batch allocates nothing: the pool's
 // threads are made when the pool is, and the caller owns the inputs and the results.
 //
-// Usage, every frame:
+// A game with its own job system runs the batch on it instead: a TaskSystem hands the batch's
+// ranges to the game's workers (Box2D's enqueueTask/finishTask), and the results are the same
+// bit for bit. BatchPool, the built-in pool, stays the default.
 //
-//     tilesweep::BatchPool pool(2);                          // once: the caller + 1 worker
+// Usage, every frame (tests/header_recipes_test.cpp runs it as written):
+//
+//     tilesweep::BatchPool pool(2);  // once: the caller + 1 worker
 //     tilesweep::moveAndSlideBatch(map, inputs.data(), results.data(), inputs.size(), &pool);
 
 namespace tilesweep {
@@ -50,14 +54,37 @@ private:
     State* state_;
 };
 
+/// A game's job system, for running batches on it (in the spirit of Box2D's enqueueTask and
+/// finishTask callbacks). A batch calls enqueue once, then finish once with what enqueue
+/// returned, and returns after finish; nothing is allocated by the library.
+struct TaskSystem {
+    /// A range of a batch's work: items [begin, end), on any thread.
+    using Task = void (*)(std::size_t begin, std::size_t end, void* taskContext);
+    /// Runs task(begin, end, taskContext) over disjoint ranges covering [0, itemCount), each at
+    /// least minRange items long (but the last), on any threads, the calling one included;
+    /// returns a handle for finish, or null when it has already run every range.
+    void* (*enqueue)(Task task, std::size_t itemCount, std::size_t minRange, void* taskContext,
+                     void* userContext) = nullptr;
+    /// Waits until every range of the task that enqueue returned as `userTask` has run.
+    void (*finish)(void* userTask, void* userContext) = nullptr;
+    void* userContext = nullptr;  ///< passed to both
+};
+
 /// Resolves inputs[k] into results[k] for k < count, each exactly as moveAndSlide(map,
-/// inputs[k]) with no contact buffer (so a box wider than kInlineContacts allows gets
-/// MoveStatus::ContactBufferTooSmall; use moveAndSlide with a buffer for it). `pool` null runs
-/// on the calling thread. Inputs and results must not overlap.
+/// inputs[k]) with no contact buffer (flags, positions and counts; no contacts). `pool` null
+/// runs on the calling thread. Inputs and results must not overlap.
 void moveAndSlideBatch(const PreparedMap<float>& map, const MoveInput<float>* inputs,
                        MoveResult<float>* results, std::size_t count, BatchPool* pool = nullptr) noexcept;
 /// The same in double.
 void moveAndSlideBatch(const PreparedMap<double>& map, const MoveInput<double>* inputs,
                        MoveResult<double>* results, std::size_t count, BatchPool* pool = nullptr) noexcept;
+
+/// The same batch on a game's job system: the same results, bit for bit. A TaskSystem without
+/// enqueue runs on the calling thread.
+void moveAndSlideBatch(const PreparedMap<float>& map, const MoveInput<float>* inputs,
+                       MoveResult<float>* results, std::size_t count, const TaskSystem& tasks) noexcept;
+/// The same in double.
+void moveAndSlideBatch(const PreparedMap<double>& map, const MoveInput<double>* inputs,
+                       MoveResult<double>* results, std::size_t count, const TaskSystem& tasks) noexcept;
 
 }  // namespace tilesweep

@@ -11,22 +11,31 @@
 //
 // It is the same resolver as resolveMove (resolve.h), bit for bit: same position, same
 // contacts in the same order. What it adds is what a game loop asks every frame: plain float
-// and double overloads (no template arguments at call sites), a result that says what happened
-// at a glance (blocked axes, on ground / on a wall / on a ceiling), and contact storage that is
-// never left half-filled: a frame's contacts are stored all, or (when the buffer is too small)
-// none, and a buffer of maxContacts(box size, tile size) entries is never too small. y grows
-// downward, so landing on a floor is the normal (0, -1).
+// and double overloads (no template arguments at call sites), and a result that says what
+// happened at a glance: the blocked axes, on ground / on a wall / on a ceiling, and the
+// displacement with the blocked components removed. The flags come from the solver's steps
+// (each step knows its contact axes, and the motion's sign gives the normal), so they are right
+// with or without a contact buffer, for a box of any size. Contacts are optional: a buffer
+// receives a frame's contacts all, or none (contactsStored says which), and a buffer of
+// maxContacts(box size, tile size) entries always receives them.
 //
-// Usage (examples/platformer/platformer.cpp runs this loop):
+// Axes: x grows to the right and y grows downward (screen coordinates), so landing on a floor is
+// the normal (0, -1) and sets onGround; hitting a face above sets onCeiling. A y-up game (y grows
+// upward) that passes its coordinates unchanged gets the same exact results with the names
+// swapped: what it calls the ground is onCeiling here and its ceilings are onGround (the tile
+// grid then runs upward from the origin, row 0 at the bottom). clipVelocity needs no change: it
+// zeroes whatever pushes into a face that was hit, whichever way is up.
 //
-//     auto map = tilesweep::prepareMap(view);          // once per map: validates it
-//     if (!map.isValid()) fail(describe(map.error()));
+// Usage (examples/platformer/platformer.cpp runs this loop; tests/header_recipes_test.cpp runs
+// this recipe as written, and ctest checks it is this text):
+//
+//     auto map = tilesweep::prepareMap(view);  // once per map: validates it
+//     if (!map.isValid()) return fail(tilesweep::describe(map.error()));
 //     // every frame, every mover:
 //     velocity.y += gravity * dt;
 //     auto r = tilesweep::moveAndSlide(map, {player, velocity * dt});
 //     player.pos = r.position;
-//     if (r.onGround) velocity.y = 0;
-//     if (r.onWall) velocity.x = 0;
+//     velocity = tilesweep::clipVelocity(velocity, r);  // stops on floors, ceilings and walls
 
 namespace tilesweep {
 
@@ -36,7 +45,7 @@ namespace tilesweep {
 template <class T>
 class PreparedMap {
 public:
-    /// An empty, invalid map (error() is NegativeDimensions); use prepareMap.
+    /// An empty, invalid map (error() is NotPrepared); use prepareMap.
     PreparedMap() noexcept = default;
 
     /// The map as resolveMove takes it.
@@ -53,7 +62,7 @@ private:
     friend PreparedMap<double> prepareMap(const TileMapView<double>& map) noexcept;
 
     TileMapView<T> view_{};
-    MapError error_ = MapError::NegativeDimensions;
+    MapError error_ = MapError::NotPrepared;
     Vec2<double> inverseTileSize_{0, 0};
 };
 
@@ -71,33 +80,52 @@ struct MoveInput {
 
 /// How a move ended.
 enum class MoveStatus : std::uint8_t {
-    Moved,                  ///< nothing was hit: the box moved the whole way
-    Blocked,                ///< at least one tile was hit: see the flags and contactCount
-    InvalidInput,           ///< non-finite value, size <= 0, or a map that failed prepareMap: nothing moved
-    ContactBufferTooSmall,  ///< a box wider than kInlineContacts allows and a buffer below
-                            ///< maxContacts: nothing moved, contactCount = maxContacts needed
+    Moved,         ///< nothing was hit: the box moved the whole way
+    Blocked,       ///< at least one tile was hit: see the flags and contactCount
+    InvalidInput,  ///< non-finite value, size <= 0, or a map that failed prepareMap: nothing moved
+    /// Never returned since 0.2 (a frame is resolved whatever the buffer; see contactsStored).
+    /// Kept for one release so that code naming it still compiles.
+    ContactBufferTooSmall,
 };
 
-/// What happened to one mover in one frame. The flags come from the normals of every contact of
-/// the frame, whether or not the caller asked for the contacts themselves.
+/// What happened to one mover in one frame. The flags come from the solver's steps, whether or
+/// not the caller asked for the contacts themselves.
 template <class T>
 struct MoveResult {
     Vec2<T> position{};  ///< where the box ends; its start position unless Moved/Blocked
     MoveStatus status = MoveStatus::InvalidInput;
     bool blockedX = false;               ///< a tile stopped the motion on x (same as onWall)
     bool blockedY = false;               ///< a tile stopped the motion on y (onGround or onCeiling)
-    bool onGround = false;               ///< a floor was hit: a contact with normal (0, -1)
+    bool onGround = false;               ///< a floor was hit: a contact with normal (0, -1) (y down)
     bool onCeiling = false;              ///< a ceiling was hit: a contact with normal (0, 1)
     bool onWall = false;                 ///< a wall was hit: a contact with normal (1, 0) or (-1, 0)
     std::int8_t wallNormalX = 0;         ///< the wall's normal on x: 1 (wall on the left), -1 (right), 0
-    std::int32_t contactCount = 0;       ///< tiles hit this frame; all stored iff <= capacity
+    bool contactsStored = false;         ///< the caller's buffer holds all contactCount contacts
+    std::int32_t contactCount = 0;       ///< tiles hit this frame, stored or not
     std::int32_t startOverlapCount = 0;  ///< solid tiles the box overlapped at the start (it may
                                          ///< leave them; they never block)
+    /// The frame's displacement with the blocked components set to zero (b2ClipVector against
+    /// the contact normals): the motion the box still had on the axes it slid along. Exact: each
+    /// component is the input's or zero.
+    Vec2<T> clippedDisplacement{};
 };
 
-/// Contacts the game-loop calls resolve on the stack when the caller's buffer is smaller than
-/// maxContacts: every box whose maxContacts is at most this (any box up to 30 tiles on a side)
-/// gets exact flags with no buffer at all.
+/// `velocity` with the components that push into a face this frame hit set to zero: x when
+/// onWall and it points into the wall, y when onGround and it points down, or onCeiling and it
+/// points up. A game calls it after every move instead of zeroing by hand (a hand-written rule
+/// that forgets onCeiling sticks the player to ceilings).
+template <class T>
+[[nodiscard]] constexpr Vec2<T> clipVelocity(Vec2<T> velocity, const MoveResult<T>& result) noexcept {
+    if ((result.wallNormalX < 0 && velocity.x > 0) || (result.wallNormalX > 0 && velocity.x < 0))
+        velocity.x = 0;
+    if ((result.onGround && velocity.y > 0) || (result.onCeiling && velocity.y < 0)) velocity.y = 0;
+    return velocity;
+}
+
+/// The contacts the game-loop calls resolve into on the stack when the caller's buffer is
+/// smaller than maxContacts, to keep the resolver on its short-move path. A frame with more
+/// contacts than this (a box over 30 tiles on a side) and no buffer of maxContacts entries is
+/// still resolved, flags and all; only its contacts are not stored.
 inline constexpr std::int32_t kInlineContacts = 64;
 
 /// The most contacts one frame can record for a box of this size in tiles of this size:
@@ -118,10 +146,11 @@ inline constexpr std::int32_t kInlineContacts = 64;
 /// The same bound in double.
 [[nodiscard]] std::int32_t maxContacts(Vec2<double> boxSize, Vec2<double> tileSize) noexcept;
 
-/// Resolves one mover's frame (the same position and contacts as resolveMove). When `contacts`
-/// holds at least contactCount entries, they are stored in resolveMove's order (step by step,
-/// then by row, then column); otherwise none are stored. Never throws; invalid input gives
-/// MoveStatus::InvalidInput with the start position.
+/// Resolves one mover's frame (the same position and contacts as resolveMove). `contacts` is
+/// optional: when it holds at least maxContacts entries, or at least contactCount and the frame
+/// has at most kInlineContacts, the contacts are stored in resolveMove's order (step by step,
+/// then by row, then column) and contactsStored is set; otherwise none are stored. Never throws;
+/// invalid input gives MoveStatus::InvalidInput with the start position.
 [[nodiscard]] MoveResult<float> moveAndSlide(const PreparedMap<float>& map, const MoveInput<float>& input,
                                              Contact<float>* contacts = nullptr,
                                              std::int32_t contactCapacity = 0) noexcept;

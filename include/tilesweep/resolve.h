@@ -22,14 +22,17 @@
 // float and double overloads, on-ground and wall flags, contact lists never cut short):
 //
 //     tilesweep::TileMapView<float> map{{0, 0}, {16, 16}, columns, rows, cells};
-//     // once per map: validateTileMap(map) == MapError::None
+//     if (tilesweep::validateTileMap(map) != tilesweep::MapError::None) return;  // once per map
 //     tilesweep::Contact<float> contacts[16];
 //     tilesweep::Cell overlaps[16];
 //     tilesweep::ResolveOutput<float> out{contacts, 16, overlaps, 16};
-//     auto result = tilesweep::resolveMove<float>({map, player, velocity * dt}, out);
+//     auto result = tilesweep::resolveMove({map, player, velocity * dt}, out);
 //     if (result.status != tilesweep::Status::InvalidInput) player.pos = result.position;
+//     bool onGround = result.blockedY && velocity.y > 0;       // y grows downward
 //     for (int k = 0; k < result.contactCount && k < 16; ++k)  // beyond 16: some, unspecified
-//         if (contacts[k].normal.y == -1) onGround = true;
+//         hits.push_back(contacts[k].tile);
+//
+// tests/header_recipes_test.cpp runs this recipe as written (ctest checks it is this text).
 
 namespace tilesweep {
 
@@ -69,6 +72,10 @@ struct SweepResult {
     Vec2<T> position{};                  ///< final box position; the start position on InvalidInput
     std::int32_t contactCount = 0;       ///< contacts in the frame; more than capacity means truncated
     std::int32_t startOverlapCount = 0;  ///< solid cells the box overlapped at the start, likewise
+    bool blockedX = false;               ///< some tile stopped the motion on x (a contact with axis x, normal
+                                         ///< (-sign(displacement.x), 0)); known from the steps, with or
+                                         ///< without a contact buffer
+    bool blockedY = false;               ///< likewise on y: normal (0, -sign(displacement.y))
 };
 
 /// True when the input can be resolved: finite values, box size > 0, map header sane
@@ -81,6 +88,14 @@ template <class T>
 /// Status::InvalidInput with the start position (zero motion) and no lists.
 template <class T>
 [[nodiscard]] SweepResult<T> resolveMove(const SweepInput<T>& input, const ResolveOutput<T>& output) noexcept;
+
+/// resolveMove<float> without the template argument, so that a braced input works:
+/// resolveMove({map, box, displacement}, output).
+[[nodiscard]] SweepResult<float> resolveMove(const SweepInput<float>& input,
+                                             const ResolveOutput<float>& output) noexcept;
+/// resolveMove<double> without the template argument.
+[[nodiscard]] SweepResult<double> resolveMove(const SweepInput<double>& input,
+                                              const ResolveOutput<double>& output) noexcept;
 
 extern template bool isValid<float>(const SweepInput<float>&) noexcept;
 extern template bool isValid<double>(const SweepInput<double>&) noexcept;

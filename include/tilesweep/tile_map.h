@@ -40,13 +40,22 @@ enum class MapError : std::uint8_t {
     TooLarge,              ///< columns*rows exceeds kMaxCells
     UnrepresentableEdgeX,  ///< some origin.x + i*tileSize.x, 0 <= i <= columns, is not a T
     UnrepresentableEdgeY,  ///< some origin.y + j*tileSize.y, 0 <= j <= rows, is not a T
+    InexactArithmetic,     ///< isArithmeticExact() is false here: no map can be resolved exactly
+    NotPrepared,           ///< a default-constructed PreparedMap: no map was given to prepareMap
 };
 
 /// The largest number of cells a map may have (2^31 - 1: a cell index fits an int32).
 inline constexpr std::int64_t kMaxCells = 0x7fffffff;
 
+/// True when the floating-point arithmetic the library runs on is what its exact code needs:
+/// each float and double operation rounded on its own (no fused multiply-add, no excess
+/// precision) and to nearest (the current rounding mode; a game that calls fesetround must
+/// restore FE_TONEAREST before resolving). A few operations, no state: validateTileMap calls it.
+[[nodiscard]] bool isArithmeticExact() noexcept;
+
 /// Checks a map: finite origin, tile sizes > 0, consistent dimensions and every tile edge
-/// exactly representable in T. Runs in O(columns + rows); call it once per map, not per frame.
+/// exactly representable in T, and exact arithmetic (isArithmeticExact). Runs in O(columns +
+/// rows); call it once per map, not per frame.
 /// When the result is an Unrepresentable* error, `firstBadEdge` (if given) receives the
 /// index of the first edge that is not representable.
 template <class T>

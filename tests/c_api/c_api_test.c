@@ -6,6 +6,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static int failures = 0;
@@ -24,7 +25,7 @@ static const uint8_t level[32] = {
 };
 
 static void testFloat(void) {
-    ts_map_desc_f desc = {{0, 0}, {16, 16}, 8, 4, level};
+    ts_map_desc_f desc = {{0, 0}, {16, 16}, 8, 4, level, NULL};
     ts_map_f* map = NULL;
     ts_mover_f mover = {{{4, 30}, {12, 16}}, {0, 8}};
     ts_result_f r;
@@ -37,7 +38,7 @@ static void testFloat(void) {
     CHECK(r.status == TS_MOVE_BLOCKED);
     CHECK(r.position.x == 4.0f && r.position.y == 32.0f);
     CHECK(r.on_ground && r.blocked_y && !r.on_wall && !r.on_ceiling);
-    CHECK(r.contact_count == 1);
+    CHECK(r.contact_count == 1 && r.contacts_stored);
     CHECK(contacts[0].i == 0 && contacts[0].j == 3 && contacts[0].nx == 0 && contacts[0].ny == -1);
     CHECK(contacts[0].time == 0.25f);
     /* Walks right 40 along the floor from x = 60 (right edge 72) into the wall at x = 96:
@@ -49,6 +50,15 @@ static void testFloat(void) {
     CHECK(ts_move_and_slide_f(map, &mover, &r, NULL, 0) == TS_OK);
     CHECK(r.position.x == 84.0f && r.position.y == 32.0f);
     CHECK(r.on_wall && r.wall_normal_x == -1 && r.blocked_x && !r.on_ground);
+    CHECK(r.clipped_displacement.x == 0.0f && r.clipped_displacement.y == 0.0f && !r.contacts_stored);
+    {
+        /* Walking into the wall stops the walk; walking away from it does not. */
+        ts_vec2_f into = {120, 0}, away = {-120, 0}, clipped;
+        clipped = ts_clip_velocity_f(into, &r);
+        CHECK(clipped.x == 0.0f && clipped.y == 0.0f);
+        clipped = ts_clip_velocity_f(away, &r);
+        CHECK(clipped.x == -120.0f);
+    }
     /* The wall removed between frames: the same move goes the whole way. */
     CHECK(ts_map_set_solid_f(map, 6, 2, 0) == TS_OK);
     CHECK(ts_move_and_slide_f(map, &mover, &r, NULL, 0) == TS_OK);
@@ -70,7 +80,7 @@ static void testFloat(void) {
 }
 
 static void testDoubleAndBatch(void) {
-    ts_map_desc_d desc = {{0, 0}, {16, 16}, 8, 4, level};
+    ts_map_desc_d desc = {{0, 0}, {16, 16}, 8, 4, level, NULL};
     ts_map_d* map = NULL;
     ts_pool* pool = NULL;
     ts_mover_d movers[1000];
@@ -104,7 +114,7 @@ static void testDoubleAndBatch(void) {
 static void testWideBox(void) {
     /* A box 100 tiles wide lands on 101 floor tiles: more than the inline contacts. */
     static uint8_t wide[2 * 120];
-    ts_map_desc_f desc = {{0, 0}, {16, 16}, 120, 2, wide};
+    ts_map_desc_f desc = {{0, 0}, {16, 16}, 120, 2, wide, NULL};
     ts_map_f* map = NULL;
     ts_mover_f mover = {{{8, 0}, {1600, 8}}, {0, 16}};
     ts_result_f r;
@@ -115,16 +125,19 @@ static void testWideBox(void) {
     CHECK(ts_map_create_f(&desc, &map) == TS_OK);
     bound = ts_max_contacts_f(mover.box.size, desc.tile_size);
     CHECK(bound == 104);
-    CHECK(ts_move_and_slide_f(map, &mover, &r, NULL, 0) == TS_ERROR_CONTACT_BUFFER_TOO_SMALL);
-    CHECK(r.status == TS_MOVE_CONTACT_BUFFER_TOO_SMALL && r.contact_count == bound && r.position.y == 0.0f);
+    /* No buffer: resolved all the same, flags and all; nothing stored. */
+    CHECK(ts_move_and_slide_f(map, &mover, &r, NULL, 0) == TS_OK);
+    CHECK(r.status == TS_MOVE_BLOCKED && r.contact_count == 101 && r.position.y == 8.0f && r.on_ground);
+    CHECK(!r.contacts_stored && r.clipped_displacement.x == 0.0f && r.clipped_displacement.y == 0.0f);
+    /* A buffer of ts_max_contacts_f entries receives them all. */
     CHECK(ts_move_and_slide_f(map, &mover, &r, contacts, bound) == TS_OK);
-    CHECK(r.contact_count == 101 && r.position.y == 8.0f && r.on_ground);
+    CHECK(r.contact_count == 101 && r.position.y == 8.0f && r.on_ground && r.contacts_stored);
     for (k = 0; k < 101; ++k) CHECK(contacts[k].i == k && contacts[k].j == 1 && contacts[k].ny == -1);
     ts_map_destroy_f(map);
 }
 
 static void testBadMaps(void) {
-    ts_map_desc_f desc = {{0, 0}, {0, 16}, 8, 4, level};
+    ts_map_desc_f desc = {{0, 0}, {0, 16}, 8, 4, level, NULL};
     ts_map_f* map = (ts_map_f*)&desc; /* overwritten with NULL on failure */
     CHECK(ts_map_create_f(&desc, &map) == TS_ERROR_MAP_NON_POSITIVE_TILE_SIZE && map == NULL);
     desc.tile_size.x = 16;
@@ -143,14 +156,138 @@ static void testBadMaps(void) {
     CHECK(ts_map_create_f(&desc, NULL) == TS_ERROR_NULL_ARGUMENT);
     CHECK(ts_max_contacts_f(desc.tile_size, desc.tile_size) > 0);
     {
-        ts_vec2f zero = {0, 1};
+        ts_vec2_f zero = {0, 1};
         CHECK(ts_max_contacts_f(zero, desc.tile_size) == 0);
     }
 }
 
+/* A counting allocator: every block it gives is given back, with the size it was asked for. */
+typedef struct Counts {
+    int live;
+    int allocations;
+    size_t bytes;
+    int refuse; /* nonzero: allocate returns NULL */
+} Counts;
+
+static void* countingAllocate(size_t size, void* user) {
+    Counts* counts = (Counts*)user;
+    if (counts->refuse) return NULL;
+    ++counts->live;
+    ++counts->allocations;
+    counts->bytes += size;
+    return malloc(size);
+}
+
+static void countingRelease(void* memory, size_t size, void* user) {
+    Counts* counts = (Counts*)user;
+    --counts->live;
+    counts->bytes -= size;
+    free(memory);
+}
+
+static void testAllocator(void) {
+    /* The map comes from the allocator (one block), and so does a wide box's scratch list. */
+    static uint8_t wide[2 * 120];
+    Counts counts = {0, 0, 0, 0};
+    ts_allocator allocator = {countingAllocate, countingRelease, NULL};
+    ts_map_desc_f desc = {{0, 0}, {16, 16}, 120, 2, wide, NULL};
+    ts_map_f* map = NULL;
+    ts_map_f* other = NULL;
+    ts_mover_f mover = {{{8, 0}, {1600, 8}}, {0, 16}};
+    ts_result_f r;
+    static ts_contact_f contacts[200];
+    int k;
+    allocator.user = &counts;
+    desc.allocator = &allocator;
+    for (k = 120; k < 240; ++k) wide[k] = 1;
+    CHECK(ts_map_create_f(&desc, &map) == TS_OK);
+    CHECK(counts.live == 1 && counts.allocations == 1 && counts.bytes > 240);
+    CHECK(ts_move_and_slide_f(map, &mover, &r, contacts, 200) == TS_OK);
+    CHECK(r.contact_count == 101 && contacts[100].i == 100 && counts.live == 1 && counts.allocations == 2);
+    counts.refuse = 1;
+    CHECK(ts_move_and_slide_f(map, &mover, &r, contacts, 200) == TS_ERROR_OUT_OF_MEMORY);
+    CHECK(ts_map_create_f(&desc, &other) == TS_ERROR_OUT_OF_MEMORY && other == NULL);
+    counts.refuse = 0;
+    ts_map_destroy_f(map);
+    CHECK(counts.live == 0 && counts.bytes == 0);
+}
+
+static void testRefusedMovesLeaveContactsAlone(void) {
+    /* A refused move stores no contact: the buffer keeps what the caller put in it. */
+    ts_map_desc_f desc = {{0, 0}, {16, 16}, 8, 4, level, NULL};
+    ts_map_f* map = NULL;
+    ts_mover_f mover = {{{4, 30}, {12, 16}}, {NAN, 8}};
+    ts_result_f r;
+    ts_contact_f contacts[4];
+    memset(contacts, 0x5a, sizeof contacts);
+    CHECK(ts_map_create_f(&desc, &map) == TS_OK);
+    CHECK(ts_move_and_slide_f(map, &mover, &r, contacts, 4) == TS_ERROR_INVALID_INPUT);
+    CHECK(contacts[0].i == 0x5a5a5a5a && contacts[0].j == 0x5a5a5a5a);
+    ts_map_destroy_f(map);
+}
+
+/* A job system that runs the ranges it is given last one first, on this thread, and counts the
+ * calls: the batch must not depend on the order its ranges run in. */
+typedef struct Jobs {
+    int enqueued;
+    int finished;
+    size_t ranges;
+} Jobs;
+
+static void* enqueueBackwards(ts_task_fn* task, size_t count, size_t min_range, void* task_context,
+                              void* user) {
+    Jobs* jobs = (Jobs*)user;
+    size_t begin = (count - 1) / min_range * min_range;
+    ++jobs->enqueued;
+    for (;;) {
+        size_t end = count - begin < min_range ? count : begin + min_range;
+        task(begin, end, task_context);
+        ++jobs->ranges;
+        if (begin == 0) break;
+        begin -= min_range;
+    }
+    return jobs;
+}
+
+static void finishJobs(void* user_task, void* user) {
+    Jobs* jobs = (Jobs*)user;
+    if (user_task == user) ++jobs->finished;
+}
+
+static void testTaskSystem(void) {
+    ts_map_desc_f desc = {{0, 0}, {16, 16}, 8, 4, level, NULL};
+    ts_map_f* map = NULL;
+    static ts_mover_f movers[1000];
+    static ts_result_f results[1000];
+    ts_result_f single;
+    Jobs jobs = {0, 0, 0};
+    ts_task_system tasks = {enqueueBackwards, finishJobs, NULL};
+    size_t k;
+    tasks.user_context = &jobs;
+    CHECK(ts_map_create_f(&desc, &map) == TS_OK);
+    for (k = 0; k < 1000; ++k) {
+        ts_mover_f m = {{{(float)(k % 100), (float)(k % 37)}, {10, 10}}, {(float)(k % 13) - 6.5f, 9.25f}};
+        movers[k] = m;
+    }
+    CHECK(ts_move_and_slide_batch_tasks_f(map, movers, results, 1000, &tasks) == TS_OK);
+    CHECK(jobs.enqueued == 1 && jobs.finished == 1 && jobs.ranges > 1);
+    for (k = 0; k < 1000; ++k) {
+        CHECK(ts_move_and_slide_f(map, &movers[k], &single, NULL, 0) == TS_OK);
+        CHECK(memcmp(&single, &results[k], sizeof single) == 0);
+    }
+    CHECK(ts_move_and_slide_batch_tasks_f(map, movers, results, 1000, NULL) == TS_ERROR_NULL_ARGUMENT);
+    ts_map_destroy_f(map);
+}
+
+static void testVersion(void) {
+    CHECK(ts_get_version() == TILESWEEP_VERSION);
+    CHECK(TILESWEEP_VERSION ==
+          TILESWEEP_VERSION_MAJOR * 10000 + TILESWEEP_VERSION_MINOR * 100 + TILESWEEP_VERSION_PATCH);
+}
+
 static void testMessages(void) {
     int code;
-    for (code = 0; code <= 12; ++code) {
+    for (code = 0; code <= 13; ++code) {
         const char* m = ts_error_message(code);
         CHECK(m != NULL && strlen(m) > 0 && strcmp(m, "unknown tilesweep error code") != 0);
     }
@@ -164,6 +301,10 @@ int main(void) {
     testWideBox();
     testBadMaps();
     testMessages();
+    testAllocator();
+    testRefusedMovesLeaveContactsAlone();
+    testVersion();
+    testTaskSystem();
     if (failures != 0) {
         fprintf(stderr, "%d checks failed\n", failures);
         return 1;
