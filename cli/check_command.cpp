@@ -127,7 +127,7 @@ void runRounds(const std::vector<const Property*>& work, int worker, int jobs, c
                        static_cast<std::uint64_t>(shard.index);
             run.cases = options.cases;
             run.shrink = !shrunk[k] && !options.noShrink;
-            run.shrinkSeconds = options.shrinkSeconds >= 0 ? options.shrinkSeconds
+            run.shrinkSeconds = options.shrinkSeconds >= 0    ? options.shrinkSeconds
                                 : options.resolverCmd.empty() ? 0.0
                                                               : kOutsideShrinkSeconds;
             if (run.shrink) run.corpusDir = corpusDirOf(options);  // one regression file a property

@@ -72,7 +72,7 @@ using MapHandle = std::unique_ptr<typename CApi<T>::Map, MapDeleter<T>>;
 
 template <class T>
 typename CApi<T>::Desc descOf(const TileMapView<T>& v) {
-    return {{v.origin.x, v.origin.y}, {v.tileSize.x, v.tileSize.y}, v.columns, v.rows, v.solid};
+    return {{v.origin.x, v.origin.y}, {v.tileSize.x, v.tileSize.y}, v.columns, v.rows, v.solid, nullptr};
 }
 
 template <class T>
@@ -148,44 +148,38 @@ std::string checkFrame(const Scene<T>& scene, const PreparedMap<T>& prepared,
         if (std::string why = compareStored(exact.data(), wanted.data(), n); !why.empty())
             return "resolveMove into exactly " + std::to_string(n) + " contacts: " + why;
     }
-    // moveAndSlide into exactly n, exactly the bound, and no buffer.
-    const bool wide = bound > kInlineContacts;
-    const auto expectRefused = [&](const MoveResult<T>& got, const std::string& at) -> std::string {
-        if (got.status != MoveStatus::ContactBufferTooSmall)
-            return at + ": not refused as ContactBufferTooSmall";
-        if (got.contactCount != bound) return at + ": refused without the bound as contactCount";
-        return {};
+    // moveAndSlide into exactly n, exactly the bound, and no buffer. Since 0.2 every call resolves
+    // the frame and sets its flags from the steps, whatever the buffer; the contacts are stored
+    // all or none: into a buffer of the bound directly, otherwise through the inline list of
+    // kInlineContacts when they fit both it and the buffer (contactsStored says which).
+    const auto storedWhen = [&](std::int32_t capacity) {
+        return capacity >= bound || (n <= capacity && n <= kInlineContacts);
     };
     {
         std::vector<Contact<T>> exact(static_cast<std::size_t>(n) + 1);
         const MoveResult<T> got = moveAndSlide(prepared, input, exact.data(), n);
         const std::string at = "moveAndSlide into exactly " + std::to_string(n) + " contacts (bound " +
                                std::to_string(bound) + ")";
-        // A free move never looks at the buffer; otherwise a wide box needs its bound.
-        if (wide && n < bound && got.status == MoveStatus::ContactBufferTooSmall) {
-            if (std::string why = expectRefused(got, at); !why.empty()) return why;
-        } else {
-            if (std::string why = compareMove(got, want, flags); !why.empty()) return at + ": " + why;
+        if (std::string why = compareMove(got, want, flags); !why.empty()) return at + ": " + why;
+        // A free move stores its (no) contacts whatever the buffer.
+        if (n > 0 && got.contactsStored != storedWhen(n)) return at + ": contactsStored is wrong";
+        if (got.contactsStored)
             if (std::string why = compareStored(exact.data(), wanted.data(), n); !why.empty())
                 return at + ": " + why;
-        }
     }
     if (bound <= kLargestBufferTried) {
         std::vector<Contact<T>> full(static_cast<std::size_t>(bound));
         const MoveResult<T> got = moveAndSlide(prepared, input, full.data(), bound);
         const std::string at = "moveAndSlide into exactly maxContacts = " + std::to_string(bound);
         if (std::string why = compareMove(got, want, flags); !why.empty()) return at + ": " + why;
+        if (!got.contactsStored) return at + ": contacts not stored";
         if (std::string why = compareStored(full.data(), wanted.data(), n); !why.empty())
             return at + ": " + why;
     }
     {
         const MoveResult<T> got = moveAndSlide(prepared, input);
         const std::string at = "moveAndSlide with no buffer (bound " + std::to_string(bound) + ")";
-        if (wide && got.status == MoveStatus::ContactBufferTooSmall) {
-            if (std::string why = expectRefused(got, at); !why.empty()) return why;
-        } else if (std::string why = compareMove(got, want, flags); !why.empty()) {
-            return at + ": " + why;
-        }
+        if (std::string why = compareMove(got, want, flags); !why.empty()) return at + ": " + why;
     }
     if (cmap == nullptr) return {};
     // The C API: exactly n, exactly the bound, one below the bound of a wide box.
@@ -207,7 +201,7 @@ std::string checkFrame(const Scene<T>& scene, const PreparedMap<T>& prepared,
         if ((r.on_ground != 0) != flags.onGround || (r.on_wall != 0) != flags.onWall ||
             (r.on_ceiling != 0) != flags.onCeiling || r.wall_normal_x != flags.wallNormalX)
             return at + ": flags differ";
-        for (std::int32_t k = 0; k < n; ++k) {
+        for (std::int32_t k = 0; r.contacts_stored != 0 && k < n; ++k) {
             const Contact<T>& w = wanted[static_cast<std::size_t>(k)];
             const auto& g = b[static_cast<std::size_t>(k)];
             if (g.i != w.tile.i || g.j != w.tile.j || g.nx != w.normal.x || g.ny != w.normal.y ||
@@ -222,27 +216,20 @@ std::string checkFrame(const Scene<T>& scene, const PreparedMap<T>& prepared,
         const std::string at = "ts_move_and_slide into exactly " + std::to_string(n) + " contacts (bound " +
                                std::to_string(bound) + ")";
         const ts_error code = callC(n, buffer, result);
-        if (wide && n < bound && code == TS_ERROR_CONTACT_BUFFER_TOO_SMALL) {
-            if (result.contact_count != bound) return at + ": refused without the bound as contact_count";
-        } else if (std::string why = compareC(code, result, buffer, at); !why.empty()) {
-            return why;
-        }
+        if (n > 0 && (result.contacts_stored != 0) != storedWhen(n)) return at + ": contacts_stored is wrong";
+        if (std::string why = compareC(code, result, buffer, at); !why.empty()) return why;
     }
     if (bound <= kLargestBufferTried) {
         const std::string at = "ts_move_and_slide into exactly ts_max_contacts = " + std::to_string(bound);
         const ts_error code = callC(bound, buffer, result);
+        if (result.contacts_stored == 0) return at + ": contacts not stored";
         if (std::string why = compareC(code, result, buffer, at); !why.empty()) return why;
-        if (wide) {
-            const std::string below =
-                "ts_move_and_slide into one below ts_max_contacts = " + std::to_string(bound);
-            const ts_error short1 = callC(bound - 1, buffer, result);
-            if (short1 == TS_ERROR_CONTACT_BUFFER_TOO_SMALL) {
-                if (result.contact_count != bound || result.status != TS_MOVE_CONTACT_BUFFER_TOO_SMALL)
-                    return below + ": refused without the bound as contact_count";
-            } else if (std::string why = compareC(short1, result, buffer, below); !why.empty()) {
-                return why;  // a free move may pass; anything else must agree
-            }
-        }
+        const std::string below =
+            "ts_move_and_slide into one below ts_max_contacts = " + std::to_string(bound);
+        const ts_error short1 = callC(bound - 1, buffer, result);
+        if (n > 0 && (result.contacts_stored != 0) != storedWhen(bound - 1))
+            return below + ": contacts_stored is wrong";
+        if (std::string why = compareC(short1, result, buffer, below); !why.empty()) return why;
     }
     return {};
 }
@@ -372,10 +359,20 @@ std::string reportsEachCErrorByItsCause(const Scene<T>& scene) {
             const T ty = base.tile_size.y;
             const typename C::Mover w{{{base.origin.x + tx - 70 * tx - tx / 2, base.origin.y}, {70 * tx, ty}},
                                       {tx, T(0)}};
+            // Since 0.2 a short buffer is no error: the frame and its flags come back, the
+            // contacts are stored when they fit (contacts_stored), and with no buffer none are.
             std::vector<typename C::ContactC> buffer(80);
-            check(expect(C::move(wideMap.get(), &w, &result, buffer.data(), 74),
-                         TS_ERROR_CONTACT_BUFFER_TOO_SMALL, "contacts",
-                         "a box 70 tiles wide with 74 entries"));
+            const ts_error code = C::move(wideMap.get(), &w, &result, buffer.data(), 74);
+            if (code != TS_OK || result.on_wall == 0 || result.contacts_stored == 0 ||
+                result.contact_count != 1)
+                check("a box 70 tiles wide with 74 entries: got " + std::to_string(code) + " (" +
+                      ts_error_message(code) + "), on_wall " + std::to_string(result.on_wall) + ", stored " +
+                      std::to_string(result.contacts_stored) +
+                      ", want TS_OK, on the wall, its one contact stored");
+            const ts_error none = C::move(wideMap.get(), &w, &result, nullptr, 0);
+            if (none != TS_OK || result.on_wall == 0 || result.contacts_stored != 0)
+                check("a box 70 tiles wide with no buffer: got " + std::to_string(none) +
+                      ", want TS_OK, on the wall, no contact stored");
         }
     }
     return why;

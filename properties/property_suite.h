@@ -27,8 +27,8 @@ struct RunOptions {
     long long maxCases = 0;
     double shrinkSeconds = 0;  ///< stop shrinking this long after the first failure (keeping the
                                ///< smallest case found so far); 0: no limit
-    bool shrink = true;  ///< false: count instead: every case is judged, the failures counted and the
-                         ///< first one kept unshrunk (later rounds of a property already shrunk)
+    bool shrink = true;        ///< false: count instead: every case is judged, the failures counted and the
+                               ///< first one kept unshrunk (later rounds of a property already shrunk)
 };
 
 /// The least cap on a run's cases when its floors need more than `cases` to settle: enough for

@@ -90,7 +90,8 @@ MoveResult<T> moveAndSlideOf(const PreparedMap<T>& map, const MoveInput<T>& inpu
     r.clippedDisplacement = {s.blockedX ? T(0) : d.x, s.blockedY ? T(0) : d.y};
     if (direct) {
         r.contactsStored = s.contactCount <= capacity;  // always: maxContacts proves it
-#if defined(TILESWEEP_FAULT_INLINE_LIMIT_EXCLUSIVE)  // deliberate fault: exactly the inline limit is not copied
+#if defined(TILESWEEP_FAULT_INLINE_LIMIT_EXCLUSIVE)     // deliberate fault: exactly the inline limit is not
+                                                        // copied
     } else if (contacts != nullptr && s.contactCount <= capacity && s.contactCount < kInlineContacts) {
 #else
     } else if (contacts != nullptr && s.contactCount <= capacity && s.contactCount <= kInlineContacts) {
