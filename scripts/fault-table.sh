@@ -59,8 +59,8 @@ row() { echo "$1" | tee -a "$table"; }
 row "| fault | where | caught by (failing tests) | smallest counterexample | seconds |"
 row "|---|---|---|---|---|"
 for fault in "${faults[@]}"; do
-    where=$(grep -l "TILESWEEP_FAULT_$fault\b" -r "$root/src" "$root/oracle" "$root/cmake" 2>/dev/null |
-        grep -v fault_injection.h | sed "s|$root/||" | sort | tr '\n' ' ')
+    where=$( (grep -l "TILESWEEP_FAULT_$fault\b" -r "$root/src" "$root/oracle" "$root/cmake" 2>/dev/null || true) |
+        (grep -v fault_injection.h || true) | sed "s|$root/||" | sort | tr '\n' ' ')
     build="$out/$fault"
     define=$fault
     if [ -n "$mutants" ]; then
