@@ -59,7 +59,7 @@ row() { echo "$1" | tee -a "$table"; }
 row "| fault | where | caught by (failing tests) | smallest counterexample | seconds |"
 row "|---|---|---|---|---|"
 for fault in "${faults[@]}"; do
-    where=$( (grep -l "TILESWEEP_FAULT_$fault\b" -r "$root/src" "$root/oracle" "$root/cmake" 2>/dev/null || true) |
+    where=$( (grep -lE "TILESWEEP_FAULT_$fault\b|TILESWEEP_FAULT\},$fault>" -r "$root/src" "$root/oracle" "$root/cmake" 2>/dev/null || true) |
         (grep -v fault_injection.h || true) | sed "s|$root/||" | sort | tr '\n' ' ')
     build="$out/$fault"
     define=$fault
