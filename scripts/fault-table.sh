@@ -65,7 +65,10 @@ for fault in "${faults[@]}"; do
     define=$fault
     if [ -n "$mutants" ]; then
         define=""
-        where=$(mutate "$fault")
+        if ! where=$(mutate "$fault" 2>&1); then  # its text changed: the row says so
+            row "| $fault | - | not applied: $where | - | - |"
+            continue
+        fi
         trap 'mutate "$fault" restore >/dev/null; rm -f "$table"' EXIT
     fi
     cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTILESWEEP_FAULT="$define" "${launcher[@]}" \
