@@ -36,11 +36,17 @@ for line in open(os.path.join(root, "scripts/mutants.txt")):
     if line.startswith("#") or len(parts) != 4 or parts[0] != name:
         continue
     path = os.path.join(root, parts[1])
+    kept = path + ".before-mutant"  # the file as it was, put back whole on restore
+    if mode == "restore":
+        if os.path.exists(kept):
+            os.replace(kept, path)
+        print(parts[1])
+        break
     text = open(path).read()
-    before, after = (parts[2], parts[3]) if mode == "apply" else (parts[3], parts[2])
-    if text.count(before) != 1:
-        sys.exit(f"mutant {name}: the text occurs {text.count(before)} times in {parts[1]}")
-    open(path, "w").write(text.replace(before, after))
+    if text.count(parts[2]) != 1:
+        sys.exit(f"mutant {name}: the text occurs {text.count(parts[2])} times in {parts[1]}")
+    open(kept, "w").write(text)
+    open(path, "w").write(text.replace(parts[2], parts[3]))
     print(parts[1])
     break
 else:
