@@ -4,6 +4,7 @@
 // budget, and a floor the generator cannot reach is insufficient coverage, not a failed claim.
 #include "coverage_judgement.h"
 #include "property_suite.h"
+#include "scene_runner.h"
 
 #include <gtest/gtest.h>
 
@@ -70,6 +71,44 @@ TEST(CoverageFloors, aFloorNearTheTrueShareDrawsMoreCasesButNeverFails) {
     EXPECT_TRUE(o.coverageShortfall.empty()) << o.coverageShortfall;
     EXPECT_GT(o.cases, 50);  // 50 cases cannot settle a floor of 12% at 1e-9
     EXPECT_LE(o.cases, 3200);
+}
+
+/// An outside resolver that never moves and never hits anything.
+class StandStillRunner final : public SceneRunner<float> {
+public:
+    std::vector<std::vector<FrameResult<float>>> runAll(
+        const std::vector<const Scene<float>*>& scenes) override {
+        std::vector<std::vector<FrameResult<float>>> out;
+        for (const Scene<float>* scene : scenes) {
+            std::vector<FrameResult<float>> frames(scene->moves.size());
+            for (FrameResult<float>& f : frames) f.position = scene->box.pos;
+            out.push_back(frames);
+        }
+        return out;
+    }
+    std::string answerText(const Scene<float>&) override { return "{}"; }
+    std::string name() const override { return "stand-still"; }
+};
+
+TEST(CoverageFloors, tagsNeverComeFromTheResolverUnderTest) {
+    // A claim the resolver does not enter (the reference against substeps), so it holds with
+    // either runner; the cases are the same (same seed), and so must be their tags: a resolver
+    // that never hits anything cannot lower the share of 'hit'.
+    const Property p =
+        makeProperty("referenceAgrees", "exactReferenceAgreesWithSubsteps", "float", "mixed", {{"hit", 0.2}});
+    RunOptions options;
+    options.cases = 200;
+    const PropertyOutcome builtIn = p.run(options);
+    StandStillRunner standStill;
+    PropertyOutcome outside;
+    {
+        const ScopedSceneRunner<float> use(standStill);
+        outside = p.run(options);
+    }
+    EXPECT_TRUE(builtIn.passed && outside.passed) << builtIn.message << outside.message;
+    EXPECT_GT(builtIn.tagCounts.at("hit"), 0);
+    EXPECT_EQ(outside.tagCounts, builtIn.tagCounts);
+    EXPECT_EQ(outside.coverageShortfall, builtIn.coverageShortfall);
 }
 
 /// The whole suite, tilesweep's own resolver, at `cases` a property: every claim holds and every

@@ -36,11 +36,17 @@ for line in open(os.path.join(root, "scripts/mutants.txt")):
     if line.startswith("#") or len(parts) != 4 or parts[0] != name:
         continue
     path = os.path.join(root, parts[1])
+    kept = path + ".before-mutant"  # the file as it was, put back whole on restore
+    if mode == "restore":
+        if os.path.exists(kept):
+            os.replace(kept, path)
+        print(parts[1])
+        break
     text = open(path).read()
-    before, after = (parts[2], parts[3]) if mode == "apply" else (parts[3], parts[2])
-    if text.count(before) != 1:
-        sys.exit(f"mutant {name}: the text occurs {text.count(before)} times in {parts[1]}")
-    open(path, "w").write(text.replace(before, after))
+    if text.count(parts[2]) != 1:
+        sys.exit(f"mutant {name}: the text occurs {text.count(parts[2])} times in {parts[1]}")
+    open(kept, "w").write(text)
+    open(path, "w").write(text.replace(parts[2], parts[3]))
     print(parts[1])
     break
 else:
@@ -59,13 +65,16 @@ row() { echo "$1" | tee -a "$table"; }
 row "| fault | where | caught by (failing tests) | smallest counterexample | seconds |"
 row "|---|---|---|---|---|"
 for fault in "${faults[@]}"; do
-    where=$(grep -l "TILESWEEP_FAULT_$fault\b" -r "$root/src" "$root/oracle" "$root/cmake" 2>/dev/null |
-        grep -v fault_injection.h | sed "s|$root/||" | sort | tr '\n' ' ')
+    where=$( (grep -lE "TILESWEEP_FAULT_$fault\b|TILESWEEP_FAULT\},$fault>" -r "$root/src" "$root/oracle" "$root/cmake" 2>/dev/null || true) |
+        (grep -v fault_injection.h || true) | sed "s|$root/||" | sort | tr '\n' ' ')
     build="$out/$fault"
     define=$fault
     if [ -n "$mutants" ]; then
         define=""
-        where=$(mutate "$fault")
+        if ! where=$(mutate "$fault" 2>&1); then  # its text changed: the row says so
+            row "| $fault | - | not applied: $where | - | - |"
+            continue
+        fi
         trap 'mutate "$fault" restore >/dev/null; rm -f "$table"' EXIT
     fi
     cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTILESWEEP_FAULT="$define" "${launcher[@]}" \
