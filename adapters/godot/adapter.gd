@@ -1,0 +1,463 @@
+# SPDX-License-Identifier: MIT
+# Godot 3 (Physics2DServer, GDScript, headless) behind tilesweep's resolver protocol, in file
+# mode: reads the scene lines of IN, writes one answer line per scene to OUT, in order, each
+# flushed to the file before the next scene is read. Written the way a Godot user writes a tile
+# platformer's mover, not tuned to the contract:
+#
+#   - the map is built as TileMap builds it: per solid cell a static body at the cell's top-left
+#     corner holding one RectangleShape2D of the tile's half size, offset by that half size;
+#   - the box is a kinematic body built the same way (origin at its top-left corner);
+#   - per frame, what move_and_slide does with two slides at most: body_test_motion (what
+#     move_and_collide calls) with Godot's default safe margin 0.08, the body moved by the
+#     returned motion, the remainder slid along the collision normal and tried again;
+#   - each collision is a contact: the tile from the collider's body, the normal the dominant
+#     axis of collision_normal, t the fraction of the frame elapsed at the hit;
+#   - started_overlapping is computed from the map by the contract's definition (interiors
+#     intersect), since Godot counts touching as overlapping.
+#
+#     godot3-server --no-window -s adapter.gd IN OUT       (run.sh does this)
+extends SceneTree
+
+# Godot's default safe margin (KinematicBody2D.collision/safe_margin), in pixels.
+const SAFE_MARGIN = 0.08
+# Godot's 2D broad phase (BroadPhase2DHashGrid, physics/2d/cell_size) walks every cell of a
+# query's bounds, and turns them to int32 cells first. A move whose bounds leave the int32 range
+# of cells, or cover more cells than this, would stall Godot for minutes or forever (the issue's
+# move of (-1.8e17, -6.4e37)): the adapter refuses it, as a game would refuse such a speed.
+const BROADPHASE_CELL = 128.0
+const MAX_BROADPHASE_CELLS = 1 << 22
+
+var ps = Physics2DServer
+var space
+var tile_shape
+var box_body
+var box_shape
+var owner_ref = Reference.new()  # bodies need an object instance id (intersect_shape crashes without)
+var motion_result = Physics2DTestMotionResult.new()
+var bits_buffer = StreamPeerBuffer.new()
+
+var pool = []            # static bodies, one per solid cell of the current scene (first `active`)
+var active = 0
+var pool_index_of = {}   # body RID id -> index in pool
+var cell_of = []         # pool index -> [i, j] for the current scene
+var tile_half = Vector2(-1, -1)
+var box_half = Vector2(-1, -1)
+
+var error = ""           # set by the readers: "field: problem"
+var hex_cache = {}       # hexfloat text -> its float32 value
+
+
+func _init():
+	var args = OS.get_cmdline_args()
+	if args.size() < 2:
+		printerr("usage: godot3-server --no-window -s adapter.gd IN OUT")
+		quit(2)
+		return
+	space = ps.space_create()
+	tile_shape = ps.rectangle_shape_create()
+	box_shape = ps.rectangle_shape_create()
+	box_body = ps.body_create()
+	ps.body_set_mode(box_body, Physics2DServer.BODY_MODE_KINEMATIC)
+	ps.body_add_shape(box_body, box_shape)
+	ps.body_attach_object_instance_id(box_body, owner_ref.get_instance_id())
+	ps.body_set_space(box_body, space)
+	quit(answer_file(args[args.size() - 2], args[args.size() - 1]))
+
+
+func answer_file(in_path, out_path):
+	var input = File.new()
+	if input.open(in_path, File.READ) != OK:
+		printerr("godot adapter: cannot read ", in_path)
+		return 2
+	var output = File.new()
+	if output.open(out_path, File.WRITE) != OK:
+		printerr("godot adapter: cannot write ", out_path)
+		return 2
+	while not input.eof_reached():
+		var line = input.get_line()
+		if line.strip_edges() == "":
+			continue
+		output.store_string(answer(line) + "\n")
+		# File has no flush in Godot 3.2: closing and reopening puts the line on disk, so that a
+		# crash or a hang later in the batch still leaves the answers so far.
+		output.close()
+		output.open(out_path, File.READ_WRITE)
+		output.seek_end()
+	output.close()
+	input.close()
+	return 0
+
+
+# ---- reading a scene --------------------------------------------------------------------------
+
+func fail(field, problem):
+	if error == "":
+		error = field + ": " + problem
+	return 0.0
+
+
+# The float32 value nearest the exact value of a JSON number or a hexfloat string ("0x1.8p+3").
+func read_scalar(value, field):
+	var result
+	if typeof(value) == TYPE_REAL or typeof(value) == TYPE_INT:
+		result = Vector2(value, 0).x  # Godot's JSON gives a double; Vector2 rounds it to float32
+	elif typeof(value) == TYPE_STRING:
+		if hex_cache.has(value):
+			return hex_cache[value]
+		result = read_hexfloat(value, field)
+		if error != "":
+			return 0.0
+		hex_cache[value] = result
+	else:
+		return fail(field, "expected a number or a hexfloat string")
+	if is_nan(result) or is_inf(result):
+		return fail(field, "non-finite value (or past the largest float)")
+	return result
+
+
+const HEX_DIGITS = "0123456789abcdef"
+
+# Exact: the significant hex digits go into an integer (the first 13, 52 bits, with one sticky
+# bit below them for any nonzero digit after), so mantissa * 2^exponent is an exact double, and
+# converting it to float32 is the one rounding, to nearest.
+func read_hexfloat(text, field):
+	var s = text.to_lower()
+	var negative = s.begins_with("-")
+	if negative:
+		s = s.substr(1, s.length() - 1)
+	var p = s.find("p")
+	if not s.begins_with("0x") or p < 0 or p == s.length() - 1:
+		return fail(field, "expected a number or a hexfloat string like \"0x1.8p+3\", got '" + text.left(40) + "'")
+	var exponent_text = s.substr(p + 1, s.length() - p - 1)
+	var exponent_digits = exponent_text.trim_prefix("+").trim_prefix("-")
+	if exponent_digits == "" or not exponent_digits.is_valid_integer() or exponent_digits.length() > 6:
+		return fail(field, "bad exponent in '" + text.left(40) + "'")
+	var exponent = int(exponent_text)
+	var mantissa = 0
+	var significant = 0   # hex digits taken into mantissa, counted from the first nonzero one
+	var sticky = false
+	var seen_point = false
+	var digits = 0
+	for k in range(2, p):
+		var c = s[k]
+		if c == ".":
+			if seen_point:
+				return fail(field, "two points in '" + text.left(40) + "'")
+			seen_point = true
+			continue
+		var d = HEX_DIGITS.find(c)
+		if d < 0:
+			return fail(field, "expected a number or a hexfloat string like \"0x1.8p+3\", got '" + text.left(40) + "'")
+		digits += 1
+		if significant < 13:
+			if mantissa != 0 or d != 0:
+				mantissa = mantissa * 16 + d
+				significant += 1
+			if seen_point:
+				exponent -= 4
+		else:
+			if d != 0:
+				sticky = true
+			if not seen_point:
+				exponent += 4
+	if digits == 0:
+		return fail(field, "no digits in '" + text.left(40) + "'")
+	if sticky:
+		mantissa = mantissa * 2 + 1
+		exponent -= 1
+	var value = 0.0
+	if mantissa != 0:
+		# Far below the smallest float32 it rounds to zero, far above to infinity: keep the
+		# double exact (normal) in between.
+		var top = exponent + 4 * significant
+		if top < -200:
+			value = 0.0
+		elif top > 200:
+			return fail(field, "non-finite value (or past the largest float)")
+		else:
+			value = Vector2(float(mantissa) * pow(2.0, exponent), 0).x
+	return -value if negative else value
+
+
+func read_pair(value, field):
+	if typeof(value) != TYPE_ARRAY or value.size() != 2:
+		fail(field, "expected [a, b]")
+		return Vector2()
+	return Vector2(read_scalar(value[0], field + "[0]"), read_scalar(value[1], field + "[1]"))
+
+
+# The scene as a Dictionary, or null with `error` set.
+func parse_scene(line):
+	var parsed = JSON.parse(line)
+	if parsed.error != OK:
+		fail("scene", "malformed JSON: " + parsed.error_string)
+		return null
+	var root = parsed.result
+	if typeof(root) != TYPE_DICTIONARY:
+		fail("scene", "expected a JSON object")
+		return null
+	if typeof(root.get("map")) != TYPE_DICTIONARY:
+		fail("map", "expected an object with \"origin\", \"tile\" and \"rows\"")
+		return null
+	var map = root["map"]
+	var scene = {}
+	scene.origin = read_pair(map.get("origin"), "map.origin")
+	scene.tile = read_pair(map.get("tile"), "map.tile")
+	if error != "":
+		return null
+	if not (scene.tile.x > 0 and scene.tile.y > 0):
+		fail("map.tile", "tile width and height must be > 0")
+		return null
+	var rows = map.get("rows")
+	if typeof(rows) != TYPE_ARRAY:
+		fail("map.rows", "expected an array of strings")
+		return null
+	scene.rows = rows.size()
+	scene.columns = 0
+	if rows.size() > 0 and typeof(rows[0]) == TYPE_STRING:
+		scene.columns = rows[0].length()
+	var solid = []
+	for j in range(rows.size()):
+		var row = rows[j]
+		if typeof(row) != TYPE_STRING:
+			fail("map.rows[%d]" % j, "expected a string")
+			return null
+		if row.length() != scene.columns:
+			fail("map.rows", "ragged rows (row %d has length %d, row 0 %d)" % [j, row.length(), scene.columns])
+			return null
+		for i in range(scene.columns):
+			var c = row[i]
+			if c == "#":
+				solid.append([i, j])
+			elif c != ".":
+				fail("map.rows[%d]" % j, "unknown tile character '" + c + "' (use '#' or '.')")
+				return null
+	scene.solid = solid  # [i, j] of the solid cells, by row then column
+	# Every tile edge must be a float32 (the contract refuses the map otherwise).
+	for k in range(scene.columns + 1):
+		var edge = scene.origin.x + k * scene.tile.x  # exact in double
+		if Vector2(edge, 0).x != edge:
+			fail("map.tile", "tile edge x = origin + %d * tile is not a float" % k)
+			return null
+	for k in range(scene.rows + 1):
+		var edge = scene.origin.y + k * scene.tile.y
+		if Vector2(edge, 0).x != edge:
+			fail("map.tile", "tile edge y = origin + %d * tile is not a float" % k)
+			return null
+	var box = root.get("box")
+	if typeof(box) != TYPE_ARRAY or box.size() != 4:
+		fail("box", "expected [x, y, w, h]")
+		return null
+	scene.pos = Vector2(read_scalar(box[0], "box[0]"), read_scalar(box[1], "box[1]"))
+	scene.size = Vector2(read_scalar(box[2], "box[2]"), read_scalar(box[3], "box[3]"))
+	if error != "":
+		return null
+	if not (scene.size.x > 0 and scene.size.y > 0):
+		fail("box", "width and height must be > 0")
+		return null
+	var has_move = root.has("move")
+	var has_moves = root.has("moves")
+	if has_move and has_moves:
+		fail("moves", "give either \"move\" or \"moves\", not both")
+		return null
+	scene.moves = []
+	if has_move:
+		scene.moves.append(read_pair(root["move"], "move"))
+	elif not has_moves:
+		fail("move", "missing field (give \"move\": [dx, dy] or \"moves\": [[dx, dy], ...])")
+		return null
+	else:
+		var moves = root["moves"]
+		if typeof(moves) != TYPE_ARRAY:
+			fail("moves", "expected an array of [dx, dy]")
+			return null
+		if moves.size() == 0:
+			fail("moves", "must not be empty")
+			return null
+		for k in range(moves.size()):
+			scene.moves.append(read_pair(moves[k], "moves[%d]" % k))
+	if error != "":
+		return null
+	return scene
+
+
+# ---- the Godot side ---------------------------------------------------------------------------
+
+# One static body per solid cell, as TileMap builds them; bodies are pooled across scenes.
+func place_map(scene):
+	var half = scene.tile / 2
+	if half != tile_half:
+		ps.shape_set_data(tile_shape, half)
+	var count = scene.solid.size()
+	while pool.size() < count:
+		var body = ps.body_create()
+		ps.body_set_mode(body, Physics2DServer.BODY_MODE_STATIC)
+		ps.body_add_shape(body, tile_shape, Transform2D(0, half))
+		ps.body_attach_object_instance_id(body, owner_ref.get_instance_id())
+		pool_index_of[body.get_id()] = pool.size()
+		pool.append(body)
+	for k in range(count):
+		var body = pool[k]
+		if half != tile_half:
+			ps.body_set_shape_transform(body, 0, Transform2D(0, half))
+		var cell = scene.solid[k]
+		var corner = Vector2(scene.origin.x + cell[0] * scene.tile.x, scene.origin.y + cell[1] * scene.tile.y)
+		ps.body_set_state(body, Physics2DServer.BODY_STATE_TRANSFORM, Transform2D(0, corner))
+		if k >= active:
+			ps.body_set_space(body, space)
+	for k in range(count, active):
+		ps.body_set_space(pool[k], RID())
+	if half != tile_half:
+		# Bodies out of the space keep the old offset: set it when they come back.
+		for k in range(count, pool.size()):
+			ps.body_set_shape_transform(pool[k], 0, Transform2D(0, half))
+	tile_half = half
+	active = count
+	cell_of = scene.solid
+
+
+# Would this motion make Godot's broad phase walk an absurd number of cells (see the constant)?
+func motion_too_large(pos, size, motion):
+	var lo_x = min(pos.x, pos.x + motion.x) - SAFE_MARGIN
+	var hi_x = max(pos.x, pos.x + motion.x) + size.x + SAFE_MARGIN
+	var lo_y = min(pos.y, pos.y + motion.y) - SAFE_MARGIN
+	var hi_y = max(pos.y, pos.y + motion.y) + size.y + SAFE_MARGIN
+	var limit = 2147483647.0 * BROADPHASE_CELL
+	if max(max(abs(lo_x), abs(hi_x)), max(abs(lo_y), abs(hi_y))) >= limit:
+		return true
+	var cells = (floor(hi_x / BROADPHASE_CELL) - floor(lo_x / BROADPHASE_CELL) + 1) * (floor(hi_y / BROADPHASE_CELL) - floor(lo_y / BROADPHASE_CELL) + 1)
+	return cells > MAX_BROADPHASE_CELLS
+
+
+# The exact sign of a + b - c, for doubles (TwoSum: a + b = s + e exactly).
+func sign_of_sum_minus(a, b, c):
+	var s = a + b
+	var bb = s - a
+	var e = (a - (s - bb)) + (b - bb)
+	if s != c:
+		return 1 if s > c else -1
+	return 1 if e > 0 else (-1 if e < 0 else 0)
+
+
+# The solid cells whose interior meets the box's (strictly on both axes), by row then column.
+func overlapped_tiles(scene, pos):
+	var cells = []
+	for cell in scene.solid:
+		var left = scene.origin.x + cell[0] * scene.tile.x
+		var top = scene.origin.y + cell[1] * scene.tile.y
+		if pos.x < left + scene.tile.x and sign_of_sum_minus(pos.x, scene.size.x, left) > 0 \
+				and pos.y < top + scene.tile.y and sign_of_sum_minus(pos.y, scene.size.y, top) > 0:
+			cells.append(cell)
+	return cells
+
+
+func run_scene(scene):
+	place_map(scene)
+	var half = scene.size / 2
+	if half != box_half:
+		ps.shape_set_data(box_shape, half)
+		ps.body_set_shape_transform(box_body, 0, Transform2D(0, half))
+		box_half = half
+	var pos = scene.pos
+	var frames = []
+	for move in scene.moves:
+		var frame = {"started": overlapped_tiles(scene, pos), "contacts": []}
+		var motion = move
+		var elapsed = 0.0
+		for slide in range(2):
+			if motion_too_large(pos, scene.size, motion):
+				fail("moves", "godot: a move of (%s, %s) from (%s, %s) is past what Godot's broad phase can take" % [motion.x, motion.y, pos.x, pos.y])
+				return null
+			var from = Transform2D(0, pos)
+			ps.body_set_state(box_body, Physics2DServer.BODY_STATE_TRANSFORM, from)
+			var hit = ps.body_test_motion(box_body, from, motion, true, SAFE_MARGIN, motion_result)
+			pos += motion_result.motion
+			if not hit:
+				break
+			# motion_remainder is (1 - safe) * motion: the fraction done, on the longer axis.
+			var rest = motion_result.motion_remainder
+			var done = 1.0 - (rest.x / motion.x if abs(motion.x) >= abs(motion.y) else rest.y / motion.y)
+			var t = elapsed + done * (1.0 - elapsed)
+			var n = motion_result.collision_normal
+			var normal = [0, -1 if n.y < 0 else 1]
+			if abs(n.x) > abs(n.y):
+				normal = [-1 if n.x < 0 else 1, 0]
+			var index = pool_index_of.get(motion_result.collider_rid.get_id(), -1)
+			if index >= 0 and index < active:
+				frame.contacts.append({"tile": cell_of[index], "normal": normal, "t": Vector2(t, 0).x})
+			elapsed = t
+			motion = rest.slide(n)
+			if motion == Vector2():
+				break
+		frame.pos = pos
+		frames.append(frame)
+	return frames
+
+
+# ---- writing the answer -----------------------------------------------------------------------
+
+func float32_bits(v):
+	bits_buffer.seek(0)
+	bits_buffer.put_float(v)
+	bits_buffer.seek(0)
+	return bits_buffer.get_u32()
+
+
+# A float32 value so that it reads back to the same bits: an integer as an integer, anything
+# else as a hexfloat string built from its bits.
+func format_float(v):
+	var bits = float32_bits(v)
+	var negative = bits >= 0x80000000
+	if v == floor(v) and abs(v) < 16777216.0:
+		if v == 0:
+			return "-0" if negative else "0"
+		return str(int(v))
+	var biased = (bits >> 23) & 0xff
+	var fraction = (bits & 0x7fffff) << 1   # 24 bits: six hex digits
+	var digits = ("%06x" % fraction).rstrip("0")
+	if digits != "":
+		digits = "." + digits
+	var text
+	if biased == 0:
+		text = "0x0" + digits + "p-126"
+	else:
+		var e = biased - 127
+		text = "0x1%sp%s%d" % [digits, "+" if e >= 0 else "-", abs(e)]
+	return "\"" + ("-" if negative else "") + text + "\""
+
+
+func format_frames(frames):
+	var parts = []
+	for frame in frames:
+		var contacts = []
+		for c in frame.contacts:
+			contacts.append("{\"tile\": [%d, %d], \"normal\": [%d, %d], \"t\": %s}" % [c.tile[0], c.tile[1], c.normal[0], c.normal[1], format_float(c.t)])
+		var started = []
+		for cell in frame.started:
+			started.append("[%d, %d]" % [cell[0], cell[1]])
+		parts.append("{\"pos\": [%s, %s], \"contacts\": [%s], \"started_overlapping\": [%s]}" % [format_float(frame.pos.x), format_float(frame.pos.y), join(contacts), join(started)])
+	return "{\"frames\": [" + join(parts) + "]}"
+
+
+func join(items):
+	var out = ""
+	for k in range(items.size()):
+		if k > 0:
+			out += ", "
+		out += items[k]
+	return out
+
+
+func format_error(message):
+	return to_json({"error": message})
+
+
+func answer(line):
+	error = ""
+	var scene = parse_scene(line)
+	if scene == null:
+		return format_error(error)
+	var frames = run_scene(scene)
+	if frames == null:
+		return format_error(error)
+	return format_frames(frames)
