@@ -449,7 +449,7 @@ func join(items):
 
 
 func format_error(message):
-	return to_json({"error": message})
+	return "{\"error\": " + to_json(message) + "}"
 
 
 func answer(line):

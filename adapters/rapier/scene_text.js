@@ -170,7 +170,7 @@ function formatFrames(frames) {
 }
 
 function formatError(message) {
-    return JSON.stringify({error: message});
+    return `{"error": ${JSON.stringify(message)}}`;
 }
 
 // The exact sign of a + b - c for doubles a, b, c (TwoSum: a + b = s + err exactly).
