@@ -20,12 +20,13 @@ extends SceneTree
 
 # Godot's default safe margin (KinematicBody2D.collision/safe_margin), in pixels.
 const SAFE_MARGIN = 0.08
-# Godot's 2D broad phase (BroadPhase2DHashGrid, physics/2d/cell_size) walks every cell of a
-# query's bounds, and turns them to int32 cells first. A move whose bounds leave the int32 range
-# of cells, or cover more cells than this, would stall Godot for minutes or forever (the issue's
-# move of (-1.8e17, -6.4e37)): the adapter refuses it, as a game would refuse such a speed.
+# Godot's 2D broad phase (BroadPhase2DHashGrid, physics/2d/cell_size 128) walks every cell of a
+# query's bounds, after turning them into int32 cell numbers. A move that would make it walk more
+# cells than this (2^30 cells took 2 s here; the issue's move of (-1.8e17, -6.4e37) is 2^62 of
+# them, since out-of-range coordinates become INT_MIN, and never returned) is refused with an
+# error line, as a game would refuse such a speed, instead of stalling the batch.
 const BROADPHASE_CELL = 128.0
-const MAX_BROADPHASE_CELLS = 1 << 22
+const MAX_BROADPHASE_CELLS = 1 << 30
 
 var ps = Physics2DServer
 var space
@@ -316,17 +317,20 @@ func place_map(scene):
 	cell_of = scene.solid
 
 
-# Would this motion make Godot's broad phase walk an absurd number of cells (see the constant)?
-func motion_too_large(pos, size, motion):
-	var lo_x = min(pos.x, pos.x + motion.x) - SAFE_MARGIN
-	var hi_x = max(pos.x, pos.x + motion.x) + size.x + SAFE_MARGIN
-	var lo_y = min(pos.y, pos.y + motion.y) - SAFE_MARGIN
-	var hi_y = max(pos.y, pos.y + motion.y) + size.y + SAFE_MARGIN
-	var limit = 2147483647.0 * BROADPHASE_CELL
-	if max(max(abs(lo_x), abs(hi_x)), max(abs(lo_y), abs(hi_y))) >= limit:
-		return true
-	var cells = (floor(hi_x / BROADPHASE_CELL) - floor(lo_x / BROADPHASE_CELL) + 1) * (floor(hi_y / BROADPHASE_CELL) - floor(lo_y / BROADPHASE_CELL) + 1)
-	return cells > MAX_BROADPHASE_CELLS
+# The int32 broad-phase cell Godot files a coordinate under: the float-to-int conversion of
+# x86-64 (cvttss2si) gives INT_MIN for anything out of range.
+func broadphase_cell(v):
+	var c = floor(v / BROADPHASE_CELL)
+	return c if c >= -2147483648.0 and c <= 2147483647.0 else -2147483648.0
+
+
+# How many cells Godot's broad phase walks for the bounds of this motion (see the constant).
+func broadphase_cells_walked(pos, size, motion):
+	var from_x = broadphase_cell(min(pos.x, pos.x + motion.x) - SAFE_MARGIN)
+	var to_x = broadphase_cell(max(pos.x, pos.x + motion.x) + size.x + SAFE_MARGIN)
+	var from_y = broadphase_cell(min(pos.y, pos.y + motion.y) - SAFE_MARGIN)
+	var to_y = broadphase_cell(max(pos.y, pos.y + motion.y) + size.y + SAFE_MARGIN)
+	return max(0.0, to_x - from_x + 1) * max(0.0, to_y - from_y + 1)
 
 
 # The exact sign of a + b - c, for doubles (TwoSum: a + b = s + e exactly).
@@ -365,8 +369,9 @@ func run_scene(scene):
 		var motion = move
 		var elapsed = 0.0
 		for slide in range(2):
-			if motion_too_large(pos, scene.size, motion):
-				fail("moves", "godot: a move of (%s, %s) from (%s, %s) is past what Godot's broad phase can take" % [motion.x, motion.y, pos.x, pos.y])
+			var walked = broadphase_cells_walked(pos, scene.size, motion)
+			if walked > MAX_BROADPHASE_CELLS:
+				fail("moves", "godot: refused: for a move of (%s, %s) from (%s, %s), Godot's broad phase would walk %d cells (more than 2^30: a stall)" % [motion.x, motion.y, pos.x, pos.y, int(walked)])
 				return null
 			var from = Transform2D(0, pos)
 			ps.body_set_state(box_body, Physics2DServer.BODY_STATE_TRANSFORM, from)
