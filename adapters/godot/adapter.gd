@@ -27,21 +27,24 @@ const SAFE_MARGIN = 0.08
 # error line, as a game would refuse such a speed, instead of stalling the batch.
 const BROADPHASE_CELL = 128.0
 const MAX_BROADPHASE_CELLS = 1 << 30
+# Bodies made at start (more are added when a map needs them), and where unused ones wait.
+const POOL_START = 1024
+const PARKED = Transform2D(0, Vector2(-1e30, -1e30))
 
 var ps = Physics2DServer
 var space
-var tile_shape
 var box_body
 var box_shape
 var owner_ref = Reference.new()  # bodies need an object instance id (intersect_shape crashes without)
 var motion_result = Physics2DTestMotionResult.new()
 var bits_buffer = StreamPeerBuffer.new()
 
-var pool = []            # static bodies, one per solid cell of the current scene (first `active`)
+var pool = []            # static bodies; the first `active` are the current scene's solid cells
+var pool_shapes = []     # each body's rectangle
+var pool_half = []       # each rectangle's half size
 var active = 0
 var pool_index_of = {}   # body RID id -> index in pool
 var cell_of = []         # pool index -> [i, j] for the current scene
-var tile_half = Vector2(-1, -1)
 var box_half = Vector2(-1, -1)
 
 var error = ""           # set by the readers: "field: problem"
@@ -55,13 +58,14 @@ func _init():
 		quit(2)
 		return
 	space = ps.space_create()
-	tile_shape = ps.rectangle_shape_create()
 	box_shape = ps.rectangle_shape_create()
 	box_body = ps.body_create()
 	ps.body_set_mode(box_body, Physics2DServer.BODY_MODE_KINEMATIC)
 	ps.body_add_shape(box_body, box_shape)
 	ps.body_attach_object_instance_id(box_body, owner_ref.get_instance_id())
 	ps.body_set_space(box_body, space)
+	for k in range(POOL_START):
+		add_pool_body()
 	quit(answer_file(args[args.size() - 2], args[args.size() - 1]))
 
 
@@ -116,67 +120,56 @@ func read_scalar(value, field):
 	return result
 
 
-const HEX_DIGITS = "0123456789abcdef"
-
 # Exact: the significant hex digits go into an integer (the first 13, 52 bits, with one sticky
 # bit below them for any nonzero digit after), so mantissa * 2^exponent is an exact double, and
 # converting it to float32 is the one rounding, to nearest.
 func read_hexfloat(text, field):
+	var bad = "expected a number or a hexfloat string like \"0x1.8p+3\", got '" + text.left(40) + "'"
 	var s = text.to_lower()
 	var negative = s.begins_with("-")
 	if negative:
 		s = s.substr(1, s.length() - 1)
 	var p = s.find("p")
-	if not s.begins_with("0x") or p < 0 or p == s.length() - 1:
-		return fail(field, "expected a number or a hexfloat string like \"0x1.8p+3\", got '" + text.left(40) + "'")
+	if not s.begins_with("0x") or p < 0:
+		return fail(field, bad)
 	var exponent_text = s.substr(p + 1, s.length() - p - 1)
 	var exponent_digits = exponent_text.trim_prefix("+").trim_prefix("-")
 	if exponent_digits == "" or not exponent_digits.is_valid_integer() or exponent_digits.length() > 6:
-		return fail(field, "bad exponent in '" + text.left(40) + "'")
+		return fail(field, bad)
 	var exponent = int(exponent_text)
-	var mantissa = 0
-	var significant = 0   # hex digits taken into mantissa, counted from the first nonzero one
+	var body = s.substr(2, p - 2)
+	var point = body.find(".")
+	var whole = body if point < 0 else body.substr(0, point)
+	var fraction = "" if point < 0 else body.substr(point + 1, body.length() - point - 1)
+	if whole == "" and fraction == "":
+		return fail(field, bad)
+	fraction = fraction.rstrip("0")
+	var digits = (whole + fraction).lstrip("0")
+	exponent -= 4 * fraction.length()
+	if digits == "":
+		return -0.0 if negative else 0.0
+	if not digits.is_valid_hex_number(false):
+		return fail(field, bad)
 	var sticky = false
-	var seen_point = false
-	var digits = 0
-	for k in range(2, p):
-		var c = s[k]
-		if c == ".":
-			if seen_point:
-				return fail(field, "two points in '" + text.left(40) + "'")
-			seen_point = true
-			continue
-		var d = HEX_DIGITS.find(c)
-		if d < 0:
-			return fail(field, "expected a number or a hexfloat string like \"0x1.8p+3\", got '" + text.left(40) + "'")
-		digits += 1
-		if significant < 13:
-			if mantissa != 0 or d != 0:
-				mantissa = mantissa * 16 + d
-				significant += 1
-			if seen_point:
-				exponent -= 4
-		else:
-			if d != 0:
-				sticky = true
-			if not seen_point:
-				exponent += 4
-	if digits == 0:
-		return fail(field, "no digits in '" + text.left(40) + "'")
+	if digits.length() > 13:
+		exponent += 4 * (digits.length() - 13)
+		sticky = digits.substr(13, digits.length() - 13).rstrip("0") != ""
+		digits = digits.substr(0, 13)
+	var mantissa = 0
+	var k = 0
+	while k < digits.length():  # hex_to_int takes 31 bits at most: seven digits at a time
+		var chunk = digits.substr(k, 7)
+		mantissa = mantissa * (1 << (4 * chunk.length())) + ("0x" + chunk).hex_to_int()
+		k += 7
 	if sticky:
 		mantissa = mantissa * 2 + 1
 		exponent -= 1
-	var value = 0.0
-	if mantissa != 0:
-		# Far below the smallest float32 it rounds to zero, far above to infinity: keep the
-		# double exact (normal) in between.
-		var top = exponent + 4 * significant
-		if top < -200:
-			value = 0.0
-		elif top > 200:
-			return fail(field, "non-finite value (or past the largest float)")
-		else:
-			value = Vector2(float(mantissa) * pow(2.0, exponent), 0).x
+	# Far below the smallest float32 it rounds to zero, far above to infinity: in between the
+	# double stays exact (normal).
+	var top = exponent + 4 * digits.length()
+	if top > 200:
+		return fail(field, "non-finite value (or past the largest float)")
+	var value = 0.0 if top < -200 else Vector2(float(mantissa) * pow(2.0, exponent), 0).x
 	return -value if negative else value
 
 
@@ -284,35 +277,44 @@ func parse_scene(line):
 
 # ---- the Godot side ---------------------------------------------------------------------------
 
-# One static body per solid cell, as TileMap builds them; bodies are pooled across scenes.
+# One static body per solid cell, as TileMap builds them (each with its own rectangle, which
+# holds the same data as TileMap's shared one).
+#
+# The bodies are pooled, and the pool is made once at start and never leaves the space: an unused
+# body is parked far away. Godot's broad phase orders the objects of a cell by the address of
+# their entry, and that order decides between equally deep contacts (which of two floor tiles is
+# reported) and the order of float sums; entries made once, in a fixed order, keep every scene's
+# answer the same whatever scenes came before it in the batch.
+func add_pool_body():
+	var body = ps.body_create()
+	var shape = ps.rectangle_shape_create()
+	ps.body_set_mode(body, Physics2DServer.BODY_MODE_STATIC)
+	ps.body_add_shape(body, shape)
+	ps.body_attach_object_instance_id(body, owner_ref.get_instance_id())
+	ps.body_set_state(body, Physics2DServer.BODY_STATE_TRANSFORM, PARKED)
+	ps.body_set_space(body, space)
+	pool_index_of[body.get_id()] = pool.size()
+	pool.append(body)
+	pool_shapes.append(shape)
+	pool_half.append(Vector2(-1, -1))
+
+
 func place_map(scene):
 	var half = scene.tile / 2
-	if half != tile_half:
-		ps.shape_set_data(tile_shape, half)
 	var count = scene.solid.size()
 	while pool.size() < count:
-		var body = ps.body_create()
-		ps.body_set_mode(body, Physics2DServer.BODY_MODE_STATIC)
-		ps.body_add_shape(body, tile_shape, Transform2D(0, half))
-		ps.body_attach_object_instance_id(body, owner_ref.get_instance_id())
-		pool_index_of[body.get_id()] = pool.size()
-		pool.append(body)
+		add_pool_body()
 	for k in range(count):
 		var body = pool[k]
-		if half != tile_half:
+		if pool_half[k] != half:
+			ps.shape_set_data(pool_shapes[k], half)
 			ps.body_set_shape_transform(body, 0, Transform2D(0, half))
+			pool_half[k] = half
 		var cell = scene.solid[k]
 		var corner = Vector2(scene.origin.x + cell[0] * scene.tile.x, scene.origin.y + cell[1] * scene.tile.y)
 		ps.body_set_state(body, Physics2DServer.BODY_STATE_TRANSFORM, Transform2D(0, corner))
-		if k >= active:
-			ps.body_set_space(body, space)
 	for k in range(count, active):
-		ps.body_set_space(pool[k], RID())
-	if half != tile_half:
-		# Bodies out of the space keep the old offset: set it when they come back.
-		for k in range(count, pool.size()):
-			ps.body_set_shape_transform(pool[k], 0, Transform2D(0, half))
-	tile_half = half
+		ps.body_set_state(pool[k], Physics2DServer.BODY_STATE_TRANSFORM, PARKED)
 	active = count
 	cell_of = scene.solid
 
@@ -366,6 +368,12 @@ func run_scene(scene):
 	var frames = []
 	for move in scene.moves:
 		var frame = {"started": overlapped_tiles(scene, pos), "contacts": []}
+		# The physics step between two frames puts the server's body where the node is. A kinematic
+		# body takes a new transform at once only on its first one after becoming kinematic (later
+		# ones wait for the step, which this adapter never runs): so the frame starts that way.
+		ps.body_set_mode(box_body, Physics2DServer.BODY_MODE_STATIC)
+		ps.body_set_mode(box_body, Physics2DServer.BODY_MODE_KINEMATIC)
+		ps.body_set_state(box_body, Physics2DServer.BODY_STATE_TRANSFORM, Transform2D(0, pos))
 		var motion = move
 		var elapsed = 0.0
 		for slide in range(2):
@@ -373,9 +381,9 @@ func run_scene(scene):
 			if walked > MAX_BROADPHASE_CELLS:
 				fail("moves", "godot: refused: for a move of (%s, %s) from (%s, %s), Godot's broad phase would walk %d cells (more than 2^30: a stall)" % [motion.x, motion.y, pos.x, pos.y, int(walked)])
 				return null
-			var from = Transform2D(0, pos)
-			ps.body_set_state(box_body, Physics2DServer.BODY_STATE_TRANSFORM, from)
-			var hit = ps.body_test_motion(box_body, from, motion, true, SAFE_MARGIN, motion_result)
+			# As in move_and_slide: the second slide starts from where the first ended, while the
+			# server still holds the body at the frame's start.
+			var hit = ps.body_test_motion(box_body, Transform2D(0, pos), motion, true, SAFE_MARGIN, motion_result)
 			pos += motion_result.motion
 			if not hit:
 				break
@@ -432,25 +440,16 @@ func format_float(v):
 
 
 func format_frames(frames):
-	var parts = []
+	var parts = PoolStringArray()
 	for frame in frames:
-		var contacts = []
+		var contacts = PoolStringArray()
 		for c in frame.contacts:
 			contacts.append("{\"tile\": [%d, %d], \"normal\": [%d, %d], \"t\": %s}" % [c.tile[0], c.tile[1], c.normal[0], c.normal[1], format_float(c.t)])
-		var started = []
+		var started = PoolStringArray()
 		for cell in frame.started:
 			started.append("[%d, %d]" % [cell[0], cell[1]])
-		parts.append("{\"pos\": [%s, %s], \"contacts\": [%s], \"started_overlapping\": [%s]}" % [format_float(frame.pos.x), format_float(frame.pos.y), join(contacts), join(started)])
-	return "{\"frames\": [" + join(parts) + "]}"
-
-
-func join(items):
-	var out = ""
-	for k in range(items.size()):
-		if k > 0:
-			out += ", "
-		out += items[k]
-	return out
+		parts.append("{\"pos\": [%s, %s], \"contacts\": [%s], \"started_overlapping\": [%s]}" % [format_float(frame.pos.x), format_float(frame.pos.y), contacts.join(", "), started.join(", ")])
+	return "{\"frames\": [" + parts.join(", ") + "]}"
 
 
 func format_error(message):
