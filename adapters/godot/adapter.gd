@@ -22,11 +22,12 @@ extends SceneTree
 const SAFE_MARGIN = 0.08
 # Godot's 2D broad phase (BroadPhase2DHashGrid, physics/2d/cell_size 128) walks every cell of a
 # query's bounds, after turning them into int32 cell numbers. A move that would make it walk more
-# cells than this (2^30 cells took 2 s here; the issue's move of (-1.8e17, -6.4e37) is 2^62 of
-# them, since out-of-range coordinates become INT_MIN, and never returned) is refused with an
-# error line, as a game would refuse such a speed, instead of stalling the batch.
+# cells than this is refused with an error line, as a game would refuse such a speed, instead of
+# stalling the batch: 2^30 cells took 2 to 4.5 s here (a move of 2^37 pixels down), and the
+# issue's move of (-1.8e17, -6.4e37) is 2^62 of them (out-of-range coordinates become INT_MIN)
+# and never returned. 2^26 cells is a straight move of 2^33 pixels, or 2^20 on both axes.
 const BROADPHASE_CELL = 128.0
-const MAX_BROADPHASE_CELLS = 1 << 30
+const MAX_BROADPHASE_CELLS = 1 << 26
 # Bodies made at start (more are added when a map needs them), and where unused ones wait.
 const POOL_START = 1024
 const PARKED = Transform2D(0, Vector2(-1e30, -1e30))
@@ -379,7 +380,7 @@ func run_scene(scene):
 		for slide in range(2):
 			var walked = broadphase_cells_walked(pos, scene.size, motion)
 			if walked > MAX_BROADPHASE_CELLS:
-				fail("moves", "godot: refused: for a move of (%s, %s) from (%s, %s), Godot's broad phase would walk %d cells (more than 2^30: a stall)" % [motion.x, motion.y, pos.x, pos.y, int(walked)])
+				fail("moves", "godot: refused: for a move of (%s, %s) from (%s, %s), Godot's broad phase would walk %d cells (more than 2^26: a stall)" % [motion.x, motion.y, pos.x, pos.y, int(walked)])
 				return null
 			# As in move_and_slide: the second slide starts from where the first ended, while the
 			# server still holds the body at the frame's start.
@@ -389,7 +390,9 @@ func run_scene(scene):
 				break
 			# motion_remainder is (1 - safe) * motion: the fraction done, on the longer axis.
 			var rest = motion_result.motion_remainder
-			var done = 1.0 - (rest.x / motion.x if abs(motion.x) >= abs(motion.y) else rest.y / motion.y)
+			var done = 0.0  # a zero motion that collides (the box starts inside or touching) is stuck
+			if motion != Vector2():
+				done = 1.0 - (rest.x / motion.x if abs(motion.x) >= abs(motion.y) else rest.y / motion.y)
 			var t = elapsed + done * (1.0 - elapsed)
 			var n = motion_result.collision_normal
 			var normal = [0, -1 if n.y < 0 else 1]
@@ -463,5 +466,6 @@ func answer(line):
 		return format_error(error)
 	var frames = run_scene(scene)
 	if frames == null:
-		return format_error(error)
+		# A GDScript runtime error returns null from the function it stops, with no message here.
+		return format_error(error if error != "" else "godot adapter: script error (its stderr says where)")
 	return format_frames(frames)
