@@ -220,13 +220,14 @@ func parse_scene(line):
 		if row.length() != scene.columns:
 			fail("map.rows", "ragged rows (row %d has length %d, row 0 %d)" % [j, row.length(), scene.columns])
 			return null
-		for i in range(scene.columns):
-			var c = row[i]
-			if c == "#":
-				solid.append([i, j])
-			elif c != ".":
-				fail("map.rows[%d]" % j, "unknown tile character '" + c + "' (use '#' or '.')")
-				return null
+		if row.replace("#", "").replace(".", "") != "":
+			var c = row.replace("#", "").replace(".", "")[0]
+			fail("map.rows[%d]" % j, "unknown tile character '" + c + "' (use '#' or '.')")
+			return null
+		var i = row.find("#")
+		while i >= 0:
+			solid.append([i, j])
+			i = row.find("#", i + 1)
 	scene.solid = solid  # [i, j] of the solid cells, by row then column
 	# Every tile edge must be a float32 (the contract refuses the map otherwise).
 	for k in range(scene.columns + 1):
@@ -422,12 +423,12 @@ func float32_bits(v):
 # A float32 value so that it reads back to the same bits: an integer as an integer, anything
 # else as a hexfloat string built from its bits.
 func format_float(v):
+	if v == floor(v) and abs(v) < 16777216.0 and v != 0:
+		return str(int(v))
 	var bits = float32_bits(v)
 	var negative = bits >= 0x80000000
-	if v == floor(v) and abs(v) < 16777216.0:
-		if v == 0:
-			return "-0" if negative else "0"
-		return str(int(v))
+	if v == 0:
+		return "-0" if negative else "0"
 	var biased = (bits >> 23) & 0xff
 	var fraction = (bits & 0x7fffff) << 1   # 24 bits: six hex digits
 	var digits = ("%06x" % fraction).rstrip("0")
