@@ -34,6 +34,16 @@
 //              tile it overlaps on x, whose cell above is empty) and the implementation reports
 //              an x contact on a tile of that floor row that the exact frame does not
 //   non-finite the implementation returned an infinite or NaN position
+//   missed-contact  the exact frame hits a (tile, normal) that the implementation does not report
+//   extra-contact   the implementation reports a (tile, normal) that the exact frame does not hit
+//              (a different tile or normal is both: one missed, one extra)
+//   short      on an axis the exact frame stops on (a contact's axis), the box ends farther back
+//              than the contract's position: it stops short of touching by more than rounding
+//   overshoot  on some axis the box ends beyond the contract's position in the direction of the
+//              frame's motion (past the exact end by more than rounding; on a contact axis that
+//              is a push into the tile), or moves on an axis that did not move
+//   no-answer  (outside resolvers) the resolver gave no usable answer: a crash, a hang, garbage,
+//              an error line, or the wrong number of frames
 //   position   the largest error of the final position against the contract's (the exact one
 //              rounded toward the start), per axis, in ulps of the scalar type at the magnitude of
 //              the expected coordinate, floored at the tile size: |got - want| / ulp(max(|want|,
@@ -63,10 +73,15 @@ enum class Metric : std::uint8_t {
     CornerHit,
     Snag,
     NonFinite,
+    Missed,
+    Extra,
+    Short,
+    Overshoot,
+    NoAnswer,
     Position,
     Time
 };
-constexpr std::size_t kMetricCount = 10;
+constexpr std::size_t kMetricCount = 15;
 
 /// The short name of a metric ("decision", "tunnel", ...).
 [[nodiscard]] const char* metricName(Metric m);
@@ -90,6 +105,15 @@ struct Implementation {
 
 /// Every implementation of the audit, in report order.
 [[nodiscard]] std::vector<Implementation> auditImplementations();
+
+/// A scene's frames through one implementation, each frame from the last one's position.
+template <class T>
+[[nodiscard]] std::vector<FrameResult<T>> runImplementation(const Implementation& impl,
+                                                            const Scene<T>& scene);
+extern template std::vector<FrameResult<float>> runImplementation<float>(const Implementation&,
+                                                                         const Scene<float>&);
+extern template std::vector<FrameResult<double>> runImplementation<double>(const Implementation&,
+                                                                           const Scene<double>&);
 
 /// The worst scene of a cell for one metric: the case with the largest score (the position
 /// error in ulps for most metrics), the lowest case index on a tie.

@@ -5,17 +5,26 @@
 #include "audit_command.h"
 
 #include "audit/audit.h"
+#include "progress_line.h"
+#include "shard.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <iostream>
 #include <string>
 #include <unistd.h>
 #if TILESWEEP_HAVE_CHECK
+#include "audit/engine_rates.h"
 #include "check_command.h"
 #include "conformance_report.h"
+#include "outside_batch_resolver.h"
+
+#include <fstream>
+#include <sstream>
 #endif
 
 namespace tilesweep::cli {
@@ -65,6 +74,31 @@ CLI::App* addAuditCommand(CLI::App& app, AuditOptions& options) {
     command->add_option("--resolver-timeout", options.resolverTimeout, "Conformance mode: seconds per batch")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
+    command
+        ->add_option("--rates-cases", options.ratesCases,
+                     "Conformance mode: scenes per family for the engine rates and tolerances (0: none)")
+        ->capture_default_str();
+    command
+        ->add_option("--resolver-tolerance", options.resolverTolerances,
+                     "Conformance mode: per --resolver-cmd, in order, the engine's own tolerance in pixels,\n"
+                     "then what it is (\"0.08 safe margin\"); set beside the measured tolerances")
+        ->type_name("\"PX [NOTE]\"");
+    command
+        ->add_option("--compare", options.compare,
+                     "Conformance mode: tilesweep's in-process implementations measured on the same scenes\n"
+                     "(comma-separated: tilesweep, twin, grid; empty: none)")
+        ->capture_default_str();
+    command->add_option(
+        "--rates-json", options.ratesJson,
+        "Conformance mode: the rates file (default: <pictures>/rates.json; `tilesweep merge`\n"
+        "adds shards' files up)");
+    command->add_flag("--rates-only", options.ratesOnly,
+                      "Conformance mode: only the rates, no property checks");
+    command
+        ->add_option(
+            "--shard", options.shard,
+            "K/N: run only slice K (from 0) of N of the seeds and cases; merge with `tilesweep merge`")
+        ->capture_default_str();
     command->footer(
         "Implementations: core-float, core-double (tilesweep::runScene), twin-* and grid-* (game-style\n"
         "swept AABB, bench/), seed-float, seed-double (the seed\n"
@@ -81,12 +115,71 @@ CLI::App* addAuditCommand(CLI::App& app, AuditOptions& options) {
 #if TILESWEEP_HAVE_CHECK
 namespace {
 
+/// The in-process implementations `--compare` names, as rate engines.
+std::vector<audit::EngineSpec> comparedEngines(const std::string& list) {
+    std::vector<audit::EngineSpec> engines;
+    std::stringstream names(list);
+    for (std::string name; std::getline(names, name, ',');) {
+        if (name.empty()) continue;
+        const std::string implementation = name == "tilesweep" ? "core-float" : name + "-float";
+        bool found = false;
+        for (const audit::Implementation& impl : audit::auditImplementations()) {
+            if (impl.name != implementation) continue;
+            engines.push_back({name, [impl] { return audit::makeInProcessResolver(impl); }, 0, ""});
+            found = true;
+        }
+        if (!found)
+            throw std::invalid_argument("--compare: unknown implementation '" + name +
+                                        "' (tilesweep, twin, grid)");
+    }
+    return engines;
+}
+
+/// "0.08 safe margin" -> 0.08 and "safe margin"; throws std::invalid_argument naming the option.
+std::pair<double, std::string> parseTolerance(const std::string& text) {
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (end == text.c_str() || !(value >= 0) || !std::isfinite(value))
+        throw std::invalid_argument(
+            "--resolver-tolerance: expected pixels then a note, as \"0.08 safe margin\", got '" + text + "'");
+    std::string note = end;
+    while (!note.empty() && note.front() == ' ') note.erase(0, 1);
+    return {value, note};
+}
+
 /// Conformance mode: one check per outside resolver, every run kept going for the whole budget
-/// so that failure rates mean something, and one report.
+/// so that failure rates mean something; then the engine rates of every resolver over the same
+/// scenes; one report.
 int runConformance(const AuditOptions& options) {
+    Shard shard;
+    std::string shardError;
+    if (!parseShard(options.shard, shard, shardError)) {
+        std::cerr << "tilesweep audit: " << shardError << '\n';
+        return 2;
+    }
+    std::vector<audit::EngineSpec> engines;
+    try {
+        engines = comparedEngines(options.compare);
+        for (std::size_t k = 0; k < options.resolverCmds.size(); ++k) {
+            const std::string label =
+                k < options.resolverNames.size() ? options.resolverNames[k] : options.resolverCmds[k];
+            const auto [tolerance, note] = k < options.resolverTolerances.size()
+                                               ? parseTolerance(options.resolverTolerances[k])
+                                               : std::pair<double, std::string>{0, ""};
+            const std::string command = options.resolverCmds[k];
+            const double timeout = options.resolverTimeout;
+            engines.push_back({label,
+                               [command, timeout] { return makeOutsideBatchResolver(command, timeout); },
+                               tolerance, note});
+        }
+    } catch (const std::invalid_argument& error) {
+        std::cerr << "tilesweep audit: " << error.what() << '\n';
+        return 2;
+    }
+
     std::vector<ConformanceEntry> entries;
     bool allHeld = true;
-    for (std::size_t k = 0; k < options.resolverCmds.size(); ++k) {
+    for (std::size_t k = 0; k < options.resolverCmds.size() && !options.ratesOnly; ++k) {
         ConformanceEntry entry;
         entry.label = k < options.resolverNames.size() ? options.resolverNames[k] : options.resolverCmds[k];
         CheckOptions& check = entry.options;
@@ -100,6 +193,7 @@ int runConformance(const AuditOptions& options) {
         check.jobs = options.jobs;
         check.keepGoing = true;
         check.quiet = true;
+        check.shard = options.shard;
         check.corpusDir = (std::filesystem::temp_directory_path() /
                            ("tilesweep-conformance-" + std::to_string(getpid()) + "-" + std::to_string(k)))
                               .string();
@@ -113,7 +207,53 @@ int runConformance(const AuditOptions& options) {
         allHeld = allHeld && failed == 0;
         entries.push_back(std::move(entry));
     }
-    writeConformanceReport(entries, options.report, options.pictures);
+
+    std::string rates;
+    if (options.ratesCases > 0 && !engines.empty()) {
+        audit::RatesConfig config;
+        config.cases = options.ratesCases;
+        config.seed = options.seed;
+        config.jobs = options.jobs;
+        config.shardIndex = shard.index;
+        config.shardCount = shard.count;
+        ProgressLine progress("tilesweep audit: rates", "scenes");
+        config.progress = [&progress](std::uint64_t done, std::uint64_t total) {
+            if (done == total)
+                progress.finish(total);
+            else
+                progress.update(done, total);
+        };
+        std::fprintf(stderr, "tilesweep audit: rates of %zu resolvers, %llu scenes per family, shard %d/%d\n",
+                     engines.size(), static_cast<unsigned long long>(options.ratesCases), shard.index,
+                     shard.count);
+        const audit::RatesResult result = audit::measureRates(config, engines);
+        const std::string jsonPath = options.ratesJson.empty()
+                                         ? (std::filesystem::path(options.pictures) / "rates.json").string()
+                                         : options.ratesJson;
+        const std::filesystem::path jsonDir = std::filesystem::path(jsonPath).parent_path();
+        if (!jsonDir.empty()) std::filesystem::create_directories(jsonDir);
+        std::ofstream(jsonPath) << audit::ratesJson(result);
+        std::printf("rates: %s (%.1f s)\n", jsonPath.c_str(), result.seconds);
+        rates = audit::ratesMarkdown(result);
+        for (std::size_t e = 0; e < result.engines.size(); ++e) {
+            audit::RateCell all;
+            for (const audit::RateCell& c : result.cells[e]) all.merge(c);
+            std::uint64_t broken = 0;
+            for (const audit::Metric m : audit::kRateMetrics)
+                broken += all.failures[static_cast<std::size_t>(m)];
+            std::printf("%-24s %8llu scenes, tunnels %llu, ends inside %llu, no answer %llu\n",
+                        result.engines[e].c_str(), static_cast<unsigned long long>(all.scenes),
+                        static_cast<unsigned long long>(
+                            all.failures[static_cast<std::size_t>(audit::Metric::Tunnel)]),
+                        static_cast<unsigned long long>(
+                            all.failures[static_cast<std::size_t>(audit::Metric::Inside)]),
+                        static_cast<unsigned long long>(
+                            all.failures[static_cast<std::size_t>(audit::Metric::NoAnswer)]));
+            const bool outside = e >= result.engines.size() - options.resolverCmds.size();
+            if (outside) allHeld = allHeld && broken == 0;
+        }
+    }
+    writeConformanceReport(entries, options.report, options.pictures, rates);
     for (const ConformanceEntry& e : entries) {
         std::error_code ignored;
         std::filesystem::remove_all(e.options.corpusDir, ignored);
@@ -137,17 +277,12 @@ int runAuditCommand(const AuditOptions& options) {
                              ? "tilesweep audit --cases " + std::to_string(options.cases) + " --seed " +
                                    std::to_string(options.seed)
                              : options.commandLine;
-    const auto started = std::chrono::steady_clock::now();
-    config.progress = [started](std::uint64_t done, std::uint64_t total) {
-        const double elapsed =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-        const double share = total == 0 ? 1.0 : static_cast<double>(done) / static_cast<double>(total);
-        const double left = share > 0 ? elapsed / share - elapsed : 0.0;
-        std::fprintf(stderr, "\rtilesweep audit: %llu/%llu cases (%3.0f%%), %.0f s, about %.0f s left   ",
-                     static_cast<unsigned long long>(done), static_cast<unsigned long long>(total),
-                     100.0 * share, elapsed, left);
-        if (done == total) std::fprintf(stderr, "\n");
-        std::fflush(stderr);
+    ProgressLine progress("tilesweep audit");
+    config.progress = [&progress](std::uint64_t done, std::uint64_t total) {
+        if (done == total)
+            progress.finish(total);
+        else
+            progress.update(done, total);
     };
     std::fprintf(stderr,
                  "tilesweep audit: %llu scenes per family per scalar type, %zu families, seed %llu -> %s\n",

@@ -30,6 +30,13 @@ struct AuditOptions {
     std::string claims = "all";                  ///< "all" or "safety"
     std::string scalar = "float";                ///< the scalar type the resolvers work in
     double resolverTimeout = 10;                 ///< seconds per batch before a resolver counts as hung
+    // Engine rates (audit/engine_rates.h), in conformance mode after the checks.
+    std::uint64_t ratesCases = 2000;              ///< scenes per family; 0: no rates
+    std::vector<std::string> resolverTolerances;  ///< per --resolver-cmd: "PIXELS [what it is]"
+    std::string compare = "tilesweep,twin,grid";  ///< in-process implementations measured beside them
+    std::string ratesJson;                        ///< the rates file; empty: <pictures>/rates.json
+    bool ratesOnly = false;                       ///< no property checks, only the rates
+    std::string shard = "0/1";                    ///< K/N: this run's slice of the seeds and cases
 };
 
 /// Declares the subcommand and its options.

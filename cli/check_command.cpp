@@ -17,6 +17,7 @@
 #include "conformance_report.h"
 #include "property_suite.h"
 #include "scene_runner.h"
+#include "shard.h"
 
 #include <nlohmann/json.hpp>
 
@@ -24,6 +25,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <poll.h>
@@ -64,10 +66,30 @@ std::string corpusDirOf(const CheckOptions& options) {
     return options.resolverCmd.empty() ? "properties/corpus" : "resolver-corpus";
 }
 
+/// Sends the outside resolver, in one batch, every scene a run of `property` will ask it for: the
+/// run is rehearsed on tilesweep's own resolver, which notes each scene (RecordingSceneRunner);
+/// the same seed then makes the same cases against the outside resolver, answered from what
+/// was kept. Scenes the rehearsal did not ask for (shrinking's) go to the resolver as they come.
+void prefetchRound(const Property& property, const properties::RunOptions& run,
+                   properties::ResolverProcess& process) {
+    std::vector<std::string> lines;
+    {
+        properties::RecordingSceneRunner<float> recordFloat(lines);
+        properties::RecordingSceneRunner<double> recordDouble(lines);
+        const properties::ScopedSceneRunner<float> useFloat(recordFloat);
+        const properties::ScopedSceneRunner<double> useDouble(recordDouble);
+        properties::RunOptions rehearsal = run;
+        rehearsal.corpusDir.clear();  // tilesweep passes; nothing to write in any case
+        (void)property.run(rehearsal);
+    }
+    process.clearKept();
+    process.prefetch(lines);
+}
+
 /// A worker's rounds: properties index % jobs == worker, round after round with a new seed each
 /// round, until the deadline (at least one round), each run reported on `out`.
 void runRounds(const std::vector<const Property*>& work, int worker, int jobs, const CheckOptions& options,
-               int out) {
+               const Shard& shard, int out) {
     // The outside resolver, one process per worker, shared by the float and double runners.
     std::shared_ptr<properties::ResolverProcess> process;
     std::unique_ptr<properties::OutsideSceneRunner<float>> floatRunner;
@@ -88,9 +110,12 @@ void runRounds(const std::vector<const Property*>& work, int worker, int jobs, c
             if (static_cast<int>(k % static_cast<std::size_t>(jobs)) != worker) continue;
             if (round > 0 && std::chrono::steady_clock::now() >= deadline) break;
             properties::RunOptions run;
-            run.seed = options.seed + static_cast<std::uint64_t>(round);
+            run.seed = options.seed +
+                       static_cast<std::uint64_t>(round) * static_cast<std::uint64_t>(shard.count) +
+                       static_cast<std::uint64_t>(shard.index);
             run.cases = options.cases;
             run.corpusDir = corpusDirOf(options);
+            if (process) prefetchRound(*work[k], run, *process);
             const PropertyOutcome o = work[k]->run(run);
             anyFailed = anyFailed || !o.passed;
             const nlohmann::json report = {{"index", k},
@@ -113,8 +138,8 @@ void runRounds(const std::vector<const Property*>& work, int worker, int jobs, c
 }
 
 [[noreturn]] void runWorker(const std::vector<const Property*>& work, int worker, int jobs,
-                            const CheckOptions& options, int out) {
-    runRounds(work, worker, jobs, options, out);  // its destructors stop the outside process
+                            const CheckOptions& options, const Shard& shard, int out) {
+    runRounds(work, worker, jobs, options, shard, out);  // its destructors stop the outside process
     close(out);
     _exit(0);
 }
@@ -174,6 +199,13 @@ CLI::App* addCheckCommand(CLI::App& app, CheckOptions& options) {
         ->type_name("FILE.md");
     command->add_flag("--keep-going", options.keepGoing,
                       "Keep running rounds after a failure, to measure failure rates over the whole budget");
+    command
+        ->add_option("--shard", options.shard,
+                     "K/N: run slice K (from 0) of N: round r uses seed + r*N + K, so N runs cover\n"
+                     "disjoint seeds; `tilesweep merge` adds their --json files up")
+        ->capture_default_str();
+    command->add_option("--json", options.json, "Also write the run as JSON (for `tilesweep merge`)")
+        ->type_name("FILE.json");
     command->footer(
         "Each property runs --cases cases per round; rounds repeat with seed+1, seed+2, ... until\n"
         "--seconds have passed (one round at least). A property fails when a case falsifies it or\n"
@@ -192,6 +224,9 @@ CLI::App* addCheckCommand(CLI::App& app, CheckOptions& options) {
 }
 
 CheckRun runChecks(const CheckOptions& options) {
+    Shard shard;
+    std::string shardError;
+    if (!parseShard(options.shard, shard, shardError)) throw std::invalid_argument(shardError);
     const std::vector<const Property*> work = selectProperties(options);
     if (work.empty()) throw std::invalid_argument("no property matches '" + options.property + "'");
     int jobs = options.jobs > 0 ? options.jobs : static_cast<int>(std::thread::hardware_concurrency());
@@ -225,7 +260,7 @@ CheckRun runChecks(const CheckOptions& options) {
         if (pid == 0) {
             close(fds[0]);
             for (int fd : pipes) close(fd);
-            runWorker(work, w, jobs, options, fds[1]);
+            runWorker(work, w, jobs, options, shard, fds[1]);
         }
         close(fds[1]);
         pipes.push_back(fds[0]);
@@ -313,6 +348,10 @@ int runCheckCommand(const CheckOptions& options) {
         return 2;
     }
     printTable(run);
+    if (!options.json.empty()) {
+        std::ofstream(options.json) << checkJson(options, run);
+        std::printf("json: %s\n", options.json.c_str());
+    }
     int failures = 0;
     int failedProperties = 0;
     for (const CheckRow& row : run.rows) {
@@ -342,6 +381,113 @@ int runCheckCommand(const CheckOptions& options) {
     std::printf("\n%d passed, %d failed\n", total - (ok ? 0 : std::max(failedProperties, 1)),
                 ok ? 0 : std::max(failedProperties, 1));
     return ok ? 0 : 1;
+}
+
+std::string checkJson(const CheckOptions& options, const CheckRun& run) {
+    nlohmann::ordered_json j;
+    j["kind"] = "tilesweep-check";
+    j["resolver_cmd"] = options.resolverCmd;
+    j["claims"] = options.claims;
+    j["scalar"] = options.scalar;
+    j["cases"] = options.cases;
+    j["seconds"] = options.seconds;
+    j["seed"] = options.seed;
+    j["shard"] = options.shard;
+    j["corpus"] = corpusDirOf(options);
+    j["jobs"] = run.jobs;
+    j["wall_seconds"] = run.wallSeconds;
+    j["worker_failed"] = run.workerFailed;
+    for (const CheckRow& r : run.rows)
+        j["rows"].push_back({{"property", r.property},
+                             {"claim", r.claim},
+                             {"runs", r.runs},
+                             {"cases", r.cases},
+                             {"failures", r.failures},
+                             {"seconds", r.seconds},
+                             {"seconds_to_first_failure", r.secondsToFirstFailure},
+                             {"tags", r.tags},
+                             {"messages", r.messages},
+                             {"smallest_scene", r.smallestScene},
+                             {"smallest_failure", r.smallestFailure},
+                             {"smallest_corpus", r.smallestCorpus},
+                             {"smallest_picture", r.smallestPicture}});
+    return j.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+CheckRun readCheckJson(const std::string& text, CheckOptions& options) {
+    const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+    if (j.is_discarded() || !j.is_object() || j.value("kind", "") != "tilesweep-check")
+        throw std::runtime_error("not a check file (tilesweep check --json writes one)");
+    try {
+        options.resolverCmd = j.at("resolver_cmd").get<std::string>();
+        options.claims = j.at("claims").get<std::string>();
+        options.scalar = j.at("scalar").get<std::string>();
+        options.cases = j.at("cases").get<int>();
+        options.seconds = j.at("seconds").get<double>();
+        options.seed = j.at("seed").get<std::uint64_t>();
+        options.shard = j.at("shard").get<std::string>();
+        options.corpusDir = j.at("corpus").get<std::string>();
+        CheckRun run;
+        run.jobs = j.at("jobs").get<int>();
+        run.wallSeconds = j.at("wall_seconds").get<double>();
+        run.workerFailed = j.at("worker_failed").get<bool>();
+        for (const auto& r : j.at("rows")) {
+            CheckRow row;
+            row.property = r.at("property").get<std::string>();
+            row.claim = r.at("claim").get<std::string>();
+            row.runs = r.at("runs").get<int>();
+            row.cases = r.at("cases").get<int>();
+            row.failures = r.at("failures").get<int>();
+            row.seconds = r.at("seconds").get<double>();
+            row.secondsToFirstFailure = r.at("seconds_to_first_failure").get<double>();
+            row.tags = r.at("tags").get<std::map<std::string, int>>();
+            row.messages = r.at("messages").get<std::vector<std::string>>();
+            row.smallestScene = r.at("smallest_scene").get<std::string>();
+            row.smallestFailure = r.at("smallest_failure").get<std::string>();
+            row.smallestCorpus = r.at("smallest_corpus").get<std::string>();
+            row.smallestPicture = r.at("smallest_picture").get<std::string>();
+            run.rows.push_back(std::move(row));
+        }
+        return run;
+    } catch (const nlohmann::json::exception& e) {
+        throw std::runtime_error(std::string("malformed check file: ") + e.what());
+    }
+}
+
+CheckRun mergeCheckRuns(const std::vector<CheckRun>& runs) {
+    if (runs.empty()) throw std::invalid_argument("nothing to merge");
+    CheckRun merged = runs.front();
+    for (std::size_t k = 1; k < runs.size(); ++k) {
+        const CheckRun& other = runs[k];
+        if (other.rows.size() != merged.rows.size())
+            throw std::invalid_argument("check file " + std::to_string(k + 1) + " ran other properties");
+        for (std::size_t r = 0; r < merged.rows.size(); ++r) {
+            CheckRow& into = merged.rows[r];
+            const CheckRow& row = other.rows[r];
+            if (row.property != into.property)
+                throw std::invalid_argument("check file " + std::to_string(k + 1) + " ran other properties");
+            if (row.failures > 0 &&
+                (into.failures == 0 || row.secondsToFirstFailure < into.secondsToFirstFailure))
+                into.secondsToFirstFailure = row.secondsToFirstFailure;
+            into.runs += row.runs;
+            into.cases += row.cases;
+            into.failures += row.failures;
+            into.seconds += row.seconds;
+            for (const auto& [tag, count] : row.tags) into.tags[tag] += count;
+            into.messages.insert(into.messages.end(), row.messages.begin(), row.messages.end());
+            if (!row.smallestScene.empty() &&
+                (into.smallestScene.empty() || row.smallestScene.size() < into.smallestScene.size())) {
+                into.smallestScene = row.smallestScene;
+                into.smallestFailure = row.smallestFailure;
+                into.smallestCorpus = row.smallestCorpus;
+                into.smallestPicture = row.smallestPicture;
+            }
+        }
+        merged.workerFailed = merged.workerFailed || other.workerFailed;
+        merged.wallSeconds = std::max(merged.wallSeconds, other.wallSeconds);  // shards run side by side
+        merged.jobs += other.jobs;
+    }
+    return merged;
 }
 
 }  // namespace tilesweep::cli

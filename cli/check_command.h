@@ -29,6 +29,8 @@ struct CheckOptions {
     std::string scalar;             ///< "float" or "double"; empty: both (built-in), float (outside)
     std::string report;             ///< a conformance report (Markdown) to write; empty: none
     bool keepGoing = false;         ///< keep running rounds after a failure (failure rates)
+    std::string shard = "0/1";      ///< K/N: round r runs seed + r*N + K (shard.h)
+    std::string json;               ///< the run as JSON, for `tilesweep merge`; empty: none
     bool quiet = false;             ///< no per-run progress lines
 };
 
@@ -66,5 +68,14 @@ CLI::App* addCheckCommand(CLI::App& app, CheckOptions& options);
 
 /// Runs it; returns the exit status.
 int runCheckCommand(const CheckOptions& options);
+
+/// A check run as JSON (`tilesweep check --json`), and back; readCheckJson throws
+/// std::runtime_error on a malformed file.
+[[nodiscard]] std::string checkJson(const CheckOptions& options, const CheckRun& run);
+[[nodiscard]] CheckRun readCheckJson(const std::string& text, CheckOptions& options);
+
+/// Adds up the runs of shards (rows matched by property name); throws std::invalid_argument
+/// when the shards' properties differ.
+[[nodiscard]] CheckRun mergeCheckRuns(const std::vector<CheckRun>& runs);
 
 }  // namespace tilesweep::cli

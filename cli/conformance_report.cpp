@@ -51,7 +51,7 @@ std::string cell(std::string text) {
 }  // namespace
 
 void writeConformanceReport(const std::vector<ConformanceEntry>& entries, const std::string& file,
-                            const std::string& pictureDir) {
+                            const std::string& pictureDir, const std::string& rates) {
     const std::filesystem::path reportPath(file);
     const std::filesystem::path reportDir = reportPath.parent_path().empty() ? "." : reportPath.parent_path();
     std::filesystem::create_directories(reportDir);
@@ -66,7 +66,8 @@ void writeConformanceReport(const std::vector<ConformanceEntry>& entries, const 
           "with a new seed until the budget is spent). Time includes shrinking, which asks the resolver "
           "again at "
           "every step; the first counterexample's time is that of the first failing run, shrinking "
-          "included.\n\n";
+          "included. Each round's scenes go to the resolver in one batch (rehearsed on tilesweep's own "
+          "resolver, then prefetched); shrinking asks one scene at a time.\n\n";
     md << "| resolver | properties held | properties failed | cases run | cases/s "
           "|\n|---|---:|---:|---:|---:|\n";
     for (const ConformanceEntry& e : entries) {
@@ -78,6 +79,7 @@ void writeConformanceReport(const std::vector<ConformanceEntry>& entries, const 
         md << "| " << e.label << " | " << held << " | " << failed << " | " << cases << " | "
            << fixed(e.run.wallSeconds > 0 ? cases / e.run.wallSeconds : 0.0, 0) << " |\n";
     }
+    if (!rates.empty()) md << "\n## Rates and tolerances\n\n" << rates;
     for (const ConformanceEntry& e : entries) {
         const CheckOptions& o = e.options;
         md << "\n## " << e.label << "\n\n";

@@ -20,9 +20,10 @@ struct ConformanceEntry {
 };
 
 /// Writes the Markdown report to `file` and each smallest counterexample's picture into
-/// `pictureDir` (as <label>-<property>.svg, linked relative to the report). Throws
-/// std::runtime_error when a file cannot be written.
+/// `pictureDir` (as <label>-<property>.svg, linked relative to the report); `rates`, when not
+/// empty, is the engine rates section (audit/engine_rates.h, ratesMarkdown), placed after the
+/// summary. Throws std::runtime_error when a file cannot be written.
 void writeConformanceReport(const std::vector<ConformanceEntry>& entries, const std::string& file,
-                            const std::string& pictureDir);
+                            const std::string& pictureDir, const std::string& rates = {});
 
 }  // namespace tilesweep::cli

@@ -28,6 +28,9 @@
 #if TILESWEEP_HAVE_AUDIT
 #include "audit_command.h"
 #endif
+#if TILESWEEP_HAVE_AUDIT && TILESWEEP_HAVE_CHECK
+#include "merge_command.h"
+#endif
 #include "resolvers.h"
 
 #include "tilesweep/scene/scene.h"
@@ -330,6 +333,10 @@ int main(int argc, char** argv) {
     for (int k = 0; k < argc; ++k)
         auditOptions.commandLine += (k == 0 ? "tilesweep" : std::string(" ") + argv[k]);
 #endif
+#if TILESWEEP_HAVE_AUDIT && TILESWEEP_HAVE_CHECK
+    tilesweep::cli::MergeOptions mergeOptions;
+    CLI::App* mergeCommand = tilesweep::cli::addMergeCommand(app, mergeOptions);
+#endif
 
     try {
         app.parse(argc, argv);
@@ -347,6 +354,9 @@ int main(int argc, char** argv) {
 #endif
 #if TILESWEEP_HAVE_AUDIT
         if (auditCommand->parsed()) return tilesweep::cli::runAuditCommand(auditOptions);
+#endif
+#if TILESWEEP_HAVE_AUDIT && TILESWEEP_HAVE_CHECK
+        if (mergeCommand->parsed()) return tilesweep::cli::runMergeCommand(mergeOptions);
 #endif
     } catch (const std::exception& error) {
         std::cerr << "tilesweep: " << error.what() << '\n';

@@ -4,13 +4,18 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
+#include <filesystem>
+#include <fstream>
 #include <poll.h>
 #include <signal.h>
+#include <sstream>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
+#include <unordered_set>
 #include <utility>
 
 namespace tilesweep::properties {
@@ -39,12 +44,42 @@ std::string describeStatus(int status) {
     return "stopped";
 }
 
+/// The placeholders that put a command in file mode.
+constexpr const char* kInPlaceholder = "{in}";
+constexpr const char* kOutPlaceholder = "{out}";
+
+/// `text` as one word for sh: single quotes, with each single quote closed, escaped, reopened.
+std::string shellQuote(const std::string& text) {
+    std::string quoted = "'";
+    for (const char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
+}
+
+/// `command` with every `placeholder` replaced by `value`.
+std::string replaceAll(std::string command, const std::string& placeholder, const std::string& value) {
+    for (std::size_t at = 0; (at = command.find(placeholder, at)) != std::string::npos; at += value.size())
+        command.replace(at, placeholder.size(), value);
+    return command;
+}
+
+void keepTail(std::string& tail, const char* data, std::size_t size) {
+    tail.append(data, size);
+    if (tail.size() > kErrorTailBytes) tail.erase(0, tail.size() - kErrorTailBytes);
+}
+
 }  // namespace
 
 ResolverProcess::ResolverProcess(std::string command, double timeoutSeconds)
     : command_(std::move(command)), timeoutSeconds_(timeoutSeconds) {
     // A resolver that dies while we write to it must be a failure to report, not our death.
     signal(SIGPIPE, SIG_IGN);
+    fileMode_ = command_.find(kInPlaceholder) != std::string::npos &&
+                command_.find(kOutPlaceholder) != std::string::npos;
+    if (fileMode_) {
+        const char* base = std::getenv("TMPDIR");
+        std::string pattern = std::string(base && *base ? base : "/tmp") + "/tilesweep-resolver-XXXXXX";
+        if (mkdtemp(pattern.data()) != nullptr) directory_ = pattern;
+    }
 }
 
 ResolverProcess::~ResolverProcess() {
@@ -61,6 +96,10 @@ ResolverProcess::~ResolverProcess() {
         }
     }
     stop();
+    if (!directory_.empty()) {
+        std::error_code ignored;
+        std::filesystem::remove_all(directory_, ignored);
+    }
 }
 
 bool ResolverProcess::start(std::string& why) {
@@ -225,11 +264,52 @@ std::size_t ResolverProcess::exchangeFrom(const std::vector<std::string>& lines,
 std::string ResolverProcess::errorTail() const {
     std::string tail = errorTail_;
     while (!tail.empty() && (tail.back() == '\n' || tail.back() == '\r')) tail.pop_back();
-    return tail.empty() ? std::string() : "; its standard error ends: " + tail;
+    if (tail.empty()) return {};
+    return (fileMode_ ? "; its output ends: " : "; its standard error ends: ") + tail;
 }
 
 std::vector<ResolverReply> ResolverProcess::exchange(const std::vector<std::string>& lines) {
     std::vector<ResolverReply> replies(lines.size());
+    std::vector<std::string> missing;
+    std::vector<std::size_t> where;
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+        const auto kept = kept_.find(lines[k]);
+        if (kept != kept_.end()) {
+            replies[k] = kept->second;
+        } else {
+            missing.push_back(lines[k]);
+            where.push_back(k);
+        }
+    }
+    if (missing.empty()) return replies;
+    std::vector<ResolverReply> sent = send(missing);
+    for (std::size_t k = 0; k < where.size(); ++k) replies[where[k]] = std::move(sent[k]);
+    return replies;
+}
+
+void ResolverProcess::prefetch(const std::vector<std::string>& lines) {
+    std::vector<std::string> missing;
+    std::unordered_set<std::string> queued;
+    for (const std::string& line : lines)
+        if (kept_.find(line) == kept_.end() && queued.insert(line).second) missing.push_back(line);
+    if (missing.empty()) return;
+    std::vector<ResolverReply> sent = send(missing);
+    for (std::size_t k = 0; k < missing.size(); ++k) kept_[missing[k]] = std::move(sent[k]);
+}
+
+std::vector<ResolverReply> ResolverProcess::send(const std::vector<std::string>& lines) {
+    std::vector<ResolverReply> replies(lines.size());
+    if (lines.empty()) return replies;
+    scenesSent_ += lines.size();
+    ++batchesSent_;
+    if (fileMode_) {
+        for (std::size_t from = 0; from < lines.size();) {
+            const std::size_t failed = runFileBatch(lines, from, replies);
+            if (failed >= lines.size()) break;
+            from = failed + 1;  // the scene it failed on is answered by its failure; go on after it
+        }
+        return replies;
+    }
     // Output that came after the last batch was judged means the process is out of step (it
     // printed more than one line for some scene): start afresh rather than misread it.
     if (pid_ > 0) {
@@ -253,6 +333,132 @@ std::vector<ResolverReply> ResolverProcess::exchange(const std::vector<std::stri
         from = failed + 1;
     }
     return replies;
+}
+
+std::size_t ResolverProcess::runFileBatch(const std::vector<std::string>& lines, std::size_t from,
+                                          std::vector<ResolverReply>& replies) {
+    auto failFrom = [&](const std::string& why) {
+        for (std::size_t k = from; k < lines.size(); ++k) replies[k].failure = why;
+        return lines.size();
+    };
+    if (directory_.empty()) return failFrom("cannot create a temporary directory for the batch files");
+    const std::string inPath = directory_ + "/scenes.jsonl";
+    const std::string outPath = directory_ + "/answers.jsonl";
+    {
+        std::ofstream in(inPath, std::ios::binary | std::ios::trunc);
+        for (std::size_t k = from; k < lines.size(); ++k) in << lines[k] << '\n';
+        if (!in.flush()) return failFrom("cannot write the batch file " + inPath);
+    }
+    std::error_code ignored;
+    std::filesystem::remove(outPath, ignored);
+    const std::string command = replaceAll(replaceAll(command_, kInPlaceholder, shellQuote(inPath)),
+                                           kOutPlaceholder, shellQuote(outPath));
+
+    // Its standard output and error go to one pipe, whose tail explains a failure.
+    int output[2];
+    if (pipe2(output, O_CLOEXEC) != 0) return failFrom(std::string("pipe: ") + std::strerror(errno));
+    const pid_t pid = fork();
+    if (pid < 0) {
+        close(output[0]);
+        close(output[1]);
+        return failFrom(std::string("fork: ") + std::strerror(errno));
+    }
+    if (pid == 0) {
+        setpgid(0, 0);
+        const int null = open("/dev/null", O_RDONLY);
+        if (null >= 0) dup2(null, 0);
+        dup2(output[1], 1);
+        dup2(output[1], 2);
+        execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    setpgid(pid, pid);
+    close(output[1]);
+    ++starts_;
+    errorTail_.clear();
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutSeconds_);
+    bool hung = false;
+    int status = 0;
+    bool exited = false;
+    char buffer[4096];
+    for (int fd = output[0]; !exited;) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+            deadline - std::chrono::steady_clock::now());
+        if (left.count() <= 0) {
+            hung = true;
+            break;
+        }
+        if (fd >= 0) {
+            pollfd p{fd, POLLIN, 0};
+            const int ready = poll(&p, 1, static_cast<int>(std::min<long long>(left.count(), 50)));
+            if (ready > 0) {
+                const ssize_t n = read(fd, buffer, sizeof buffer);
+                if (n > 0) {
+                    keepTail(errorTail_, buffer, static_cast<std::size_t>(n));
+                } else if (n == 0 || (errno != EAGAIN && errno != EINTR)) {
+                    close(fd);
+                    fd = -1;
+                }
+            }
+        } else {
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        }
+        exited = waitpid(pid, &status, WNOHANG) == pid;
+        if (exited && fd >= 0) {  // what it wrote last explains the exit best
+            for (ssize_t n; (n = read(fd, buffer, sizeof buffer)) > 0;)
+                keepTail(errorTail_, buffer, static_cast<std::size_t>(n));
+            close(fd);
+            fd = -1;
+        }
+        if (exited) break;
+        if (fd < 0 && hung) break;
+    }
+    if (!exited) {
+        kill(-pid, SIGKILL);
+        kill(pid, SIGKILL);
+        waitpid(pid, &status, 0);
+    }
+    if (output[0] >= 0) close(output[0]);
+
+    // The answers written so far: whole lines, and a last line without its newline when the
+    // resolver finished by itself.
+    std::vector<std::string> answers;
+    {
+        std::ifstream out(outPath, std::ios::binary);
+        std::stringstream text;
+        text << out.rdbuf();
+        const std::string all = text.str();
+        std::size_t begin = 0;
+        for (std::size_t end; (end = all.find('\n', begin)) != std::string::npos; begin = end + 1) {
+            std::string line = all.substr(begin, end - begin);
+            if (!line.empty() && line.back() == '\r') line.pop_back();
+            answers.push_back(std::move(line));
+        }
+        if (begin < all.size() && exited && !hung) answers.push_back(all.substr(begin));
+    }
+    const std::size_t sent = lines.size() - from;
+    for (std::size_t k = 0; k < answers.size() && k < sent; ++k) replies[from + k].line = answers[k];
+    if (answers.size() > sent) {
+        replies.back().failure = "the resolver wrote more lines than it was sent scenes (extra: '" +
+                                 answers[sent].substr(0, 80) + "')";
+        return lines.size() - 1;
+    }
+    if (answers.size() == sent) return lines.size();
+    const std::size_t failed = from + answers.size();
+    if (hung) {
+        char seconds[32];
+        std::snprintf(seconds, sizeof seconds, "%g", timeoutSeconds_);
+        replies[failed].failure =
+            std::string("no answer within ") + seconds +
+            " s (--resolver-timeout): the resolver hangs on this scene, after answering " +
+            std::to_string(answers.size()) + " of the " + std::to_string(sent) + " scenes of its batch" +
+            errorTail();
+    } else {
+        replies[failed].failure = "the resolver " + describeStatus(status) + " after answering " +
+                                  std::to_string(answers.size()) + " of the " + std::to_string(sent) +
+                                  " scenes of its batch file" + errorTail();
+    }
+    return failed;
 }
 
 }  // namespace tilesweep::properties

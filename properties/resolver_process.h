@@ -1,12 +1,25 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-// An outside resolver as a process: `sh -c COMMAND`, fed scene lines on its standard input and
-// answering one result line per scene on its standard output, in order (the protocol of
-// `tilesweep resolve`, CONTRACT.md). The process is started on first use and kept for the
-// next batch; a crash, a hang past the timeout, or output that does not come as one line per
-// scene fails the scene it was working on, and the process is killed and restarted for the
-// scenes after it.
+// An outside resolver as a process speaking the protocol of `tilesweep resolve` (CONTRACT.md):
+// scene lines in, one result line per scene out, in order. Two transports:
+//
+//   pipe mode (the default): `sh -c COMMAND`, fed the scene lines on its standard input, answers
+//     on its standard output. The process is started on first use and kept for the next batch.
+//   file mode, when COMMAND contains both `{in}` and `{out}`: per batch, the scene lines are
+//     written to a file, `sh -c COMMAND` runs once with `{in}` and `{out}` replaced by the paths
+//     of that file and of an answer file, and the answers are read from the answer file when it
+//     exits. For engines that are slow to start or cannot read a pipe (Godot 3).
+//
+// Either way a crash, a hang past the timeout, or output that does not come as one line per
+// scene fails the scene it was working on (the first one not answered), and a fresh process
+// takes the scenes after it: an engine's bad output is a per-scene result, never the end of the
+// run.
+//
+// Batches: `prefetch` sends many scenes at once and keeps their answers; a later `exchange` of a
+// kept line is answered from memory. `tilesweep check` prefetches every scene a property round
+// will ask for (properties/scene_runner.h, RecordingSceneRunner), so an engine sees one batch
+// per round instead of one request per case.
 //
 //     ResolverProcess process("build/dev/cli/tilesweep resolve --scalar float", 10.0);
 //     auto replies = process.exchange({sceneLine1, sceneLine2});
@@ -14,8 +27,10 @@
 //
 // Not thread-safe: one per worker. POSIX only (fork, pipes, poll).
 
+#include <cstdint>
 #include <string>
 #include <sys/types.h>
+#include <unordered_map>
 #include <vector>
 
 namespace tilesweep::properties {
@@ -41,6 +56,17 @@ public:
     /// on full pipes. Never throws for the process's misbehaviour: that is in the replies.
     [[nodiscard]] std::vector<ResolverReply> exchange(const std::vector<std::string>& lines);
 
+    /// Sends the lines not already kept in one batch and keeps every answer (or failure), so
+    /// that exchanging them later costs nothing. Duplicates are sent once.
+    void prefetch(const std::vector<std::string>& lines);
+    /// Forgets the kept answers.
+    void clearKept() noexcept { kept_.clear(); }
+    /// Scenes sent to the resolver so far, and batches they went in.
+    [[nodiscard]] std::uint64_t scenesSent() const noexcept { return scenesSent_; }
+    [[nodiscard]] std::uint64_t batchesSent() const noexcept { return batchesSent_; }
+    /// True when the command has `{in}` and `{out}`: one run per batch, through files.
+    [[nodiscard]] bool fileMode() const noexcept { return fileMode_; }
+
     /// The command line, as given.
     [[nodiscard]] const std::string& command() const noexcept { return command_; }
     /// How many times the process was started (1 after the first batch when all went well).
@@ -49,6 +75,12 @@ public:
     void stop() noexcept;
 
 private:
+    /// Sends the lines to the resolver (no kept answers), one reply per line.
+    std::vector<ResolverReply> send(const std::vector<std::string>& lines);
+    /// File mode: runs the command once on lines[from..]; fills their replies; returns the index
+    /// of the first line not answered (== lines.size() when all were), with its failure set.
+    std::size_t runFileBatch(const std::vector<std::string>& lines, std::size_t from,
+                             std::vector<ResolverReply>& replies);
     bool start(std::string& why);
     /// Exchanges lines[from..] with the running process; fills replies; returns the index of
     /// the first line not answered (== lines.size() when all were), with its failure set.
@@ -66,6 +98,11 @@ private:
     std::string pending_;    ///< output read but not yet a whole line
     std::string errorTail_;  ///< the last bytes of its standard error
     int starts_ = 0;
+    bool fileMode_ = false;
+    std::string directory_;  ///< file mode: a private temporary directory for the two files
+    std::unordered_map<std::string, ResolverReply> kept_;
+    std::uint64_t scenesSent_ = 0;
+    std::uint64_t batchesSent_ = 0;
 };
 
 }  // namespace tilesweep::properties

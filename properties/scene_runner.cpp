@@ -74,6 +74,18 @@ std::string OutsideSceneRunner<T>::answerText(const Scene<T>& scene) {
     return replies.front().line;
 }
 
+template <class T>
+std::vector<std::vector<FrameResult<T>>> RecordingSceneRunner<T>::runAll(
+    const std::vector<const Scene<T>*>& scenes) {
+    for (const Scene<T>* s : scenes) lines_.push_back(formatScene(*s));
+    throw RehearsalDone{};
+}
+
+template <class T>
+std::string RecordingSceneRunner<T>::answerText(const Scene<T>& scene) {
+    return formatFrames(runScene(scene));
+}
+
 template SceneRunner<float>* currentSceneRunner<float>() noexcept;
 template SceneRunner<double>* currentSceneRunner<double>() noexcept;
 template class ScopedSceneRunner<float>;
@@ -86,5 +98,7 @@ template std::vector<std::vector<FrameResult<double>>> resolveUnderTest<double>(
                                                                                 const Scene<double>&);
 template class OutsideSceneRunner<float>;
 template class OutsideSceneRunner<double>;
+template class RecordingSceneRunner<float>;
+template class RecordingSceneRunner<double>;
 
 }  // namespace tilesweep::properties

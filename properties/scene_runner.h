@@ -89,6 +89,32 @@ private:
     std::shared_ptr<ResolverProcess> process_;
 };
 
+/// Thrown by RecordingSceneRunner once it has noted a case's scenes: the case is rehearsed, not
+/// judged. Not a std::exception, so that no claim's error handling takes it for a failure; the
+/// property runner (property_suite.cpp) ends the case as a pass when it sees it.
+struct RehearsalDone {};
+
+/// Notes the line of every scene it is asked for (formatScene, as an outside runner would send
+/// it), then ends the case with RehearsalDone. `tilesweep check` rehearses a property round
+/// through it, prefetches the noted lines from the outside resolver in one batch
+/// (ResolverProcess::prefetch), and runs the same round again through an OutsideSceneRunner: the
+/// same seed makes the same cases (the generator and the coverage tags never depend on the
+/// resolver under test, and each claim asks for its scenes in one call), so the second run asks
+/// only for answers already kept; shrinking, which asks for new scenes, goes to the resolver one
+/// request at a time as before.
+template <class T>
+class RecordingSceneRunner final : public SceneRunner<T> {
+public:
+    explicit RecordingSceneRunner(std::vector<std::string>& lines) : lines_(lines) {}
+    [[nodiscard]] std::vector<std::vector<FrameResult<T>>> runAll(
+        const std::vector<const Scene<T>*>& scenes) override;
+    [[nodiscard]] std::string answerText(const Scene<T>& scene) override;
+    [[nodiscard]] std::string name() const override { return "tilesweep (recording)"; }
+
+private:
+    std::vector<std::string>& lines_;
+};
+
 extern template SceneRunner<float>* currentSceneRunner<float>() noexcept;
 extern template SceneRunner<double>* currentSceneRunner<double>() noexcept;
 extern template class ScopedSceneRunner<float>;
@@ -101,5 +127,7 @@ extern template std::vector<std::vector<FrameResult<double>>> resolveUnderTest<d
                                                                                        const Scene<double>&);
 extern template class OutsideSceneRunner<float>;
 extern template class OutsideSceneRunner<double>;
+extern template class RecordingSceneRunner<float>;
+extern template class RecordingSceneRunner<double>;
 
 }  // namespace tilesweep::properties

@@ -1,0 +1,485 @@
+// SPDX-License-Identifier: MIT
+// Engine rates (engine_rates.h): the scenes of each family drawn once per batch, judged once
+// against the exact reference, and answered by every engine in turn; workers own their cells and
+// their engines (one process each, for an outside resolver), merged at the end.
+#include "audit/engine_rates.h"
+
+#include "audit/scene_judge.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <stdexcept>
+#include <thread>
+#include <utility>
+
+namespace tilesweep::audit {
+namespace {
+
+/// How many reasons for a missing answer a cell keeps, as samples for the report.
+constexpr std::size_t kNoAnswerSamples = 3;
+
+std::string distanceName(double distance) {
+    if (distance == 0) return "0";
+    char text[32];
+    std::snprintf(text, sizeof text, "2^%d", static_cast<int>(std::lround(std::log2(distance))));
+    return text;
+}
+
+void record(RateCell& cell, const judge::SceneVerdict& v, std::uint64_t caseIndex) {
+    ++cell.scenes;
+    for (std::size_t m = 0; m < kMetricCount; ++m) {
+        if (!v.failed[m]) continue;
+        ++cell.failures[m];
+        cell.firstFailure[m] = std::min(cell.firstFailure[m], caseIndex);
+    }
+    if (v.restingEligible) ++cell.restingEligible;
+    cell.insideDepth = std::max(cell.insideDepth, v.insideDepth);
+    cell.shortfall = std::max(cell.shortfall, v.shortfall);
+    cell.overshoot = std::max(cell.overshoot, v.overshoot);
+}
+
+void recordNoAnswer(RateCell& cell, const std::string& why, std::uint64_t caseIndex) {
+    judge::SceneVerdict v;
+    v.failed[static_cast<std::size_t>(Metric::NoAnswer)] = true;
+    record(cell, v, caseIndex);
+    if (cell.noAnswerSamples.size() < kNoAnswerSamples) cell.noAnswerSamples.push_back(why.substr(0, 400));
+}
+
+/// A resolver of audit.h's implementations, in this process.
+class InProcessResolver final : public BatchResolver {
+public:
+    explicit InProcessResolver(Implementation impl) : impl_(std::move(impl)) {}
+    std::vector<EngineAnswer> resolve(const std::vector<Scene<float>>& scenes) override {
+        std::vector<EngineAnswer> answers(scenes.size());
+        for (std::size_t k = 0; k < scenes.size(); ++k) {
+            try {
+                answers[k].frames = runImplementation(impl_, scenes[k]);
+            } catch (const std::exception& e) {
+                answers[k].failure = e.what();
+            }
+        }
+        return answers;
+    }
+
+private:
+    Implementation impl_;
+};
+
+/// One batch of one family: the case indices it covers.
+struct Task {
+    std::size_t family;
+    std::vector<std::uint64_t> cases;
+};
+
+}  // namespace
+
+std::uint64_t RateCell::trials(Metric m) const noexcept {
+    return m == Metric::Snag ? restingEligible : scenes;
+}
+
+void RateCell::merge(const RateCell& other) {
+    scenes += other.scenes;
+    restingEligible += other.restingEligible;
+    for (std::size_t m = 0; m < kMetricCount; ++m) {
+        failures[m] += other.failures[m];
+        firstFailure[m] = std::min(firstFailure[m], other.firstFailure[m]);
+    }
+    insideDepth = std::max(insideDepth, other.insideDepth);
+    shortfall = std::max(shortfall, other.shortfall);
+    overshoot = std::max(overshoot, other.overshoot);
+    for (const std::string& s : other.noAnswerSamples)
+        if (noAnswerSamples.size() < kNoAnswerSamples) noAnswerSamples.push_back(s);
+}
+
+std::vector<Family> rateFamilies() {
+    std::vector<Family> f = {
+        {"uniform", FamilyKind::Uniform, 0, true}, {"near-corner", FamilyKind::NearCorner, 0, true},
+        {"tie", FamilyKind::Tie, 0, true},         {"seam", FamilyKind::Seam, 0, true},
+        {"tiny", FamilyKind::Tiny, 0, true},       {"high-speed", FamilyKind::HighSpeed, 0, true},
+    };
+    for (const double d : kRateDistances) f.push_back({"far-" + distanceName(d), FamilyKind::Far, d, true});
+    return f;
+}
+
+std::unique_ptr<BatchResolver> makeInProcessResolver(const Implementation& impl) {
+    return std::make_unique<InProcessResolver>(impl);
+}
+
+RatesResult measureRates(const RatesConfig& config, const std::vector<EngineSpec>& engines) {
+    if (config.shardCount < 1 || config.shardIndex < 0 || config.shardIndex >= config.shardCount)
+        throw std::invalid_argument("shard " + std::to_string(config.shardIndex) + "/" +
+                                    std::to_string(config.shardCount) + " is not K/N with 0 <= K < N");
+    const auto started = std::chrono::steady_clock::now();
+    RatesResult result;
+    result.config = config;
+    result.families = rateFamilies();
+    result.shards = {config.shardIndex};
+    for (const EngineSpec& e : engines) {
+        result.engines.push_back(e.name);
+        result.documentedTolerance.push_back(e.documentedTolerance);
+        result.toleranceNotes.push_back(e.toleranceNote);
+    }
+
+    // Batches interleave the families, so that progress advances evenly across them.
+    const std::uint64_t batch = std::max<std::uint64_t>(1, config.batch);
+    std::vector<Task> tasks;
+    std::uint64_t total = 0;
+    for (std::uint64_t first = 0; first < config.cases;
+         first += batch * static_cast<std::uint64_t>(config.shardCount))
+        for (std::size_t f = 0; f < result.families.size(); ++f) {
+            Task t{f, {}};
+            for (std::uint64_t c = first; c < config.cases && t.cases.size() < batch; ++c)
+                if (c % static_cast<std::uint64_t>(config.shardCount) ==
+                    static_cast<std::uint64_t>(config.shardIndex))
+                    t.cases.push_back(c);
+            total += t.cases.size();
+            if (!t.cases.empty()) tasks.push_back(std::move(t));
+        }
+
+    int jobs = config.jobs > 0 ? config.jobs : static_cast<int>(std::thread::hardware_concurrency());
+    jobs = std::max(1, std::min<int>(jobs, static_cast<int>(std::max<std::size_t>(1, tasks.size()))));
+    using Cells = std::vector<std::vector<RateCell>>;
+    std::vector<Cells> shards(static_cast<std::size_t>(jobs),
+                              Cells(engines.size(), std::vector<RateCell>(result.families.size())));
+    std::vector<std::string> errors(static_cast<std::size_t>(jobs));
+    std::atomic<std::size_t> next{0};
+    std::atomic<std::uint64_t> done{0};
+    std::atomic<bool> failed{false};
+
+    auto work = [&](std::size_t w) {
+        try {
+            std::vector<std::unique_ptr<BatchResolver>> resolvers(engines.size());
+            for (std::size_t t; (t = next.fetch_add(1)) < tasks.size();) {
+                const Task& task = tasks[t];
+                const Family& family = result.families[task.family];
+                std::vector<Scene<float>> scenes;
+                std::vector<std::uint64_t> cases;
+                scenes.reserve(task.cases.size());
+                for (const std::uint64_t c : task.cases) {
+                    Scene<float> s = generateScene<float>(family, config.seed, c);
+                    // A far map whose edges float cannot hold is not a scene of the contract.
+                    if (validateTileMap(s.map.view()) != MapError::None) continue;
+                    scenes.push_back(std::move(s));
+                    cases.push_back(c);
+                }
+                std::vector<judge::SceneJudge<float>> judges;
+                judges.reserve(scenes.size());
+                for (const Scene<float>& s : scenes) judges.emplace_back(s);
+                for (std::size_t e = 0; e < engines.size(); ++e) {
+                    if (!resolvers[e]) resolvers[e] = engines[e].make();
+                    const std::vector<EngineAnswer> answers = resolvers[e]->resolve(scenes);
+                    std::vector<RateCell>& row = shards[w][e];
+                    for (std::size_t k = 0; k < scenes.size(); ++k) {
+                        RateCell& cell = row[task.family];
+                        if (k >= answers.size()) {
+                            recordNoAnswer(cell, "the resolver returned fewer answers than scenes", cases[k]);
+                        } else if (!answers[k].failure.empty()) {
+                            recordNoAnswer(cell, answers[k].failure, cases[k]);
+                        } else if (answers[k].frames.size() != scenes[k].moves.size()) {
+                            recordNoAnswer(cell,
+                                           "answered " + std::to_string(answers[k].frames.size()) +
+                                               " frames for a scene of " +
+                                               std::to_string(scenes[k].moves.size()),
+                                           cases[k]);
+                        } else {
+                            record(cell, judges[k].judge(answers[k].frames), cases[k]);
+                        }
+                    }
+                }
+                done.fetch_add(task.cases.size());
+            }
+        } catch (const std::exception& e) {
+            errors[w] = e.what();
+            failed.store(true);
+            next.store(tasks.size());
+        }
+    };
+    std::vector<std::thread> threads;
+    for (int w = 0; w < jobs; ++w) threads.emplace_back(work, static_cast<std::size_t>(w));
+    for (int tick = 0; done.load() < total && !failed.load(); ++tick) {
+        if (config.progress && tick % 10 == 0) config.progress(done.load(), total);
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    for (std::thread& t : threads) t.join();
+    for (const std::string& e : errors)
+        if (!e.empty()) throw std::runtime_error("rates worker failed: " + e);
+    if (config.progress) config.progress(total, total);
+
+    result.cells.assign(engines.size(), std::vector<RateCell>(result.families.size()));
+    for (const Cells& s : shards)
+        for (std::size_t e = 0; e < engines.size(); ++e)
+            for (std::size_t f = 0; f < result.families.size(); ++f) result.cells[e][f].merge(s[e][f]);
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return result;
+}
+
+// ---- JSON -----------------------------------------------------------------------------------
+
+std::string ratesJson(const RatesResult& r) {
+    nlohmann::ordered_json j;
+    j["kind"] = "tilesweep-rates";
+    j["seed"] = r.config.seed;
+    j["cases"] = r.config.cases;
+    j["shard_count"] = r.config.shardCount;
+    j["shards"] = r.shards;
+    j["seconds"] = r.seconds;
+    j["distances"] = kRateDistances;
+    for (std::size_t e = 0; e < r.engines.size(); ++e)
+        j["engines"].push_back({{"name", r.engines[e]},
+                                {"documented_tolerance", r.documentedTolerance[e]},
+                                {"tolerance_note", r.toleranceNotes[e]}});
+    for (const Family& f : r.families) j["families"].push_back({{"name", f.name}, {"distance", f.magnitude}});
+    for (std::size_t e = 0; e < r.engines.size(); ++e) {
+        nlohmann::ordered_json row = nlohmann::ordered_json::array();
+        for (const RateCell& c : r.cells[e]) {
+            nlohmann::ordered_json cj;
+            cj["scenes"] = c.scenes;
+            cj["resting_eligible"] = c.restingEligible;
+            for (std::size_t m = 0; m < kMetricCount; ++m) {
+                const char* name = metricName(static_cast<Metric>(m));
+                cj["failures"][name] = c.failures[m];
+                if (c.firstFailure[m] != RateCell::kNoCase) cj["first_failure"][name] = c.firstFailure[m];
+            }
+            cj["inside_depth"] = c.insideDepth;
+            cj["shortfall"] = c.shortfall;
+            cj["overshoot"] = c.overshoot;
+            cj["no_answer_samples"] = c.noAnswerSamples;
+            row.push_back(cj);
+        }
+        j["cells"].push_back(row);
+    }
+    return j.dump(1) + "\n";
+}
+
+RatesResult readRatesJson(const std::string& text) {
+    const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+    if (j.is_discarded() || !j.is_object() || j.value("kind", "") != "tilesweep-rates")
+        throw std::runtime_error("not a rates file (tilesweep audit --rates-json writes one)");
+    try {
+        RatesResult r;
+        r.config.seed = j.at("seed").get<std::uint64_t>();
+        r.config.cases = j.at("cases").get<std::uint64_t>();
+        r.config.shardCount = j.at("shard_count").get<int>();
+        r.shards = j.at("shards").get<std::vector<int>>();
+        r.seconds = j.at("seconds").get<double>();
+        const std::vector<Family> known = rateFamilies();
+        for (const auto& f : j.at("families")) {
+            const std::string name = f.at("name").get<std::string>();
+            const auto it =
+                std::find_if(known.begin(), known.end(), [&](const Family& k) { return k.name == name; });
+            if (it == known.end()) throw std::runtime_error("families: unknown family '" + name + "'");
+            r.families.push_back(*it);
+        }
+        for (const auto& e : j.at("engines")) {
+            r.engines.push_back(e.at("name").get<std::string>());
+            r.documentedTolerance.push_back(e.at("documented_tolerance").get<double>());
+            r.toleranceNotes.push_back(e.at("tolerance_note").get<std::string>());
+        }
+        for (const auto& row : j.at("cells")) {
+            std::vector<RateCell> cells;
+            for (const auto& cj : row) {
+                RateCell c;
+                c.scenes = cj.at("scenes").get<std::uint64_t>();
+                c.restingEligible = cj.at("resting_eligible").get<std::uint64_t>();
+                for (std::size_t m = 0; m < kMetricCount; ++m) {
+                    const char* name = metricName(static_cast<Metric>(m));
+                    c.failures[m] = cj.at("failures").value(name, std::uint64_t{0});
+                    if (cj.contains("first_failure") && cj["first_failure"].contains(name))
+                        c.firstFailure[m] = cj["first_failure"][name].get<std::uint64_t>();
+                }
+                c.insideDepth = cj.at("inside_depth").get<double>();
+                c.shortfall = cj.at("shortfall").get<double>();
+                c.overshoot = cj.at("overshoot").get<double>();
+                c.noAnswerSamples = cj.at("no_answer_samples").get<std::vector<std::string>>();
+                cells.push_back(std::move(c));
+            }
+            if (cells.size() != r.families.size())
+                throw std::runtime_error("cells: a row per family expected");
+            r.cells.push_back(std::move(cells));
+        }
+        if (r.cells.size() != r.engines.size()) throw std::runtime_error("cells: a row per engine expected");
+        return r;
+    } catch (const nlohmann::json::exception& e) {
+        throw std::runtime_error(std::string("malformed rates file: ") + e.what());
+    }
+}
+
+RatesResult mergeRates(const std::vector<RatesResult>& shards) {
+    if (shards.empty()) throw std::invalid_argument("nothing to merge");
+    RatesResult merged = shards.front();
+    for (std::size_t k = 1; k < shards.size(); ++k) {
+        const RatesResult& s = shards[k];
+        if (s.config.seed != merged.config.seed || s.config.cases != merged.config.cases ||
+            s.config.shardCount != merged.config.shardCount || s.engines != merged.engines ||
+            s.families.size() != merged.families.size())
+            throw std::invalid_argument(
+                "shard " + std::to_string(k + 1) +
+                " is of another run (seed, cases, shard count, engines or families differ)");
+        for (const int index : s.shards) {
+            if (std::find(merged.shards.begin(), merged.shards.end(), index) != merged.shards.end())
+                throw std::invalid_argument("shard " + std::to_string(index) + " is given twice");
+            merged.shards.push_back(index);
+        }
+        for (std::size_t e = 0; e < merged.cells.size(); ++e)
+            for (std::size_t f = 0; f < merged.cells[e].size(); ++f) merged.cells[e][f].merge(s.cells[e][f]);
+        merged.seconds += s.seconds;
+    }
+    std::sort(merged.shards.begin(), merged.shards.end());
+    return merged;
+}
+
+// ---- Markdown -------------------------------------------------------------------------------
+
+namespace {
+
+std::string percent(double share) {
+    char text[32];
+    if (share == 0) return "0";
+    if (share >= 0.1) {
+        std::snprintf(text, sizeof text, "%.0f%%", 100 * share);
+    } else if (share >= 0.001) {
+        std::snprintf(text, sizeof text, "%.2g%%", 100 * share);
+    } else {
+        std::snprintf(text, sizeof text, "%.1g%%", 100 * share);
+    }
+    return text;
+}
+
+/// "1.2% [0.9, 1.6]": the share and its 95% Wilson interval, in percent; "–" with no trials.
+std::string rateText(std::uint64_t failures, std::uint64_t trials) {
+    if (trials == 0) return "–";
+    const RateInterval ci = wilsonInterval(failures, trials);
+    const std::string share = percent(static_cast<double>(failures) / static_cast<double>(trials));
+    std::string low = percent(ci.low), high = percent(ci.high);
+    if (!low.empty() && low.back() == '%') low.pop_back();
+    return (failures > 0 ? "**" + share + "**" : share) + " [" + low + ", " + high + "]";
+}
+
+std::string pixels(double v) {
+    if (v == 0) return "0";
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", v);
+    return text;
+}
+
+const char* metricHeading(Metric m) {
+    switch (m) {
+        case Metric::Tunnel:
+            return "tunnels";
+        case Metric::Inside:
+            return "ends inside";
+        case Metric::Short:
+            return "stops short";
+        case Metric::Overshoot:
+            return "passes the end";
+        case Metric::Missed:
+            return "misses a contact";
+        case Metric::Extra:
+            return "wrong tile/normal";
+        case Metric::Snag:
+            return "snags (of resting)";
+        case Metric::Inexact:
+            return "not bit-exact";
+        case Metric::NoAnswer:
+            return "no answer";
+        default:
+            return metricName(m);
+    }
+}
+
+}  // namespace
+
+std::string ratesMarkdown(const RatesResult& r) {
+    std::string md;
+    char text[512];
+    std::snprintf(
+        text, sizeof text,
+        "Seed %llu, %llu scenes per family (float), shards %zu of %d; every engine answers the same "
+        "scenes. A cell is the share of scenes that broke the claim, in bold when any did, with its "
+        "95%% Wilson interval; snags are counted among the scenes that start resting on a floor.\n\n",
+        static_cast<unsigned long long>(r.config.seed), static_cast<unsigned long long>(r.config.cases),
+        r.shards.size(), r.config.shardCount);
+    md += text;
+
+    // The headline: every engine, over all families.
+    md += "| engine | scenes |";
+    for (const Metric m : kRateMetrics) md += std::string(" ") + metricHeading(m) + " |";
+    md += "\n|---|---:|";
+    for (std::size_t k = 0; k < kRateMetrics.size(); ++k) md += "---|";
+    md += "\n";
+    for (std::size_t e = 0; e < r.engines.size(); ++e) {
+        RateCell all;
+        for (const RateCell& c : r.cells[e]) all.merge(c);
+        md += "| " + r.engines[e] + " | " + std::to_string(all.scenes) + " |";
+        for (const Metric m : kRateMetrics)
+            md += " " + rateText(all.failures[static_cast<std::size_t>(m)], all.trials(m)) + " |";
+        md += "\n";
+    }
+
+    for (std::size_t e = 0; e < r.engines.size(); ++e) {
+        md += "\n### Rates: " + r.engines[e] + "\n\n| family | scenes |";
+        for (const Metric m : kRateMetrics) md += std::string(" ") + metricHeading(m) + " |";
+        md += "\n|---|---:|";
+        for (std::size_t k = 0; k < kRateMetrics.size(); ++k) md += "---|";
+        md += "\n";
+        for (std::size_t f = 0; f < r.families.size(); ++f) {
+            const RateCell& c = r.cells[e][f];
+            md += "| " + r.families[f].name + " | " + std::to_string(c.scenes) + " |";
+            for (const Metric m : kRateMetrics)
+                md += " " + rateText(c.failures[static_cast<std::size_t>(m)], c.trials(m)) + " |";
+            md += "\n";
+        }
+
+        // The tolerance each safety claim would need, by distance from the origin.
+        md +=
+            "\nTolerance under which each claim would hold (the largest breach, pixels), by distance from "
+            "the origin (the far families: the same local scenes, translated)";
+        if (r.documentedTolerance[e] > 0)
+            md += "; the engine's own: " + r.toleranceNotes[e] + " = " + pixels(r.documentedTolerance[e]) +
+                  " px";
+        md +=
+            ":\n\n| distance | deepest inside a tile | farthest short of touching | farthest past the exact "
+            "end |\n"
+            "|---|---:|---:|---:|\n";
+        for (std::size_t f = 0; f < r.families.size(); ++f) {
+            if (r.families[f].kind != FamilyKind::Far) continue;
+            const RateCell& c = r.cells[e][f];
+            const double tol = r.documentedTolerance[e];
+            auto cell = [&](double v) { return pixels(v) + (tol > 0 && v > tol ? " (over)" : ""); };
+            md += "| " + distanceName(r.families[f].magnitude) + " | " + cell(c.insideDepth) + " | " +
+                  cell(c.shortfall) + " | " + cell(c.overshoot) + " |\n";
+        }
+
+        // Where to look: the first failing case of each claim, and why answers were missing.
+        std::string firsts;
+        for (const Metric m : kRateMetrics) {
+            for (std::size_t f = 0; f < r.families.size(); ++f) {
+                const std::uint64_t c = r.cells[e][f].firstFailure[static_cast<std::size_t>(m)];
+                if (c == RateCell::kNoCase) continue;
+                const Scene<float> s = generateScene<float>(r.families[f], r.config.seed, c);
+                firsts += std::string("- ") + metricHeading(m) + ", " + r.families[f].name + " case " +
+                          std::to_string(c) + ": `" + formatScene(s) + "`\n";
+                break;
+            }
+        }
+        if (!firsts.empty())
+            md +=
+                "\nFirst failing scene of each claim (replay with `tilesweep resolve --resolver-cmd`):\n\n" +
+                firsts;
+        std::string samples;
+        for (std::size_t f = 0; f < r.families.size(); ++f)
+            for (const std::string& s : r.cells[e][f].noAnswerSamples)
+                samples += "- " + r.families[f].name + ": " + s + "\n";
+        if (!samples.empty())
+            md += "\nNo answer, some reasons (with the engine's output tail):\n\n" + samples;
+    }
+    return md;
+}
+
+}  // namespace tilesweep::audit

@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+// Engine rates: how often, where and by how much a resolver breaks each claim. Every resolver
+// (an engine behind `tilesweep resolve`'s protocol, or one of tilesweep's own implementations)
+// answers the same float scenes, drawn per family from one seed, a batch at a time; each scene
+// is judged frame by frame against the exact reference (scene_judge.h). The figures per
+// (resolver, family): the share of scenes that break each claim, with a 95% Wilson interval,
+// and the largest distance by which a safety claim broke (how deep inside a tile, how far
+// short of touching, how far past the exact end): the tolerance under which it would hold.
+// The far families are the same local scenes translated by each distance of kRateDistances,
+// so that the tolerance is a function of the distance from the origin.
+//
+//     RatesConfig config;  config.cases = 2000;
+//     RatesResult r = measureRates(config, {{"godot", [] { return makeGodot(); }, 0.08, "safe margin"}});
+//     writeRatesJson(r, "rates.json");  std::string md = ratesMarkdown(r);
+//
+// Shards: a run with `shardCount` N and `shardIndex` K takes the cases whose index is K mod N, so
+// N machines cover the same cases as one; mergeRates adds their results up (rates.json files
+// read back with readRatesJson).
+
+#include "audit/audit.h"
+#include "audit/scene_families.h"
+#include "audit/wilson_interval.h"
+
+#include "tilesweep/scene/scene.h"
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace tilesweep::audit {
+
+/// One scene's answer from a resolver: its frames, or why there are none.
+struct EngineAnswer {
+    std::vector<FrameResult<float>> frames;
+    std::string failure;  ///< non-empty: no usable answer (crash, hang, garbage, an error line)
+};
+
+/// A resolver whose rates are measured, answering a batch of scenes at once. Each worker thread
+/// makes its own.
+class BatchResolver {
+public:
+    virtual ~BatchResolver() = default;
+    /// One answer per scene, in order. Never throws for the resolver's misbehaviour.
+    [[nodiscard]] virtual std::vector<EngineAnswer> resolve(const std::vector<Scene<float>>& scenes) = 0;
+};
+
+/// A resolver to measure.
+struct EngineSpec {
+    std::string name;                                      ///< "godot", "rapier", "tilesweep", ...
+    std::function<std::unique_ptr<BatchResolver>()> make;  ///< called once per worker thread
+    double documentedTolerance = 0;  ///< the engine's own tolerance, in pixels (0: none stated)
+    std::string toleranceNote;       ///< what that tolerance is ("safe margin 0.08 px")
+};
+
+/// The distances from the origin the far families are measured at, in pixels.
+inline const std::vector<double> kRateDistances = {0, 0x1p10, 0x1p16, 0x1p20, 0x1p24};
+
+/// The metrics a rates table shows, in order: the claims a game developer asks about.
+inline const std::vector<Metric> kRateMetrics = {Metric::Tunnel,    Metric::Inside,  Metric::Short,
+                                                 Metric::Overshoot, Metric::Missed,  Metric::Extra,
+                                                 Metric::Snag,      Metric::Inexact, Metric::NoAnswer};
+
+/// The families of a rates run: the drawn families at the origin, then far-<d> for each distance.
+[[nodiscard]] std::vector<Family> rateFamilies();
+
+/// The figures of one resolver on one family.
+struct RateCell {
+    std::uint64_t scenes = 0;
+    std::array<std::uint64_t, kMetricCount> failures{};
+    std::uint64_t restingEligible = 0;  ///< scenes with a frame that starts resting on a floor (snag)
+    double insideDepth = 0;             ///< the largest depth inside a tile, pixels
+    double shortfall = 0;               ///< the largest distance short of touching, pixels
+    double overshoot = 0;               ///< the largest distance past the exact end, pixels
+    /// The lowest case index that broke each metric (regenerate it with generateScene), or none.
+    std::array<std::uint64_t, kMetricCount> firstFailure;
+    std::vector<std::string> noAnswerSamples;  ///< a few reasons the resolver gave no answer
+
+    RateCell() { firstFailure.fill(kNoCase); }
+    static constexpr std::uint64_t kNoCase = ~std::uint64_t{0};
+
+    /// The scenes a metric's share is out of (the resting ones for snag, else all).
+    [[nodiscard]] std::uint64_t trials(Metric m) const noexcept;
+    /// Adds another shard's figures.
+    void merge(const RateCell& other);
+};
+
+/// What to run.
+struct RatesConfig {
+    std::uint64_t cases = 2000;     ///< scenes per family (before sharding)
+    std::uint64_t seed = 20261122;  ///< every scene derives from it
+    int jobs = 0;                   ///< worker threads; 0: all cores
+    int shardIndex = 0;             ///< this run takes the cases whose index is shardIndex mod shardCount
+    int shardCount = 1;
+    std::uint64_t batch = 1000;  ///< scenes per batch sent to a resolver
+    /// Called from the coordinating thread now and then: (scenes judged, scenes in all).
+    std::function<void(std::uint64_t, std::uint64_t)> progress;
+};
+
+/// Everything a rates run found.
+struct RatesResult {
+    RatesConfig config;
+    std::vector<std::string> engines;
+    std::vector<double> documentedTolerance;  ///< per engine
+    std::vector<std::string> toleranceNotes;  ///< per engine
+    std::vector<Family> families;
+    std::vector<std::vector<RateCell>> cells;  ///< [engine][family]
+    std::vector<int> shards;                   ///< the shard indices merged into this result
+    double seconds = 0;
+};
+
+/// Runs every engine on every family. Deterministic for a given seed, case count and shard.
+[[nodiscard]] RatesResult measureRates(const RatesConfig& config, const std::vector<EngineSpec>& engines);
+
+/// A scalar's view of results in JSON text, and back; throws std::runtime_error on a malformed file.
+[[nodiscard]] std::string ratesJson(const RatesResult& result);
+[[nodiscard]] RatesResult readRatesJson(const std::string& text);
+
+/// Adds up shards of the same run (same seed, cases, engines and families); throws
+/// std::invalid_argument when they are not, or when a shard appears twice.
+[[nodiscard]] RatesResult mergeRates(const std::vector<RatesResult>& shards);
+
+/// The Markdown section: per engine the rate table (families by metrics, share and interval)
+/// and the tolerance table (distance by claim), with the first failing scene of each metric.
+[[nodiscard]] std::string ratesMarkdown(const RatesResult& result);
+
+/// `tilesweep audit`'s engine implementations as batch resolvers (tilesweep, twin, grid), in
+/// process: the same scene population, for comparison.
+[[nodiscard]] std::unique_ptr<BatchResolver> makeInProcessResolver(const Implementation& impl);
+
+}  // namespace tilesweep::audit

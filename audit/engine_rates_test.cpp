@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: MIT
+// Engine rates on a small budget: tilesweep reads zero on every claim, a game-style baseline
+// does not, a resolver's missing answers are counted per scene without losing the rest, shards
+// add up to the whole run, and the JSON file reads back as written.
+#include "audit/engine_rates.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace tilesweep::audit {
+namespace {
+
+constexpr std::uint64_t kCases = 40;
+
+Implementation implementation(const std::string& name) {
+    for (const Implementation& impl : auditImplementations())
+        if (impl.name == name) return impl;
+    throw std::out_of_range(name);
+}
+
+EngineSpec inProcess(const std::string& name, const std::string& implementationName) {
+    const Implementation impl = implementation(implementationName);
+    return {name, [impl] { return makeInProcessResolver(impl); }, 0, ""};
+}
+
+/// Answers every third scene with a failure and the others with tilesweep's frames.
+class FlakyResolver final : public BatchResolver {
+public:
+    std::vector<EngineAnswer> resolve(const std::vector<Scene<float>>& scenes) override {
+        std::vector<EngineAnswer> answers(scenes.size());
+        for (std::size_t k = 0; k < scenes.size(); ++k) {
+            if (++count_ % 3 == 0)
+                answers[k].failure = "the engine crashed";
+            else
+                answers[k].frames = runScene(scenes[k]);
+        }
+        return answers;
+    }
+
+private:
+    int count_ = 0;
+};
+
+RatesResult run(int shardIndex = 0, int shardCount = 1) {
+    RatesConfig config;
+    config.cases = kCases;
+    config.seed = 11;
+    config.jobs = 2;
+    config.batch = 16;
+    config.shardIndex = shardIndex;
+    config.shardCount = shardCount;
+    return measureRates(config, {inProcess("tilesweep", "core-float"),
+                                 inProcess("twin", "twin-float"),
+                                 {"flaky", [] { return std::make_unique<FlakyResolver>(); }, 0.08, "note"}});
+}
+
+std::uint64_t total(const RatesResult& r, std::size_t engine, Metric m) {
+    std::uint64_t n = 0;
+    for (const RateCell& c : r.cells[engine]) n += c.failures[static_cast<std::size_t>(m)];
+    return n;
+}
+
+TEST(WilsonInterval, coversTheShareAndIsExactAtTheEnds) {
+    const RateInterval none = wilsonInterval(0, 3000);
+    EXPECT_EQ(none.low, 0.0);
+    EXPECT_NEAR(none.high, 0.00128, 0.00002);  // about 3.84/n
+    const RateInterval half = wilsonInterval(50, 100);
+    EXPECT_LT(half.low, 0.5);
+    EXPECT_GT(half.high, 0.5);
+    EXPECT_NEAR(half.low, 0.4038, 0.0005);
+    EXPECT_NEAR(half.high, 0.5962, 0.0005);
+    EXPECT_EQ(wilsonInterval(7, 7).high, 1.0);
+    const RateInterval nothing = wilsonInterval(0, 0);
+    EXPECT_EQ(nothing.low, 0.0);
+    EXPECT_EQ(nothing.high, 1.0);
+}
+
+TEST(EngineRates, tilesweepReadsZeroAndTheTwinDoesNot) {
+    const RatesResult r = run();
+    ASSERT_EQ(r.engines.size(), 3u);
+    for (std::size_t f = 0; f < r.families.size(); ++f) {
+        const RateCell& c = r.cells[0][f];
+        EXPECT_GT(c.scenes, 0u) << r.families[f].name;
+        for (std::size_t m = 0; m < kMetricCount; ++m)
+            EXPECT_EQ(c.failures[m], 0u) << r.families[f].name << " " << metricName(static_cast<Metric>(m));
+        EXPECT_EQ(c.insideDepth, 0.0);
+        EXPECT_EQ(c.shortfall, 0.0);
+        EXPECT_EQ(c.overshoot, 0.0);
+    }
+    EXPECT_GT(total(r, 1, Metric::Inexact), 0u);
+    EXPECT_GT(total(r, 1, Metric::Inside) + total(r, 1, Metric::Overshoot) + total(r, 1, Metric::Missed), 0u);
+}
+
+TEST(EngineRates, missingAnswersAreCountedPerSceneAndTheRestJudged) {
+    const RatesResult r = run();
+    std::uint64_t scenes = 0;
+    for (const RateCell& c : r.cells[2]) scenes += c.scenes;
+    const std::uint64_t missing = total(r, 2, Metric::NoAnswer);
+    EXPECT_GT(missing, scenes / 4);
+    EXPECT_LT(missing, scenes / 2);
+    EXPECT_EQ(total(r, 2, Metric::Inside), 0u);  // the answered scenes are tilesweep's: exact
+    EXPECT_EQ(total(r, 2, Metric::Inexact), 0u);
+    EXPECT_FALSE(r.cells[2][0].noAnswerSamples.empty());
+}
+
+TEST(EngineRates, shardsAddUpToTheWholeRun) {
+    const RatesResult whole = run();
+    const RatesResult merged = mergeRates({run(2, 3), run(0, 3), run(1, 3)});
+    EXPECT_EQ(merged.shards, (std::vector<int>{0, 1, 2}));
+    for (std::size_t e = 0; e < 2; ++e)  // the flaky engine fails by call count, not by scene
+        for (std::size_t f = 0; f < whole.families.size(); ++f) {
+            const RateCell& a = whole.cells[e][f];
+            const RateCell& b = merged.cells[e][f];
+            EXPECT_EQ(a.scenes, b.scenes);
+            EXPECT_EQ(a.failures, b.failures) << whole.engines[e] << " " << whole.families[f].name;
+            EXPECT_EQ(a.firstFailure, b.firstFailure);
+            EXPECT_EQ(a.insideDepth, b.insideDepth);
+            EXPECT_EQ(a.overshoot, b.overshoot);
+        }
+    EXPECT_THROW((void)mergeRates({run(0, 3), run(0, 3)}), std::invalid_argument);
+    EXPECT_THROW((void)mergeRates({run(0, 3), run(0, 2)}), std::invalid_argument);
+}
+
+TEST(EngineRates, jsonReadsBackAsWritten) {
+    const RatesResult r = run();
+    const RatesResult back = readRatesJson(ratesJson(r));
+    EXPECT_EQ(ratesJson(back), ratesJson(r));
+    EXPECT_EQ(ratesMarkdown(back), ratesMarkdown(r));
+    EXPECT_THROW((void)readRatesJson("{\"kind\": \"something else\"}"), std::runtime_error);
+    EXPECT_THROW((void)readRatesJson("not json"), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace tilesweep::audit
