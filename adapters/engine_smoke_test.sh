@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Smoke test of an engine adapter (adapters/godot, adapters/rapier): runs it on a few scenes and
 # checks that it answers one line per scene, in order, with as many frames as tilesweep's own
-# answer, and an error exactly where tilesweep gives one. Exits 77 (ctest's skip code here) with
+# answer, and an error exactly where tilesweep gives one; then that tilesweep reads back every
+# answer to a valid scene through --resolver-cmd (file mode for Godot, pipe mode for Rapier). Exits 77 (ctest's skip code here) with
 # "skipped: ..." when the engine's runtime is not installed: the adapters install it on demand,
 # a test does not.
 #
@@ -44,4 +45,17 @@ if ! diff "$work/expected.shape" "$work/answers.shape" > "$work/diff"; then
     cat "$work/diff"
     exit 1
 fi
-echo "$engine: $(wc -l < "$work/answers.jsonl") answers, one per scene, with the expected frames and errors"
+# Every answer to a valid scene, read back by tilesweep exactly as check and audit read it.
+paste -d '\n' "$work/expected.shape" "$work/scenes.jsonl" | awk 'NR % 2 == 1 { keep = ($0 != "error") } NR % 2 == 0 && keep' \
+    > "$work/valid.jsonl"
+case $engine in
+    godot) command="$here/godot/run.sh {in} {out}" ;;
+    rapier) command="$here/rapier/run.sh" ;;
+esac
+if ! "$tilesweep" resolve --scalar float --resolver-cmd "$command" "$work/valid.jsonl" > "$work/read-back.jsonl" 2>&1; then
+    echo "tilesweep could not read every answer of the $engine adapter:"
+    grep '"error"' "$work/read-back.jsonl" | head -n 5
+    exit 1
+fi
+echo "$engine: $(wc -l < "$work/answers.jsonl") answers, one per scene, with the expected frames and errors," \
+    "$(wc -l < "$work/valid.jsonl") of them read back by tilesweep resolve --resolver-cmd"
