@@ -1,8 +1,9 @@
 # SPDX-License-Identifier: MIT
-# Godot 3 (Physics2DServer, GDScript, headless) behind tilesweep's resolver protocol, in file
-# mode: reads the scene lines of IN, writes one answer line per scene to OUT, in order, each
-# flushed to the file before the next scene is read. Written the way a Godot user writes a tile
-# platformer's mover, not tuned to the contract:
+# Godot 3 (Physics2DServer, GDScript, headless) behind tilesweep's resolver protocol. File mode
+# reads the scene lines of IN and writes one answer line per scene to OUT, in order, each put on
+# disk before the next scene is read; follow mode (run.sh's pipe mode) answers lines as they are
+# appended to IN. Written the way a Godot user writes a tile platformer's mover, not tuned to the
+# contract:
 #
 #   - the map is built as TileMap builds it: per solid cell a static body at the cell's top-left
 #     corner holding one RectangleShape2D of the tile's half size, offset by that half size;
@@ -15,7 +16,8 @@
 #   - started_overlapping is computed from the map by the contract's definition (interiors
 #     intersect), since Godot counts touching as overlapping.
 #
-#     godot3-server --no-window -s adapter.gd IN OUT       (run.sh does this)
+#     godot3-server --no-window -s adapter.gd IN OUT                       (run.sh IN OUT)
+#     godot3-server --no-window -s adapter.gd --follow IN OUT WATCHED_PID  (run.sh, pipe mode)
 extends SceneTree
 
 # Godot's default safe margin (KinematicBody2D.collision/safe_margin), in pixels.
@@ -25,9 +27,9 @@ const SAFE_MARGIN = 0.08
 # cells than this is refused with an error line, as a game would refuse such a speed, instead of
 # stalling the batch: 2^30 cells took 2 to 4.5 s here (a move of 2^37 pixels down), and the
 # issue's move of (-1.8e17, -6.4e37) is 2^62 of them (out-of-range coordinates become INT_MIN)
-# and never returned. 2^26 cells is a straight move of 2^33 pixels, or 2^20 on both axes.
+# and never returned. 2^22 cells is a straight move of 2^29 pixels, or 2^18 on both axes.
 const BROADPHASE_CELL = 128.0
-const MAX_BROADPHASE_CELLS = 1 << 26
+const MAX_BROADPHASE_CELLS = 1 << 22
 # Bodies made at start (a map that needs more doubles the pool), and where unused ones wait.
 # 256 bodies take about 0.05 s to make; 1,024 took 0.25 s, paid by every batch.
 const POOL_START = 256
@@ -54,9 +56,11 @@ var hex_cache = {}       # hexfloat text -> its float32 value
 
 
 func _init():
-	var args = OS.get_cmdline_args()
-	if args.size() < 2:
+	var args = Array(OS.get_cmdline_args())
+	var follow = args.find("--follow")
+	if args.size() < 2 or (follow >= 0 and args.size() < follow + 4):
 		printerr("usage: godot3-server --no-window -s adapter.gd IN OUT")
+		printerr("       godot3-server --no-window -s adapter.gd --follow IN OUT WATCHED_PID")
 		quit(2)
 		return
 	space = ps.space_create()
@@ -66,32 +70,110 @@ func _init():
 	ps.body_add_shape(box_body, box_shape)
 	ps.body_attach_object_instance_id(box_body, owner_ref.get_instance_id())
 	ps.body_set_space(box_body, space)
+	# The broad phase orders a cell's objects by the address of their entries (see place_map).
+	# Bodies made first fill the allocator's holes, whose order depends on what ran before
+	# (arguments, mode); made next, the pool's entries come in creation order whatever ran
+	# before, which keeps answers the same from one batch, or mode, to another.
+	var fillers = []
+	for k in range(POOL_START):
+		var filler = ps.body_create()
+		ps.body_add_shape(filler, ps.rectangle_shape_create())
+		ps.body_set_state(filler, Physics2DServer.BODY_STATE_TRANSFORM, PARKED)
+		ps.body_set_space(filler, space)
+		fillers.append(filler)
 	for k in range(POOL_START):
 		add_pool_body()
-	quit(answer_file(args[args.size() - 2], args[args.size() - 1]))
+	if follow >= 0:
+		quit(follow_file(args[follow + 1], args[follow + 2], int(args[follow + 3])))
+	else:
+		quit(answer_file(args[args.size() - 2], args[args.size() - 1]))
 
 
+# Answers go to `out_path` one line at a time. File has no flush in Godot 3.2: closing and
+# reopening puts each line on disk, so that a crash or a hang later still leaves the answers so
+# far, and a reader following the file sees each answer at once.
+var output = File.new()
+var output_path = ""
+
+
+func open_output(path):
+	output_path = path
+	return output.open(path, File.WRITE)
+
+
+func write_answer(line):
+	output.store_string(answer(line) + "\n")
+	output.close()
+	output.open(output_path, File.READ_WRITE)
+	output.seek_end()
+
+
+# File mode: every scene line of in_path, then exit.
 func answer_file(in_path, out_path):
 	var input = File.new()
 	if input.open(in_path, File.READ) != OK:
 		printerr("godot adapter: cannot read ", in_path)
 		return 2
-	var output = File.new()
-	if output.open(out_path, File.WRITE) != OK:
+	if open_output(out_path) != OK:
 		printerr("godot adapter: cannot write ", out_path)
 		return 2
 	while not input.eof_reached():
 		var line = input.get_line()
-		if line.strip_edges() == "":
-			continue
-		output.store_string(answer(line) + "\n")
-		# File has no flush in Godot 3.2: closing and reopening puts the line on disk, so that a
-		# crash or a hang later in the batch still leaves the answers so far.
-		output.close()
-		output.open(out_path, File.READ_WRITE)
-		output.seek_end()
+		if line.strip_edges() != "":
+			write_answer(line)
 	output.close()
 	input.close()
+	return 0
+
+
+# The line run.sh appends to the followed file when its standard input ends.
+const END_OF_INPUT = "tilesweep-end-of-input"
+# How long to sleep when the followed file has nothing new (milliseconds), and how many such
+# sleeps between two looks at whether the process that feeds it is still alive.
+const FOLLOW_POLL_MSEC = 1
+const FOLLOW_POLLS_PER_LIVENESS_CHECK = 500
+
+
+# Pipe mode, for run.sh without arguments (Godot 3.2 cannot read a pipe): run.sh appends its
+# standard input to in_path as it comes and prints out_path as it grows; this answers each
+# complete line of in_path as soon as it is there, until END_OF_INPUT, or until the process
+# `watched_pid` (run.sh) is gone.
+func follow_file(in_path, out_path, watched_pid):
+	if open_output(out_path) != OK:
+		printerr("godot adapter: cannot write ", out_path)
+		return 2
+	var input = File.new()
+	var offset = 0
+	var idle = 0
+	var proc = Directory.new()
+	while true:
+		var lines = []
+		if input.open(in_path, File.READ) == OK:
+			var size = input.get_len()
+			if size > offset:
+				input.seek(offset)
+				var bytes = input.get_buffer(size - offset)
+				var end = bytes.size() - 1
+				while end >= 0 and bytes[end] != 10:  # complete lines only
+					end -= 1
+				if end >= 0:
+					lines = bytes.subarray(0, end).get_string_from_utf8().split("\n")
+					offset += end + 1
+			input.close()
+		if lines.empty():
+			idle += 1
+			if idle % FOLLOW_POLLS_PER_LIVENESS_CHECK == 0 and not proc.dir_exists("/proc/%d" % watched_pid):
+				break
+			OS.delay_msec(FOLLOW_POLL_MSEC)
+			continue
+		idle = 0
+		for line in lines:
+			if line == END_OF_INPUT:
+				output.close()
+				return 0
+			if line.strip_edges() != "":
+				write_answer(line)
+	output.close()
 	return 0
 
 
@@ -386,7 +468,7 @@ func run_scene(scene):
 		for slide in range(2):
 			var walked = broadphase_cells_walked(pos, scene.size, motion)
 			if walked > MAX_BROADPHASE_CELLS:
-				fail("moves", "godot: refused: for a move of (%s, %s) from (%s, %s), Godot's broad phase would walk %d cells (more than 2^26: a stall)" % [motion.x, motion.y, pos.x, pos.y, int(walked)])
+				fail("moves", "godot: refused: for a move of (%s, %s) from (%s, %s), Godot's broad phase would walk %d cells (more than 2^22: a stall)" % [motion.x, motion.y, pos.x, pos.y, int(walked)])
 				return null
 			# As in move_and_slide: the second slide starts from where the first ended, while the
 			# server still holds the body at the frame's start.
