@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Smoke test of an engine adapter (adapters/godot, adapters/rapier): runs it on a few scenes and
 # checks that it answers one line per scene, in order, with as many frames as tilesweep's own
-# answer, and an error exactly where tilesweep gives one; then that tilesweep reads back every
-# answer to a valid scene through --resolver-cmd (file mode for Godot, pipe mode for Rapier). Exits 77 (ctest's skip code here) with
+# answer, and an error exactly where tilesweep gives one; that it answers the same through a pipe
+# as from a file; then that tilesweep reads back every answer to a valid scene through
+# --resolver-cmd (file mode for Godot, pipe mode for Rapier). Exits 77 (ctest's skip code here) with
 # "skipped: ..." when the engine's runtime is not installed: the adapters install it on demand,
 # a test does not.
 #
@@ -35,6 +36,14 @@ cat "$@" | grep -v '^[[:space:]]*$' > "$work/scenes.jsonl"
     tail -n 20 "$work/stderr"
     exit 1
 }
+
+# Pipe mode (scene lines on stdin) answers exactly as file mode does.
+if ! "$here/$engine/run.sh" < "$work/scenes.jsonl" > "$work/piped.jsonl" 2>> "$work/stderr" ||
+    ! cmp -s "$work/answers.jsonl" "$work/piped.jsonl"; then
+    echo "the $engine adapter answers differently through a pipe than from a file:"
+    diff "$work/answers.jsonl" "$work/piped.jsonl" | head -n 6
+    exit 1
+fi
 
 # Per line: "error", or the number of frames (one "pos" per frame).
 shape() { awk '{ if ($0 ~ /^\{"error": ?"/) print "error"; else if ($0 ~ /^\{"frames": \[/) print gsub(/"pos": \[/, "&") " frames"; else print "not an answer: " substr($0, 1, 60) }' "$1"; }
