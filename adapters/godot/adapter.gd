@@ -128,10 +128,13 @@ func answer_file(in_path, out_path):
 
 # The line run.sh appends to the followed file when its standard input ends.
 const END_OF_INPUT = "tilesweep-end-of-input"
-# How long to sleep when the followed file has nothing new (milliseconds), and how many such
-# sleeps between two looks at whether the process that feeds it is still alive.
+# How long to sleep when the followed file has nothing new (milliseconds): briefly while lines
+# keep coming, longer once it has been idle for a while, so that a waiting Godot costs little.
+# And how many such sleeps between two looks at whether the process feeding it is alive.
 const FOLLOW_POLL_MSEC = 1
-const FOLLOW_POLLS_PER_LIVENESS_CHECK = 500
+const FOLLOW_IDLE_POLL_MSEC = 10
+const FOLLOW_POLLS_BEFORE_IDLE = 200
+const FOLLOW_POLLS_PER_LIVENESS_CHECK = 200
 
 
 # Pipe mode, for run.sh without arguments (Godot 3.2 cannot read a pipe): run.sh appends its
@@ -164,7 +167,7 @@ func follow_file(in_path, out_path, watched_pid):
 			idle += 1
 			if idle % FOLLOW_POLLS_PER_LIVENESS_CHECK == 0 and not proc.dir_exists("/proc/%d" % watched_pid):
 				break
-			OS.delay_msec(FOLLOW_POLL_MSEC)
+			OS.delay_msec(FOLLOW_POLL_MSEC if idle < FOLLOW_POLLS_BEFORE_IDLE else FOLLOW_IDLE_POLL_MSEC)
 			continue
 		idle = 0
 		for line in lines:
