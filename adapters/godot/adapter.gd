@@ -74,15 +74,19 @@ func _init():
 	# Bodies made first fill the allocator's holes, whose order depends on what ran before
 	# (arguments, mode); made next, the pool's entries come in creation order whatever ran
 	# before, which keeps answers the same from one batch, or mode, to another.
+	# The fillers leave once the pool is made (static, they never paired with anything).
 	var fillers = []
 	for k in range(POOL_START):
 		var filler = ps.body_create()
+		ps.body_set_mode(filler, Physics2DServer.BODY_MODE_STATIC)
 		ps.body_add_shape(filler, ps.rectangle_shape_create())
 		ps.body_set_state(filler, Physics2DServer.BODY_STATE_TRANSFORM, PARKED)
 		ps.body_set_space(filler, space)
 		fillers.append(filler)
 	for k in range(POOL_START):
 		add_pool_body()
+	for filler in fillers:
+		ps.body_set_space(filler, RID())
 	if follow >= 0:
 		quit(follow_file(args[follow + 1], args[follow + 2], int(args[follow + 3])))
 	else:
