@@ -91,6 +91,19 @@ func _init():
 		quit(follow_file(args[follow + 1], args[follow + 2], int(args[follow + 3])))
 	else:
 		quit(answer_file(args[args.size() - 2], args[args.size() - 1]))
+	finished = true
+
+
+# A script error stops _init before it quits, and Godot would then idle forever: the first idle
+# frame ends such a run with an error status instead.
+var finished = false
+
+
+func _idle(_delta):
+	if not finished:
+		printerr("godot adapter: stopped by a script error (see above)")
+		quit(3)
+	return true
 
 
 # Answers go to `out_path` one line at a time. File has no flush in Godot 3.2: closing and
