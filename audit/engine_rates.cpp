@@ -42,6 +42,9 @@ void record(RateCell& cell, const judge::SceneVerdict& v, std::uint64_t caseInde
     cell.insideDepth = std::max(cell.insideDepth, v.insideDepth);
     cell.shortfall = std::max(cell.shortfall, v.shortfall);
     cell.overshoot = std::max(cell.overshoot, v.overshoot);
+    ++cell.breaches[static_cast<std::size_t>(Breach::InsideDepth)][breachBin(v.insideDepth)];
+    ++cell.breaches[static_cast<std::size_t>(Breach::Shortfall)][breachBin(v.shortfall)];
+    ++cell.breaches[static_cast<std::size_t>(Breach::Overshoot)][breachBin(v.overshoot)];
 }
 
 void recordNoAnswer(RateCell& cell, const std::string& why, std::uint64_t caseIndex) {
@@ -79,6 +82,26 @@ struct Task {
 
 }  // namespace
 
+std::size_t breachBin(double pixels) noexcept {
+    if (!(pixels > 0)) return 0;
+    if (!std::isfinite(pixels)) return kBreachBins - 1;
+    const int binade = std::ilogb(pixels);  // 2^binade <= pixels < 2^(binade+1)
+    return static_cast<std::size_t>(std::clamp(binade + 42, 1, static_cast<int>(kBreachBins) - 1));
+}
+
+double breachQuantile(const BreachHistogram& histogram, double q) noexcept {
+    std::uint64_t total = 0;
+    for (const std::uint64_t n : histogram) total += n;
+    if (total == 0) return 0;
+    const auto needed = static_cast<std::uint64_t>(std::ceil(q * static_cast<double>(total)));
+    std::uint64_t seen = 0;
+    for (std::size_t k = 0; k < kBreachBins; ++k) {
+        seen += histogram[k];
+        if (seen >= needed) return k == 0 ? 0.0 : std::ldexp(1.0, static_cast<int>(k) - 41);
+    }
+    return std::ldexp(1.0, static_cast<int>(kBreachBins) - 41);
+}
+
 std::uint64_t RateCell::trials(Metric m) const noexcept {
     return m == Metric::Snag ? restingEligible : scenes;
 }
@@ -93,6 +116,8 @@ void RateCell::merge(const RateCell& other) {
     insideDepth = std::max(insideDepth, other.insideDepth);
     shortfall = std::max(shortfall, other.shortfall);
     overshoot = std::max(overshoot, other.overshoot);
+    for (std::size_t b = 0; b < kBreachCount; ++b)
+        for (std::size_t k = 0; k < kBreachBins; ++k) breaches[b][k] += other.breaches[b][k];
     for (const std::string& s : other.noAnswerSamples)
         if (noAnswerSamples.size() < kNoAnswerSamples) noAnswerSamples.push_back(s);
 }
@@ -249,6 +274,13 @@ std::string ratesJson(const RatesResult& r) {
             cj["inside_depth"] = c.insideDepth;
             cj["shortfall"] = c.shortfall;
             cj["overshoot"] = c.overshoot;
+            // Histograms as {bin: count}, the bins that are not empty.
+            for (std::size_t b = 0; b < kBreachCount; ++b) {
+                nlohmann::ordered_json bins = nlohmann::ordered_json::object();
+                for (std::size_t k = 0; k < kBreachBins; ++k)
+                    if (c.breaches[b][k] != 0) bins[std::to_string(k)] = c.breaches[b][k];
+                cj["breach_histograms"].push_back(bins);
+            }
             cj["no_answer_samples"] = c.noAnswerSamples;
             row.push_back(cj);
         }
@@ -296,6 +328,16 @@ RatesResult readRatesJson(const std::string& text) {
                 c.insideDepth = cj.at("inside_depth").get<double>();
                 c.shortfall = cj.at("shortfall").get<double>();
                 c.overshoot = cj.at("overshoot").get<double>();
+                const auto& histograms = cj.at("breach_histograms");
+                if (histograms.size() != kBreachCount)
+                    throw std::runtime_error("breach_histograms: 3 expected");
+                for (std::size_t b = 0; b < kBreachCount; ++b)
+                    for (const auto& [bin, count] : histograms[b].items()) {
+                        const std::size_t k = std::stoul(bin);
+                        if (k >= kBreachBins)
+                            throw std::runtime_error("breach_histograms: bin " + bin + " out of range");
+                        c.breaches[b][k] = count.get<std::uint64_t>();
+                    }
                 c.noAnswerSamples = cj.at("no_answer_samples").get<std::vector<std::string>>();
                 cells.push_back(std::move(c));
             }

@@ -68,6 +68,22 @@ inline const std::vector<Metric> kRateMetrics = {Metric::Tunnel,    Metric::Insi
 /// The families of a rates run: the drawn families at the origin, then far-<d> for each distance.
 [[nodiscard]] std::vector<Family> rateFamilies();
 
+/// A histogram of breach distances, in binades: bin 0 holds the scenes that did not break the
+/// claim; bin k >= 1 those whose breach lay in [2^(k-42), 2^(k-41)) pixels (clamped at both
+/// ends). Mergeable, so that shards give the quantiles one run would.
+constexpr std::size_t kBreachBins = 82;
+using BreachHistogram = std::array<std::uint64_t, kBreachBins>;
+
+/// The bin of a breach of `pixels` (0 or less: no breach).
+[[nodiscard]] std::size_t breachBin(double pixels) noexcept;
+/// The smallest tolerance, as a bin's upper edge, under which the claim holds on at least the
+/// share `q` of the histogram's scenes: 0 when that many did not break it.
+[[nodiscard]] double breachQuantile(const BreachHistogram& histogram, double q) noexcept;
+
+/// The breach distances measured per scene, in the order of RateCell::breaches.
+enum class Breach : std::uint8_t { InsideDepth, Shortfall, Overshoot };
+constexpr std::size_t kBreachCount = 3;
+
 /// The figures of one resolver on one family.
 struct RateCell {
     std::uint64_t scenes = 0;
@@ -76,6 +92,7 @@ struct RateCell {
     double insideDepth = 0;             ///< the largest depth inside a tile, pixels
     double shortfall = 0;               ///< the largest distance short of touching, pixels
     double overshoot = 0;               ///< the largest distance past the exact end, pixels
+    std::array<BreachHistogram, kBreachCount> breaches{};  ///< per Breach, every scene's distance
     /// The lowest case index that broke each metric (regenerate it with generateScene), or none.
     std::array<std::uint64_t, kMetricCount> firstFailure;
     std::vector<std::string> noAnswerSamples;  ///< a few reasons the resolver gave no answer

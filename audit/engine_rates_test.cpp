@@ -76,6 +76,23 @@ TEST(WilsonInterval, coversTheShareAndIsExactAtTheEnds) {
     EXPECT_EQ(nothing.high, 1.0);
 }
 
+TEST(BreachHistogram, binsByBinadeAndGivesQuantilesAsUpperEdges) {
+    EXPECT_EQ(breachBin(0), 0u);
+    EXPECT_EQ(breachBin(-1), 0u);
+    EXPECT_EQ(breachBin(1.0), 42u);  // [1, 2)
+    EXPECT_EQ(breachBin(1.5), 42u);
+    EXPECT_EQ(breachBin(0.75), 41u);  // [0.5, 1)
+    EXPECT_EQ(breachBin(1e-300), 1u);
+    EXPECT_EQ(breachBin(1e300), kBreachBins - 1);
+    BreachHistogram h{};
+    h[0] = 98;              // 98 scenes held
+    h[breachBin(0.3)] = 1;  // one breached by 0.3 px: [0.25, 0.5)
+    h[breachBin(5.0)] = 1;  // one by 5 px: [4, 8)
+    EXPECT_EQ(breachQuantile(h, 0.98), 0.0);
+    EXPECT_EQ(breachQuantile(h, 0.99), 0.5);
+    EXPECT_EQ(breachQuantile(h, 1.0), 8.0);
+}
+
 TEST(EngineRates, tilesweepReadsZeroAndTheTwinDoesNot) {
     const RatesResult r = run();
     ASSERT_EQ(r.engines.size(), 3u);
@@ -117,6 +134,7 @@ TEST(EngineRates, shardsAddUpToTheWholeRun) {
             EXPECT_EQ(a.firstFailure, b.firstFailure);
             EXPECT_EQ(a.insideDepth, b.insideDepth);
             EXPECT_EQ(a.overshoot, b.overshoot);
+            EXPECT_EQ(a.breaches, b.breaches);
         }
     EXPECT_THROW((void)mergeRates({run(0, 3), run(0, 3)}), std::invalid_argument);
     EXPECT_THROW((void)mergeRates({run(0, 3), run(0, 2)}), std::invalid_argument);

@@ -40,7 +40,11 @@ struct CheckRow {
     std::string claim;
     int runs = 0;
     int cases = 0;     ///< cases that passed
-    int failures = 0;  ///< runs that ended in a (shrunk) counterexample or a coverage shortfall
+    int failures = 0;  ///< runs that ended in a (shrunk) counterexample
+    /// Runs whose claim held but whose coverage fell certainly short of a floor: the suite's
+    /// generator's shortfall, not the resolver's (properties/coverage_judgement.h).
+    int coverageShortfalls = 0;
+    std::vector<std::string> coverageMessages;
     double seconds = 0;
     double secondsToFirstFailure = 0;  ///< run time of the first failing run (generation + shrinking)
     std::map<std::string, int> tags;

@@ -93,7 +93,9 @@ void writeConformanceReport(const std::vector<ConformanceEntry>& entries, const 
               "counterexample after |\n"
               "|---|---|---|---:|---:|---|---:|---:|---:|\n";
         for (const CheckRow& r : e.run.rows)
-            md << "| " << r.property << " | " << r.claim << " | " << (r.failures == 0 ? "holds" : "**fails**")
+            md << "| " << r.property << " | " << r.claim << " | "
+               << (r.failures > 0 ? "**fails**"
+                                  : (r.coverageShortfalls > 0 ? "holds (insufficient coverage)" : "holds"))
                << " | " << r.cases + r.failures << " | " << r.failures << " | " << failureRate(r) << " | "
                << fixed(r.seconds > 0 ? r.cases / r.seconds : 0.0, 0) << " | " << fixed(r.seconds, 1) << " | "
                << (r.failures == 0 ? std::string("") : fixed(r.secondsToFirstFailure, 1) + " s") << " |\n";

@@ -10,6 +10,9 @@
 #include "oracle/substep/substep_float.h"
 #include "oracle/substep/substep_oracle.h"
 #endif
+#if TILESWEEP_HAVE_AUDIT
+#include "audit/audit.h"
+#endif
 
 namespace tilesweep::cli {
 namespace {
@@ -46,6 +49,16 @@ Resolver<T> findResolver(const std::string& name) {
     if (const std::int64_t n = substepCount(name, "substep-float"))
         return [n](const Scene<T>& s) { return framesOf<T>(oracle::resolveSceneSubstepFloat<T>(s, n)); };
 #endif
+#if TILESWEEP_HAVE_AUDIT
+    // The game-style baselines (bench/), so that `tilesweep check --resolver-cmd` can hold them.
+    if (name == "twin" || name == "grid") {
+        audit::Implementation impl;
+        impl.name = name;
+        impl.kind = name == "twin" ? audit::ImplementationKind::Twin : audit::ImplementationKind::Grid;
+        impl.isDouble = sizeof(T) == 8;
+        return [impl](const Scene<T>& s) { return audit::runImplementation<T>(impl, s); };
+    }
+#endif
     return {};
 }
 
@@ -55,6 +68,9 @@ std::string checkResolverName(const std::string& name) {
            "': expected core, float, double"
 #if TILESWEEP_HAVE_ORACLE
            ", exact, substep:N, substep-float:N (1 <= N <= 1048576) or seed"
+#endif
+#if TILESWEEP_HAVE_AUDIT
+           ", twin or grid"
 #endif
         ;
 }

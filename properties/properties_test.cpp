@@ -21,6 +21,9 @@ TEST_P(Property, holds) {
               << outcome.seconds << " s\n";
     for (const auto& [tag, count] : outcome.tagCounts)
         std::cout << "  " << tag << ": " << 100.0 * count / std::max(outcome.cases, 1) << "%\n";
+    if (!outcome.coverageUndecided.empty())
+        std::cout << "  coverage undecided at the cap (not a failure): " << outcome.coverageUndecided << "\n";
+    EXPECT_TRUE(outcome.coverageShortfall.empty()) << "insufficient coverage: " << outcome.coverageShortfall;
     EXPECT_TRUE(outcome.passed) << outcome.message
                                 << (outcome.corpusFile.empty() ? ""
                                                                : "\nregression file: " + outcome.corpusFile)

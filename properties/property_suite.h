@@ -22,22 +22,41 @@ struct RunOptions {
     std::uint64_t seed = 20261122;  ///< RapidCheck seed; the same seed gives the same cases
     int cases = 1000;               ///< successful cases before the property passes
     std::string corpusDir;          ///< where a shrunk counterexample is written; empty: nowhere
+    /// Most cases a run may draw, in all, to settle its coverage floors (coverage_judgement.h);
+    /// 0: the larger of 8 x cases and kDefaultCoverageCases.
+    long long maxCases = 0;
+    bool shrink = true;  ///< false: count instead: every case is judged, the failures counted and the
+                         ///< first one kept unshrunk (later rounds of a property already shrunk)
 };
 
-/// What one run of a property found.
+/// The least cap on a run's cases when its floors need more than `cases` to settle: enough for
+/// a floor of 1% whose true share is 2% (about 6,000 cases) with room to spare.
+inline constexpr long long kDefaultCoverageCases = 16000;
+
+/// What one run of a property found. A claim that held can still have insufficient coverage:
+/// that is the generator's shortfall, never the resolver's (coverage tags come from the scene and
+/// the exact reference), so it is reported apart from `passed`.
 struct PropertyOutcome {
-    bool passed = false;
-    int cases = 0;                         ///< cases that passed
+    bool passed = false;  ///< no case falsified the claim
+    int cases = 0;        ///< cases that passed, over every coverage round
+    int failedCases = 0;  ///< cases that falsified the claim: 1 when a run stops at its first failure
+                          ///< to shrink it, every failing case when it counts (RunOptions::shrink false)
     std::map<std::string, int> tagCounts;  ///< cases per coverage tag
-    std::string message;                   ///< why it failed (counterexample, or coverage)
-    std::string corpusFile;                ///< the regression file written, if any
-    std::string pictureFile;               ///< its picture (SVG), if any
-    std::string sceneLine;                 ///< the minimal failing scene (hexfloats), if any
-    std::string failure;                   ///< the claim's message on it, if any
+    std::string message;                   ///< why the claim failed (the counterexample)
+    /// The floors certainly missed (insufficient coverage), each with its share and interval;
+    /// empty when every floor was met or left undecided at the cap.
+    std::string coverageShortfall;
+    /// The floors neither met nor missed when the cap on cases was reached (not a failure).
+    std::string coverageUndecided;
+    std::string corpusFile;   ///< the regression file written, if any
+    std::string pictureFile;  ///< its picture (SVG), if any
+    std::string sceneLine;    ///< the minimal failing scene (hexfloats), if any
+    std::string failure;      ///< the claim's message on it, if any
     double seconds = 0;
 };
 
-/// A coverage floor: at least `fraction` of the cases must carry `tag`.
+/// A coverage floor: at least `fraction` of the cases must carry `tag`, judged statistically
+/// (coverage_judgement.h): a run draws more cases until the share is certainly above or below.
 struct CoverageFloor {
     std::string tag;
     double fraction;
@@ -55,6 +74,13 @@ struct Property {
 
 /// Every property of the suite.
 [[nodiscard]] const std::vector<Property>& allProperties();
+
+/// A property outside the suite's table, as addClaim builds them: `claimName` (scene_checks.h) in
+/// `scalar` ("float" or "double") over the family named `family` (familyName), with `floors`.
+/// Throws std::invalid_argument for an unknown claim, scalar or family.
+[[nodiscard]] Property makeProperty(const std::string& name, const std::string& claimName,
+                                    const std::string& scalar, const std::string& family,
+                                    std::vector<CoverageFloor> floors);
 
 /// Options from the environment: TILESWEEP_PROPERTY_SEED (else TILESWEEP_PROPERTY_DEFAULT_SEED,
 /// which ctest sets per discovered test), TILESWEEP_PROPERTY_CASES and TILESWEEP_CORPUS_DIR

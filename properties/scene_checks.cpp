@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "scene_checks.h"
 
+#include "boundary_checks.h"
 #include "frame_safety.h"  // checks/
 #include "oracle/exact/exact_geometry.h"
 #include "oracle/exact/exact_resolve.h"
@@ -11,6 +12,7 @@
 #include "src/decision_path.h"
 
 #include "tilesweep/box_sweep.h"
+#include "tilesweep/mover.h"
 
 #include <algorithm>
 #include <cmath>
@@ -588,6 +590,8 @@ const std::vector<Claim<T>>& allClaims() {
         {"slidingAlongFloorNeverSnags", &slidingAlongFloorNeverSnags<T>, S::Safety},
         {"badInputIsRejected", &badInputIsRejected<T>, S::Internal},
         {"sweepBoxMatchesTheReference", &sweepBoxMatchesTheReference<T>, S::Internal},
+        {"storesContactsAtExactCapacity", &storesContactsAtExactCapacity<T>, S::Internal},
+        {"reportsEachCErrorByItsCause", &reportsEachCErrorByItsCause<T>, S::Internal},
     };
     return claims;
 }
@@ -687,6 +691,54 @@ int latticeSpan(const Scene<T>& scene) {
     return highest >= lowest ? highest - lowest : 0;
 }
 
+/// The least frexp exponent of a scene's nonzero inputs (a large number when all are zero).
+template <class T>
+int smallestInputExponent(const Scene<T>& scene) {
+    int lowest = std::numeric_limits<int>::max();
+    const auto note = [&lowest](T v) {
+        if (v == 0 || !std::isfinite(v)) return;
+        int e = 0;
+        (void)std::frexp(v, &e);
+        lowest = std::min(lowest, e);
+    };
+    for (const Vec2<T>& v : {scene.map.origin, scene.map.tileSize, scene.box.pos, scene.box.size}) {
+        note(v.x);
+        note(v.y);
+    }
+    for (const Vec2<T>& m : scene.moves) {
+        note(m.x);
+        note(m.y);
+    }
+    return lowest;
+}
+
+/// The most significant bits any input of the scene needs (its significand without trailing zeros).
+template <class T>
+int widestSignificand(const Scene<T>& scene) {
+    int widest = 0;
+    const auto note = [&widest](T v) {
+        if (v == 0 || !std::isfinite(v)) return;
+        int e = 0;
+        auto m = static_cast<std::int64_t>(
+            std::ldexp(std::frexp(std::fabs(v), &e), std::numeric_limits<T>::digits));
+        int bits = std::numeric_limits<T>::digits;
+        while (m % 2 == 0) {
+            m /= 2;
+            --bits;
+        }
+        widest = std::max(widest, bits);
+    };
+    for (const Vec2<T>& v : {scene.map.origin, scene.map.tileSize, scene.box.pos, scene.box.size}) {
+        note(v.x);
+        note(v.y);
+    }
+    for (const Vec2<T>& m : scene.moves) {
+        note(m.x);
+        note(m.y);
+    }
+    return widest;
+}
+
 /// The path that decided the scene's frames (src/decision_path.h): "exact" when any frame fell
 /// back to the lattice, else "filtered" when any predicate needed the exact refinement, else "fast".
 template <class T>
@@ -757,6 +809,29 @@ std::vector<std::string> classifyScene(const Scene<T>& scene) {
     const std::string path = decisionPathOf(scene);
     tags.push_back("path:" + path);
     if (path != "fast") tags.push_back("fallback");
+    // A near tie its refinement settled: no exact tie, yet the filter could not decide alone.
+    if (path == "filtered" && !tie && hit) tags.push_back("near-tie-refined");
+    // Code only double frames reach: a refinement on inputs of more than 27 significant bits,
+    // where TwoProduct's split leaves both low halves nonzero (productError's aLow * bLow term)
+    // and contact times are exact pairs rounded by roundTimeToDouble's remainder test.
+    if (std::is_same<T, double>::value && path == "filtered" && widestSignificand(scene) > 27)
+        tags.push_back("full-precision-refined");
+    // The tiny end of the range: some nonzero input below 2^-500 (double) or 2^-100 (float),
+    // where a product of two inputs would underflow a double (or come near it).
+    if (smallestInputExponent(scene) < (std::is_same<T, float>::value ? -100 : -500)) tags.push_back("tiny");
+    // Capacity boundaries (mover.h): the contact bound at the inline limit, or past it (the wide
+    // path), and frames with many contacts (an exact count the buffers are sized to).
+    const std::int32_t bound = maxContacts(scene.box.size, scene.map.tileSize);
+    if (bound == kInlineContacts) tags.push_back("bound-inline-limit");
+    if (bound > kInlineContacts && bound <= kInlineContacts + 2) tags.push_back("bound-wide");
+    std::size_t most = 0;
+    for (const auto& f : frames) most = std::max(most, f.contacts.size());
+    if (most >= 16) tags.push_back("many-contacts");
+    // The C error claim's unrepresentable-edge causes need tile * 2^(digits + 2) finite.
+    constexpr int digits = std::numeric_limits<T>::digits;
+    if (std::isfinite(std::ldexp(scene.map.tileSize.x, digits + 2)) &&
+        std::isfinite(std::ldexp(scene.map.tileSize.y, digits + 2)))
+        tags.push_back("edge-causes-built");
     return tags;
 }
 

@@ -3,6 +3,9 @@
 
   plots.py audit DIR     DIR/report.json (tilesweep audit --out DIR) -> DIR/error_vs_magnitude.svg
                          and DIR/failures_per_family.svg
+  plots.py rates FILE    FILE, the rates.json of tilesweep audit --resolver-cmd -> tolerance_vs_distance.svg
+                         beside it: each engine's measured tolerance per claim against the distance
+                         from the origin, with the engine's own documented tolerance
   bench                  scripts/bench_report.py imports pareto() for docs/bench/pareto.svg
 
 The scene pictures (tilesweep render, counterexamples) are drawings of one scene, not charts;
@@ -233,7 +236,73 @@ def pareto(path, points, footnotes):
     save(fig, path)
 
 
+# ---- the engines' tolerances ---------------------------------------------------------------
+
+TOLERANCE_PANELS = (("inside_depth", "deepest inside a tile"),
+                    ("shortfall", "farthest short of touching"),
+                    ("overshoot", "farthest past the exact end"))
+ZERO_FLOOR = 1e-9  # where a tolerance of 0 (the claim held) is drawn on the log axis
+
+
+def breach_quantile(histogram, q):
+    """The upper edge of the binade holding the q-quantile of a breach histogram ({bin: count}; bin 0:
+    no breach; bin k: [2^(k-42), 2^(k-41)) pixels), as audit/engine_rates.cpp computes it."""
+    counts = {int(k): n for k, n in histogram.items()}
+    total = sum(counts.values())
+    if total == 0:
+        return 0.0
+    needed, seen = math.ceil(q * total), 0
+    for k in sorted(counts):
+        seen += counts[k]
+        if seen >= needed:
+            return 0.0 if k == 0 else 2.0 ** (k - 41)
+    return 2.0 ** 41
+
+
+def tolerance_vs_distance(rates):
+    """Per claim, the largest breach (pixels) of every engine against the distance from the origin
+    (the far families), with each engine's documented tolerance as a dashed line."""
+    far = [(k, f["distance"]) for k, f in enumerate(rates["families"]) if f["name"].startswith("far-")]
+    xs = [math.log2(d) if d > 0 else 0 for _, d in far]
+    labels = ["0" if d == 0 else f"2^{int(round(math.log2(d)))}" for _, d in far]
+    fig, axes = plt.subplots(1, len(TOLERANCE_PANELS), figsize=(13, 4.2), sharey=True)
+    markers = ["o", "s", "^", "D", "v", "P", "X", "*"]
+    top = max([ZERO_FLOOR] + [rates["cells"][e][k][key] for e in range(len(rates["engines"])) for k, _ in far
+                              for key, _ in TOLERANCE_PANELS] + [e["documented_tolerance"] for e in rates["engines"]])
+    for panel, (key, title) in enumerate(TOLERANCE_PANELS):
+        ax = axes[panel]
+        for e, engine in enumerate(rates["engines"]):
+            values = [rates["cells"][e][k][key] for k, _ in far]
+            # Engines that agree draw on top of each other: markers differ in shape and size.
+            ax.plot(xs, [max(v, ZERO_FLOOR) for v in values], marker=markers[e % len(markers)], color=colour(e),
+                    label=engine["name"], linewidth=1.4, markersize=9 - 1.2 * (e % 4), alpha=0.85)
+            p99 = [breach_quantile(rates["cells"][e][k]["breach_histograms"][panel], 0.99) for k, _ in far]
+            ax.plot(xs, [max(v, ZERO_FLOOR) for v in p99], color=colour(e), linestyle=":", linewidth=1.2)
+            if engine["documented_tolerance"] > 0:
+                ax.axhline(engine["documented_tolerance"], color=colour(e), linestyle="--", linewidth=1)
+        ax.set_yscale("log")
+        ax.set_ylim(ZERO_FLOOR / 3, top * 5)
+        ax.set_xticks(xs, labels)
+        ax.set_title(title, fontsize=10)
+        ax.set_xlabel("distance from the origin (pixels)")
+    axes[0].set_ylabel("largest breach (solid), pixels; bottom row: none")
+    handles, names = axes[0].get_legend_handles_labels()
+    handles.append(matplotlib.lines.Line2D([], [], color="#666666", linestyle=":", label="99% of scenes within"))
+    handles.append(matplotlib.lines.Line2D([], [], color="#666666", linestyle="--", label="engine's documented tolerance"))
+    fig.legend(handles=handles, loc="lower center", ncol=len(handles), frameon=False, bbox_to_anchor=(0.5, -0.06))
+    fig.suptitle(f"The tolerance each claim would need, {rates['cases']} scenes per family", fontsize=11)
+    fig.tight_layout()
+    return fig
+
+
 def main(argv):
+    if len(argv) == 3 and argv[1] == "rates":
+        with open(argv[2], encoding="utf-8") as f:
+            rates = json.load(f)
+        out = os.path.join(os.path.dirname(argv[2]) or ".", "tolerance_vs_distance.svg")
+        save(tolerance_vs_distance(rates), out)
+        print(f"plots: wrote {out}", file=sys.stderr)
+        return 0
     if len(argv) == 3 and argv[1] == "audit":
         audit(argv[2])
         print(f"plots: wrote {argv[2]}/error_vs_magnitude.svg and failures_per_family.svg", file=sys.stderr)

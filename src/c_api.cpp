@@ -63,10 +63,17 @@ ts_error errorOf(MapError e) noexcept {
             return TS_ERROR_MAP_NEGATIVE_DIMENSIONS;
         case MapError::TooLarge:
             return TS_ERROR_MAP_TOO_LARGE;
+#if defined(TILESWEEP_FAULT_C_ERROR_CODES_SWAPPED)  // deliberate fault: neighbouring codes swapped
+        case MapError::UnrepresentableEdgeX:
+            return TS_ERROR_MAP_UNREPRESENTABLE_EDGE_Y;
+        case MapError::UnrepresentableEdgeY:
+            return TS_ERROR_MAP_UNREPRESENTABLE_EDGE_X;
+#else
         case MapError::UnrepresentableEdgeX:
             return TS_ERROR_MAP_UNREPRESENTABLE_EDGE_X;
         case MapError::UnrepresentableEdgeY:
             return TS_ERROR_MAP_UNREPRESENTABLE_EDGE_Y;
+#endif
     }
     return TS_ERROR_MAP_NEGATIVE_DIMENSIONS;
 }

@@ -157,7 +157,11 @@ inline constexpr double kPairProductErrorBound = (3.0 + 16.0 * 0x1p-53) * 0x1p-5
     if (d > bound) return 1;
     if (d < -bound) return -1;
     refined = true;
+#if defined(TILESWEEP_FAULT_PAIR_REFINEMENT_SWAPPED)
+    return signOfPairProducts(b, t, a, s, q, p);  // deliberate fault: the refinement's operands swapped
+#else
     return signOfPairProducts(a, s, b, t, p, q);
+#endif
 }
 
 /// The next double above (up = true) or below a finite nonzero double, by its bits.
@@ -170,12 +174,19 @@ inline constexpr double kPairProductErrorBound = (3.0 + 16.0 * 0x1p-53) * 0x1p-5
     return v;
 }
 
-/// The spacing of doubles just above |v|, for a normal v: 2^(exponent(v) - 52).
+/// The spacing of doubles just above |v|, for any finite v: 2^(exponent(v) - 52) for a normal v
+/// whose ulp is normal; the ulp's subnormal bit pattern below that; 2^-1074 for 0 and the
+/// subnormals, whose spacing it is. (roundTimeToDouble calls it on quotients its range test keeps
+/// far above 2^-970; handling the rest keeps a change of range from wrapping the exponent.)
 [[nodiscard]] inline double ulpAbove(double v) noexcept {
     std::uint64_t bits = 0;
     std::memcpy(&bits, &v, sizeof bits);
-    bits = ((bits >> 52) & 0x7ff) - 52;  // the biased exponent of the ulp (v normal, > 2^-970)
-    bits <<= 52;
+    const std::uint64_t field = (bits >> 52) & 0x7ff;  // the biased exponent of |v|
+    if (field > 52) {
+        bits = (field - 52) << 52;  // a normal ulp
+    } else {
+        bits = field == 0 ? 1 : std::uint64_t{1} << (field - 1);  // a subnormal ulp: 2^(field - 1075)
+    }
     double u = 0;
     std::memcpy(&u, &bits, sizeof bits);
     return u;

@@ -153,7 +153,11 @@ template <class T>
             lsb[k] = 100000;
             continue;
         }
+#if defined(TILESWEEP_FAULT_RANGE_NO_LOWER_BOUND)
+        if (f > 1023 + 250) return false;  // deliberate fault: the lower bound 2^-250 forgotten
+#else
         if (f < 1023 - 250 || f > 1023 + 250) return false;
+#endif
         field[k] = f - 1023;
         lsb[k] = f - 1023 - 52 + countTrailingZeros64(fraction | (std::uint64_t{1} << 52));
     }

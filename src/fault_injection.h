@@ -29,13 +29,25 @@
 //                      too generous (spans of 54 bits, which a double cannot hold) (fast_frame.h)
 //   FAST_RANGE_FAR_TOO_WIDE  the same six binades too generous: the range test bounds every
 //                      coordinate with a few bits of slack, so one binade alone rarely shows
+// Issue 20's four classes, one fault standing for each:
+//   PAIR_REFINEMENT_SWAPPED  double near-ties: the exact refinement of the pair comparison called
+//                      with its two sides swapped, so a nonzero sign inside the filter's band
+//                      comes out reversed (exact_double.h)
+//   RANGE_NO_LOWER_BOUND  the tiny end of the range: the double range test forgets its lower
+//                      bound 2^-250, so products and TwoProduct errors underflow (fast_frame.h)
+//   INLINE_LIMIT_EXCLUSIVE  capacity boundaries: a box whose maxContacts is exactly the inline
+//                      limit (64) refused as ContactBufferTooSmall with no buffer (mover.cpp)
+//   C_ERROR_CODES_SWAPPED  error codes: the C API maps the unrepresentable-edge errors on x and
+//                      y to each other's code (c_api.cpp)
 
-#if defined(TILESWEEP_FAULT_TOUCH_OVERLAPS) || defined(TILESWEEP_FAULT_NO_CORNER_MISS) ||   \
-    defined(TILESWEEP_FAULT_TIE_REVERSED) || defined(TILESWEEP_FAULT_DOUBLE_PREDICATE) ||   \
-    defined(TILESWEEP_FAULT_ROUND_NEAREST) || defined(TILESWEEP_FAULT_BROADPHASE_SHORT) ||  \
-    defined(TILESWEEP_FAULT_FMA) || defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE) ||           \
-    defined(TILESWEEP_FAULT_TIME_TIES_AWAY) || defined(TILESWEEP_FAULT_END_INCLUSIVE) ||    \
-    defined(TILESWEEP_FAULT_NARROW_TIER) || defined(TILESWEEP_FAULT_FILTER_BOUND_HALVED) || \
-    defined(TILESWEEP_FAULT_FAST_RANGE_TOO_WIDE) || defined(TILESWEEP_FAULT_FAST_RANGE_FAR_TOO_WIDE)
+#if defined(TILESWEEP_FAULT_TOUCH_OVERLAPS) || defined(TILESWEEP_FAULT_NO_CORNER_MISS) ||                \
+    defined(TILESWEEP_FAULT_TIE_REVERSED) || defined(TILESWEEP_FAULT_DOUBLE_PREDICATE) ||                \
+    defined(TILESWEEP_FAULT_ROUND_NEAREST) || defined(TILESWEEP_FAULT_BROADPHASE_SHORT) ||               \
+    defined(TILESWEEP_FAULT_FMA) || defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE) ||                        \
+    defined(TILESWEEP_FAULT_TIME_TIES_AWAY) || defined(TILESWEEP_FAULT_END_INCLUSIVE) ||                 \
+    defined(TILESWEEP_FAULT_NARROW_TIER) || defined(TILESWEEP_FAULT_FILTER_BOUND_HALVED) ||              \
+    defined(TILESWEEP_FAULT_FAST_RANGE_TOO_WIDE) || defined(TILESWEEP_FAULT_FAST_RANGE_FAR_TOO_WIDE) ||  \
+    defined(TILESWEEP_FAULT_PAIR_REFINEMENT_SWAPPED) || defined(TILESWEEP_FAULT_RANGE_NO_LOWER_BOUND) || \
+    defined(TILESWEEP_FAULT_INLINE_LIMIT_EXCLUSIVE) || defined(TILESWEEP_FAULT_C_ERROR_CODES_SWAPPED)
 #define TILESWEEP_FAULT_INJECTED 1
 #endif

@@ -66,7 +66,11 @@ MoveResult<T> moveAndSlideOf(const PreparedMap<T>& map, const MoveInput<T>& inpu
     Contact<T>* buffer = contacts;
     std::int32_t bufferCapacity = capacity;
     if (contacts == nullptr || capacity < bound) {
+#if defined(TILESWEEP_FAULT_INLINE_LIMIT_EXCLUSIVE)
+        if (bound >= kInlineContacts) {  // deliberate fault: a box at exactly the inline limit refused
+#else
         if (bound > kInlineContacts) {
+#endif
             MoveResult<T> tooSmall = refuse(input, MoveStatus::ContactBufferTooSmall);
             tooSmall.contactCount = bound;
             return tooSmall;

@@ -22,6 +22,7 @@
 
 #include <rapidcheck.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -51,6 +52,9 @@ enum class Family : std::uint8_t {
     Extreme,      ///< empty maps (0 x 0, or no solid cell), huge moves, huge coordinates
     FilterBand,   ///< exact corner ties whose rounded time comparison lands deep in the filter's band
     HighSpeed,    ///< 1 to 100 tiles a frame along a corridor with thin walls: no tunnelling
+    NearTie,      ///< the filter band's corner ties nudged one ulp off: nonzero signs its refinement decides
+    TinyScale,    ///< a mixed scene scaled by a power of two near the bottom of T's normal range
+    Capacity,     ///< boxes whose contact bound is the inline limit or just past it, into a corner
     Mixed,
 };
 
@@ -86,6 +90,12 @@ enum class Family : std::uint8_t {
             return "filter-band";
         case Family::HighSpeed:
             return "high-speed";
+        case Family::NearTie:
+            return "near-tie";
+        case Family::TinyScale:
+            return "tiny-scale";
+        case Family::Capacity:
+            return "capacity";
         case Family::Mixed:
             return "mixed";
     }
@@ -644,9 +654,13 @@ rc::Gen<GeneratedScene<T>> genExtremeScene() {
 /// candidate instead of the stream's last did not reach it in 3 x 4000 cases, so the stream stays.
 /// Float scenes are the same construction, where the fast path's rounded products tie and
 /// TwoProduct settles them. The tile's neighbours across both faces are random.
+///
+/// With `nearTie`, one input (the box's position or the move, on x or y) is then nudged by one ulp
+/// either way: the two products now differ, by far less than the filter's bound, and the exact
+/// refinement (TwoProduct, the expansion's sign) must decide a nonzero sign the right way round.
 template <class T>
-rc::Gen<GeneratedScene<T>> genFilterBandScene() {
-    return rc::gen::exec([] {
+rc::Gen<GeneratedScene<T>> genFilterBandScene(bool nearTie = false) {
+    return rc::gen::exec([nearTie] {
         const bool isFloat = std::is_same<T, float>::value;
         std::mt19937_64 rng(*rc::gen::arbitrary<std::uint64_t>());
         // a and b just above powers of two, g < 0: the distances a(K - g), b(K - g) and both
@@ -668,7 +682,7 @@ rc::Gen<GeneratedScene<T>> genFilterBandScene() {
             const int bits = isFloat ? 8 : 38;  // a*g and b*g stay exact
             g = -std::ldexp(static_cast<double>((rng() >> (64 - bits)) | 1),
                             -bits + static_cast<int>(rng() % 8) - 2);
-            if (isFloat) break;
+            if (isFloat || nearTie) break;  // a near tie needs no search: any exact tie, nudged
             // The resolver's comparison: p = fl(Dx.hi * vy), q = fl(Dy.hi * vx), D = fl(p - q).
             const double dx = a * K - a * g;
             const double dy = b * K - b * g;
@@ -689,10 +703,27 @@ rc::Gen<GeneratedScene<T>> genFilterBandScene() {
         grid.set(1, 1, true);
         grid.set(0, 1, *rc::gen::arbitrary<bool>());  // across the left face
         grid.set(1, 0, *rc::gen::arbitrary<bool>());  // across the top face
-        const Box<T> box{{static_cast<T>(a * g - 1), static_cast<T>(b * g - 1)}, {T(1), T(1)}};
-        const Vec2<T> move{static_cast<T>(a * 2 * K), static_cast<T>(b * 2 * K)};
-        return GeneratedScene<T>{makeScene(grid, ox, oy, tile, box, {move}), Family::FilterBand,
-                                 std::fabs(ox) >= 1048576.0};
+        Box<T> box{{static_cast<T>(a * g - 1), static_cast<T>(b * g - 1)}, {T(1), T(1)}};
+        Vec2<T> move{static_cast<T>(a * 2 * K), static_cast<T>(b * 2 * K)};
+        if (nearTie) {
+            const int direction = *rc::gen::element(-1, 1);
+            switch (*rc::gen::inRange(0, 4)) {
+                case 0:
+                    box.pos.x = offGrid(box.pos.x, direction);
+                    break;
+                case 1:
+                    box.pos.y = offGrid(box.pos.y, direction);
+                    break;
+                case 2:
+                    move.x = offGrid(move.x, direction);
+                    break;
+                default:
+                    move.y = offGrid(move.y, direction);
+                    break;
+            }
+        }
+        return GeneratedScene<T>{makeScene(grid, ox, oy, tile, box, {move}),
+                                 nearTie ? Family::NearTie : Family::FilterBand, std::fabs(ox) >= 1048576.0};
     });
 }
 
@@ -756,6 +787,97 @@ rc::Gen<GeneratedScene<T>> genHighSpeedScene() {
     });
 }
 
+/// Every length of a scene times 2^-shift (origin, tile size, box, moves): exact, so long as every
+/// nonzero value stays normal (the caller's shift keeps it so).
+template <class T>
+Scene<T> scaledDown(const Scene<T>& scene, int shift) {
+    Scene<T> s = scene;
+    const auto scale = [shift](Vec2<T>& v) { v = {std::ldexp(v.x, -shift), std::ldexp(v.y, -shift)}; };
+    scale(s.map.origin);
+    scale(s.map.tileSize);
+    scale(s.box.pos);
+    scale(s.box.size);
+    for (Vec2<T>& m : s.moves) scale(m);
+    return s;
+}
+
+/// The tiny end of the range: a scene of `base` with every length scaled by 2^-shift, the shift
+/// drawn near the bottom of T's normal range (double: 2^-600 to the least normal, float: 2^-60
+/// to it) and capped so that the scene's smallest nonzero value stays normal, so the scaled
+/// scene is exact and, by the contract, decides exactly as the original did. A range test that
+/// forgets its lower bound lets products and TwoProduct error terms underflow here.
+template <class T>
+rc::Gen<GeneratedScene<T>> genTinyScaleScene(rc::Gen<GeneratedScene<T>> base) {
+    return rc::gen::exec([base] {
+        GeneratedScene<T> g = *base;
+        const bool isFloat = std::is_same<T, float>::value;
+        int lowest = std::numeric_limits<int>::max();  // the least frexp exponent of a nonzero value
+        const auto note = [&lowest](T v) {
+            if (v == 0) return;
+            int e = 0;
+            (void)std::frexp(v, &e);
+            lowest = std::min(lowest, e);
+        };
+        const Scene<T>& s = g.scene;
+        for (const Vec2<T>& v : {s.map.origin, s.map.tileSize, s.box.pos, s.box.size}) {
+            note(v.x);
+            note(v.y);
+        }
+        for (const Vec2<T>& m : s.moves) {
+            note(m.x);
+            note(m.y);
+        }
+        // v * 2^-shift stays normal while frexp's exponent e - shift >= min_exponent.
+        const int most = lowest - std::numeric_limits<T>::min_exponent;
+        const int wanted = isFloat ? *rc::gen::element(100, 110, 120, 1000, 60)
+                                   : *rc::gen::element(600, 700, 900, 1000, 5000);
+        g.scene = scaledDown(s, std::max(0, std::min(wanted, most)));
+        g.family = Family::TinyScale;
+        return g;
+    });
+}
+
+/// Capacity boundaries: a box whose contact bound maxContacts = (floor(w/tw) + 2) + (floor(h/th)
+/// + 2) is the inline limit (64, mover.h's kInlineContacts) or one or two past it (the wide
+/// path's bound), or one below, driven diagonally into the corner of a solid floor row and a
+/// solid wall column, so that one frame hits a whole row and a whole column of tiles: contact
+/// counts near the bound, which the claims store into buffers of exactly that many entries.
+template <class T>
+rc::Gen<GeneratedScene<T>> genCapacityScene() {
+    return rc::gen::exec([] {
+        const double tile = *rc::gen::element(16.0, 8.0, 1.0, 0.5, 12.0);
+        const double ox = *rc::gen::element(0.0, -4.0 * tile, 64.0 * tile);
+        const double oy = *rc::gen::element(0.0, 8.0 * tile);
+        const int bound = *rc::gen::element(64, 64, 65, 65, 66, 63);
+        // floor(w/tw) + floor(h/th) = bound - 4, w and h a whole number of tiles plus a fraction
+        // in eighths (0 to 7/8): the fraction lets the box span one more cell than it is long.
+        const int across = *rc::gen::inRange(1, bound - 4);
+        const int down = bound - 4 - across;
+        const double w = (across + *rc::gen::inRange(0, 8) / 8.0) * tile;
+        const double h = (down + *rc::gen::inRange(0, 8) / 8.0) * tile;
+        Grid<T> g;
+        g.columns = across + 8;
+        g.rows = down + 8;
+        g.solid.assign(static_cast<std::size_t>(g.columns * g.rows), 0);
+        const int wallColumn = g.columns - 2;
+        const int floorRow = g.rows - 2;
+        for (int j = 0; j < g.rows; ++j) g.set(wallColumn, j, true);
+        for (int i = 0; i < g.columns; ++i) g.set(i, floorRow, true);
+        // The box's far corner starts gapX, gapY (eighths of a tile) short of the wall and the
+        // floor; the move closes both gaps with a margin, equal gaps a corner tie.
+        const double gapX = *rc::gen::inRange(0, 17) * tile / 8.0;
+        const double gapY = *rc::gen::element(true, false) ? gapX : *rc::gen::inRange(0, 17) * tile / 8.0;
+        const Box<T> box{{static_cast<T>(ox + wallColumn * tile - gapX - w),
+                          static_cast<T>(oy + floorRow * tile - gapY - h)},
+                         {static_cast<T>(w), static_cast<T>(h)}};
+        const double more = *rc::gen::inRange(1, 17) * tile / 8.0;
+        const Vec2<T> move{static_cast<T>(gapX + more), static_cast<T>(gapY + more)};
+        Scene<T> scene = makeScene(g, ox, oy, tile, box, {move});
+        if (*rc::gen::arbitrary<bool>()) scene = transposed(scene);
+        return GeneratedScene<T>{scene, Family::Capacity, false};
+    });
+}
+
 }  // namespace detail
 
 /// Scenes of one family, or of all of them (`Mixed`).
@@ -793,8 +915,14 @@ rc::Gen<GeneratedScene<T>> genScene(Family family) {
             return genExtremeScene<T>();
         case Family::FilterBand:
             return genFilterBandScene<T>();
+        case Family::NearTie:
+            return genFilterBandScene<T>(true);
         case Family::HighSpeed:
             return genHighSpeedScene<T>();
+        case Family::TinyScale:
+            return detail::genTinyScaleScene<T>(genScene<T>(Family::Mixed));
+        case Family::Capacity:
+            return detail::genCapacityScene<T>();
         case Family::Mixed:
             break;
     }
