@@ -24,12 +24,14 @@ extends SceneTree
 const SAFE_MARGIN = 0.08
 # Godot's 2D broad phase (BroadPhase2DHashGrid, physics/2d/cell_size 128) walks every cell of a
 # query's bounds, after turning them into int32 cell numbers. A move that would make it walk more
-# cells than this is refused with an error line, as a game would refuse such a speed, instead of
-# stalling the batch: 2^30 cells took 2 to 4.5 s here (a move of 2^37 pixels down), and the
-# issue's move of (-1.8e17, -6.4e37) is 2^62 of them (out-of-range coordinates become INT_MIN)
-# and never returned. 2^22 cells is a straight move of 2^29 pixels, or 2^18 on both axes.
+# cells than this, or whose bounds leave the int32 range of cells (2^38 pixels: undefined in
+# Godot, 4 to 10 s a scene here; the issue's move of (-1.8e17, -6.4e37) never returned), is
+# refused with an error line, as a game would refuse such a speed, instead of stalling the
+# batch; so is a map that reaches past that range. 2^30 cells took 2 to 4.5 s, and a batch of a
+# thousand scenes near 2^22 cells each took minutes; 2^16 cells is a straight move of 2^23
+# pixels, or 2^15 on both axes.
 const BROADPHASE_CELL = 128.0
-const MAX_BROADPHASE_CELLS = 1 << 22
+const MAX_BROADPHASE_CELLS = 1 << 16
 # Bodies made at start (a map that needs more doubles the pool), and where unused ones wait.
 # 256 bodies take about 0.05 s to make; 1,024 took 0.25 s, paid by every batch.
 const POOL_START = 256
@@ -428,20 +430,22 @@ func place_map(scene):
 	cell_of = scene.solid
 
 
-# The int32 broad-phase cell Godot files a coordinate under: the float-to-int conversion of
-# x86-64 (cvttss2si) gives INT_MIN for anything out of range.
+# The int32 broad-phase cell Godot files a coordinate under. Out of the int32 range the
+# conversion is undefined (INT_MIN on x86-64), and such scenes ran for 4 to 10 s each here: the
+# walk then counts as endless.
 func broadphase_cell(v):
-	var c = floor(v / BROADPHASE_CELL)
-	return c if c >= -2147483648.0 and c <= 2147483647.0 else -2147483648.0
+	return floor(v / BROADPHASE_CELL)
 
 
-# How many cells Godot's broad phase walks for the bounds of this motion (see the constant).
 func broadphase_cells_walked(pos, size, motion):
 	var from_x = broadphase_cell(min(pos.x, pos.x + motion.x) - SAFE_MARGIN)
 	var to_x = broadphase_cell(max(pos.x, pos.x + motion.x) + size.x + SAFE_MARGIN)
 	var from_y = broadphase_cell(min(pos.y, pos.y + motion.y) - SAFE_MARGIN)
 	var to_y = broadphase_cell(max(pos.y, pos.y + motion.y) + size.y + SAFE_MARGIN)
-	return max(0.0, to_x - from_x + 1) * max(0.0, to_y - from_y + 1)
+	for c in [from_x, to_x, from_y, to_y]:
+		if c < -2147483648.0 or c > 2147483647.0:
+			return INF
+	return (to_x - from_x + 1) * (to_y - from_y + 1)
 
 
 # The exact sign of a + b - c, for doubles (TwoSum: a + b = s + e exactly).
@@ -467,6 +471,10 @@ func overlapped_tiles(scene, pos):
 
 
 func run_scene(scene):
+	var far_corner = scene.origin + Vector2(scene.columns * scene.tile.x, scene.rows * scene.tile.y)
+	if broadphase_cells_walked(scene.origin, far_corner - scene.origin, Vector2()) == INF:
+		fail("map", "godot: refused: the map reaches past the int32 range of Godot's broad-phase cells")
+		return null
 	place_map(scene)
 	var half = scene.size / 2
 	if half != box_half:
@@ -488,7 +496,8 @@ func run_scene(scene):
 		for slide in range(2):
 			var walked = broadphase_cells_walked(pos, scene.size, motion)
 			if walked > MAX_BROADPHASE_CELLS:
-				fail("moves", "godot: refused: for a move of (%s, %s) from (%s, %s), Godot's broad phase would walk %d cells (more than 2^22: a stall)" % [motion.x, motion.y, pos.x, pos.y, int(walked)])
+				var what = "cells out of the int32 range" if is_inf(walked) else "%d cells" % int(walked)
+				fail("moves", "godot: refused: for a move of (%s, %s) from (%s, %s), Godot's broad phase would walk %s (more than 2^16: a stall)" % [motion.x, motion.y, pos.x, pos.y, what])
 				return null
 			# As in move_and_slide: the second slide starts from where the first ended, while the
 			# server still holds the body at the frame's start.
