@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# Smoke test of an engine adapter (adapters/godot, adapters/rapier): runs it on a few scenes and
+# checks that it answers one line per scene, in order, with as many frames as tilesweep's own
+# answer, and an error exactly where tilesweep gives one; that it answers the same through a pipe
+# as from a file; then that tilesweep reads back every answer to a valid scene through
+# --resolver-cmd (file mode for Godot, pipe mode for Rapier). Exits 77 (ctest's skip code here) with
+# "skipped: ..." when the engine's runtime is not installed: the adapters install it on demand,
+# a test does not.
+#
+#   engine_smoke_test.sh godot|rapier TILESWEEP SCENES...
+set -euo pipefail
+engine=$1
+tilesweep=$2
+shift 2
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+case $engine in
+    godot) runtime=godot3-server ;;
+    rapier) runtime=node ;;
+    *) echo "unknown engine '$engine' (godot or rapier)" >&2; exit 2 ;;
+esac
+if ! command -v "$runtime" >/dev/null; then
+    echo "skipped: $runtime not installed (the $engine adapter installs it on first use)"
+    exit 77
+fi
+if [ "$engine" = rapier ] && ! command -v npm >/dev/null && [ ! -d "$here/rapier/node_modules" ]; then
+    echo "skipped: npm not installed, and adapters/rapier/node_modules is absent"
+    exit 77
+fi
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cat "$@" | grep -v '^[[:space:]]*$' > "$work/scenes.jsonl"
+"$tilesweep" resolve --scalar float "$work/scenes.jsonl" > "$work/expected.jsonl" || true
+"$here/$engine/run.sh" "$work/scenes.jsonl" "$work/answers.jsonl" 2> "$work/stderr" || {
+    echo "the $engine adapter failed; its stderr ends with:"
+    tail -n 20 "$work/stderr"
+    exit 1
+}
+
+# Pipe mode (scene lines on stdin) answers exactly as file mode does.
+if ! "$here/$engine/run.sh" < "$work/scenes.jsonl" > "$work/piped.jsonl" 2>> "$work/stderr" ||
+    ! cmp -s "$work/answers.jsonl" "$work/piped.jsonl"; then
+    echo "the $engine adapter answers differently through a pipe than from a file:"
+    diff "$work/answers.jsonl" "$work/piped.jsonl" | head -n 6
+    exit 1
+fi
+
+# Per line: "error", or the number of frames (one "pos" per frame).
+shape() { awk '{ if ($0 ~ /^\{"error": ?"/) print "error"; else if ($0 ~ /^\{"frames": \[/) print gsub(/"pos": \[/, "&") " frames"; else print "not an answer: " substr($0, 1, 60) }' "$1"; }
+shape "$work/expected.jsonl" > "$work/expected.shape"
+shape "$work/answers.jsonl" > "$work/answers.shape"
+if ! diff "$work/expected.shape" "$work/answers.shape" > "$work/diff"; then
+    echo "the $engine adapter's answers do not have the expected shape (< tilesweep, > $engine):"
+    cat "$work/diff"
+    exit 1
+fi
+# Every answer to a valid scene, read back by tilesweep exactly as check and audit read it.
+paste -d '\n' "$work/expected.shape" "$work/scenes.jsonl" | awk 'NR % 2 == 1 { keep = ($0 != "error") } NR % 2 == 0 && keep' \
+    > "$work/valid.jsonl"
+case $engine in
+    godot) command="$here/godot/run.sh {in} {out}" ;;
+    rapier) command="$here/rapier/run.sh" ;;
+esac
+if ! "$tilesweep" resolve --scalar float --resolver-cmd "$command" "$work/valid.jsonl" > "$work/read-back.jsonl" 2>&1; then
+    echo "tilesweep could not read every answer of the $engine adapter:"
+    grep '"error"' "$work/read-back.jsonl" | head -n 5
+    exit 1
+fi
+echo "$engine: $(wc -l < "$work/answers.jsonl") answers, one per scene, with the expected frames and errors," \
+    "$(wc -l < "$work/valid.jsonl") of them read back by tilesweep resolve --resolver-cmd"
