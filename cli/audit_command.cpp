@@ -234,7 +234,7 @@ int runConformance(const AuditOptions& options) {
         if (!jsonDir.empty()) std::filesystem::create_directories(jsonDir);
         std::ofstream(jsonPath) << audit::ratesJson(result);
         std::printf("rates: %s (%.1f s)\n", jsonPath.c_str(), result.seconds);
-        rates = audit::ratesMarkdown(result);
+        rates = "Written by `" + options.commandLine + "`.\n\n" + audit::ratesMarkdown(result);
         for (std::size_t e = 0; e < result.engines.size(); ++e) {
             audit::RateCell all;
             for (const audit::RateCell& c : result.cells[e]) all.merge(c);

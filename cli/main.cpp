@@ -330,8 +330,12 @@ int main(int argc, char** argv) {
 #if TILESWEEP_HAVE_AUDIT
     tilesweep::cli::AuditOptions auditOptions;
     CLI::App* auditCommand = tilesweep::cli::addAuditCommand(app, auditOptions);
-    for (int k = 0; k < argc; ++k)
-        auditOptions.commandLine += (k == 0 ? "tilesweep" : std::string(" ") + argv[k]);
+    for (int k = 0; k < argc; ++k) {  // as typed, an argument with a space quoted
+        const std::string arg = argv[k];
+        auditOptions.commandLine += k == 0                               ? std::string("tilesweep")
+                                    : arg.find(' ') != std::string::npos ? " \"" + arg + "\""
+                                                                         : " " + arg;
+    }
 #endif
 #if TILESWEEP_HAVE_AUDIT && TILESWEEP_HAVE_CHECK
     tilesweep::cli::MergeOptions mergeOptions;
