@@ -145,6 +145,10 @@ TEST(EngineRates, jsonReadsBackAsWritten) {
     const RatesResult back = readRatesJson(ratesJson(r));
     EXPECT_EQ(ratesJson(back), ratesJson(r));
     EXPECT_EQ(ratesMarkdown(back), ratesMarkdown(r));
+    const std::string md = ratesMarkdown(r);
+    EXPECT_NE(md.find("| 2^24 | "), std::string::npos);       // the tolerance table, by distance
+    EXPECT_NE(md.find("; 99%: "), std::string::npos);         // with the 99% tolerance beside the largest
+    EXPECT_NE(md.find("note = 0.08 px"), std::string::npos);  // the flaky engine's documented tolerance
     EXPECT_THROW((void)readRatesJson("{\"kind\": \"something else\"}"), std::runtime_error);
     EXPECT_THROW((void)readRatesJson("not json"), std::runtime_error);
 }

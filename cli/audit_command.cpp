@@ -80,9 +80,9 @@ CLI::App* addAuditCommand(CLI::App& app, AuditOptions& options) {
         ->capture_default_str();
     command
         ->add_option("--resolver-tolerance", options.resolverTolerances,
-                     "Conformance mode: per --resolver-cmd, in order, the engine's own tolerance in pixels,\n"
-                     "then what it is (\"0.08 safe margin\"); set beside the measured tolerances")
-        ->type_name("\"PX [NOTE]\"");
+                     "Conformance mode: an engine's own tolerance, by its --resolver-name, in pixels, then\n"
+                     "what it is (\"godot=0.08 safe margin\"); set beside the measured tolerances")
+        ->type_name("\"NAME=PX [NOTE]\"");
     command
         ->add_option("--compare", options.compare,
                      "Conformance mode: tilesweep's in-process implementations measured on the same scenes\n"
@@ -135,16 +135,27 @@ std::vector<audit::EngineSpec> comparedEngines(const std::string& list) {
     return engines;
 }
 
-/// "0.08 safe margin" -> 0.08 and "safe margin"; throws std::invalid_argument naming the option.
-std::pair<double, std::string> parseTolerance(const std::string& text) {
+/// An engine's documented tolerance: "godot=0.08 safe margin" -> godot, 0.08, "safe margin".
+struct DocumentedTolerance {
+    std::string name;
+    double pixels = 0;
+    std::string note;
+};
+
+/// Parses NAME=PIXELS [NOTE]; throws std::invalid_argument naming the option.
+DocumentedTolerance parseTolerance(const std::string& text) {
+    const std::size_t equals = text.find('=');
+    const std::string usage =
+        "--resolver-tolerance: expected NAME=PIXELS then a note, as \"godot=0.08 safe margin\", got '";
+    if (equals == std::string::npos || equals == 0) throw std::invalid_argument(usage + text + "'");
+    const char* number = text.c_str() + equals + 1;
     char* end = nullptr;
-    const double value = std::strtod(text.c_str(), &end);
-    if (end == text.c_str() || !(value >= 0) || !std::isfinite(value))
-        throw std::invalid_argument(
-            "--resolver-tolerance: expected pixels then a note, as \"0.08 safe margin\", got '" + text + "'");
+    const double value = std::strtod(number, &end);
+    if (end == number || !(value >= 0) || !std::isfinite(value))
+        throw std::invalid_argument(usage + text + "'");
     std::string note = end;
     while (!note.empty() && note.front() == ' ') note.erase(0, 1);
-    return {value, note};
+    return {text.substr(0, equals), value, note};
 }
 
 /// Conformance mode: one check per outside resolver, every run kept going for the whole budget
@@ -160,12 +171,27 @@ int runConformance(const AuditOptions& options) {
     std::vector<audit::EngineSpec> engines;
     try {
         engines = comparedEngines(options.compare);
+        std::vector<DocumentedTolerance> tolerances;
+        for (const std::string& text : options.resolverTolerances) tolerances.push_back(parseTolerance(text));
+        const auto labelOf = [&options](std::size_t k) {
+            return k < options.resolverNames.size() ? options.resolverNames[k] : options.resolverCmds[k];
+        };
+        for (const DocumentedTolerance& t : tolerances) {
+            bool named = false;
+            for (std::size_t k = 0; k < options.resolverCmds.size(); ++k)
+                named = named || labelOf(k) == t.name;
+            if (!named)
+                throw std::invalid_argument("--resolver-tolerance: no --resolver-name '" + t.name + "'");
+        }
         for (std::size_t k = 0; k < options.resolverCmds.size(); ++k) {
-            const std::string label =
-                k < options.resolverNames.size() ? options.resolverNames[k] : options.resolverCmds[k];
-            const auto [tolerance, note] = k < options.resolverTolerances.size()
-                                               ? parseTolerance(options.resolverTolerances[k])
-                                               : std::pair<double, std::string>{0, ""};
+            const std::string label = labelOf(k);
+            double tolerance = 0;
+            std::string note;
+            for (const DocumentedTolerance& t : tolerances)
+                if (t.name == label) {
+                    tolerance = t.pixels;
+                    note = t.note;
+                }
             const std::string command = options.resolverCmds[k];
             const double timeout = options.resolverTimeout;
             engines.push_back({label,

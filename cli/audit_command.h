@@ -32,7 +32,7 @@ struct AuditOptions {
     double resolverTimeout = 10;                 ///< seconds per batch before a resolver counts as hung
     // Engine rates (audit/engine_rates.h), in conformance mode after the checks.
     std::uint64_t ratesCases = 2000;              ///< scenes per family; 0: no rates
-    std::vector<std::string> resolverTolerances;  ///< per --resolver-cmd: "PIXELS [what it is]"
+    std::vector<std::string> resolverTolerances;  ///< "NAME=PIXELS [what it is]", by --resolver-name
     std::string compare = "tilesweep,twin,grid";  ///< in-process implementations measured beside them
     std::string ratesJson;                        ///< the rates file; empty: <pictures>/rates.json
     bool ratesOnly = false;                       ///< no property checks, only the rates
