@@ -266,8 +266,8 @@ std::string reportsEachCErrorByItsCause(const Scene<T>& scene) {
     using C = CApi<T>;
     constexpr int digits = std::numeric_limits<T>::digits;
     const TileMapView<T> view = scene.map.view();
-    std::vector<std::uint8_t> cells(view.solid,
-                                    view.solid + static_cast<std::size_t>(view.columns) * static_cast<std::size_t>(view.rows));
+    std::vector<std::uint8_t> cells(view.solid, view.solid + static_cast<std::size_t>(view.columns) *
+                                                                 static_cast<std::size_t>(view.rows));
     typename C::Desc base = descOf(view);
     if (cells.empty()) {
         cells.assign(1, 0);
