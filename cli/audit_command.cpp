@@ -71,7 +71,9 @@ CLI::App* addAuditCommand(CLI::App& app, AuditOptions& options) {
     command->add_option("--scalar", options.scalar, "Conformance mode: the resolvers' scalar type")
         ->check(CLI::IsMember(std::vector<std::string>{"float", "double"}))
         ->capture_default_str();
-    command->add_option("--resolver-timeout", options.resolverTimeout, "Conformance mode: seconds per batch")
+    command
+        ->add_option("--resolver-timeout", options.resolverTimeout,
+                     "Conformance mode: seconds an outside resolver may go without answering")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
     command

@@ -205,7 +205,7 @@ CLI::App* addCheckCommand(CLI::App& app, CheckOptions& options) {
         ->type_name("CMD");
     command
         ->add_option("--resolver-timeout", options.resolverTimeout,
-                     "Seconds a batch of scenes may take before the outside resolver counts as hung")
+                     "Seconds the outside resolver may go without answering before it counts as hung")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
     command->add_option("--claims", options.claims, "all, or safety: leave out the bit-for-bit claims")

@@ -185,7 +185,11 @@ std::size_t ResolverProcess::exchangeFrom(const std::vector<std::string>& lines,
     for (std::size_t k = from; k < lines.size(); ++k) (text += lines[k]) += '\n';
     std::size_t written = 0;
     std::size_t next = from;
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutSeconds_);
+    // The timeout is a silence: it starts again with every answer, so that a batch of any size
+    // gets the time it needs while a resolver that stops answering is caught.
+    const auto silence = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+        std::chrono::duration<double>(timeoutSeconds_));
+    auto deadline = std::chrono::steady_clock::now() + silence;
     char buffer[65536];
     while (next < lines.size()) {
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
@@ -242,6 +246,7 @@ std::size_t ResolverProcess::exchangeFrom(const std::vector<std::string>& lines,
                     replies[next].line.pop_back();
                 pending_.erase(0, end + 1);
                 ++next;
+                deadline = std::chrono::steady_clock::now() + silence;
             }
         }
     }
@@ -376,7 +381,11 @@ std::size_t ResolverProcess::runFileBatch(const std::vector<std::string>& lines,
     close(output[1]);
     ++starts_;
     errorTail_.clear();
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutSeconds_);
+    // As in pipe mode, the timeout is a silence: it starts again whenever the answer file grows.
+    const auto silence = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+        std::chrono::duration<double>(timeoutSeconds_));
+    auto deadline = std::chrono::steady_clock::now() + silence;
+    std::uintmax_t answered = 0;
     bool hung = false;
     int status = 0;
     bool exited = false;
@@ -385,6 +394,13 @@ std::size_t ResolverProcess::runFileBatch(const std::vector<std::string>& lines,
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
             deadline - std::chrono::steady_clock::now());
         if (left.count() <= 0) {
+            std::error_code noFile;
+            const std::uintmax_t size = std::filesystem::file_size(outPath, noFile);
+            if (!noFile && size > answered) {  // still answering
+                answered = size;
+                deadline = std::chrono::steady_clock::now() + silence;
+                continue;
+            }
             hung = true;
             break;
         }

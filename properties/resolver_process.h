@@ -45,7 +45,8 @@ struct ResolverReply {
 class ResolverProcess {
 public:
     /// @param command a shell command line, run by /bin/sh -c in its own process group
-    /// @param timeoutSeconds how long one batch may take before the process counts as hung
+    /// @param timeoutSeconds how long the process may go without answering (pipe mode: a line;
+    ///        file mode: the answer file growing) before it counts as hung
     ResolverProcess(std::string command, double timeoutSeconds);
     ~ResolverProcess();
     ResolverProcess(const ResolverProcess&) = delete;
