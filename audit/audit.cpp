@@ -30,13 +30,6 @@
 
 namespace tilesweep::audit {
 
-using oracle::ExactBox;
-using oracle::ExactFrame;
-using oracle::ExactRect;
-using oracle::ExactTileMap;
-using oracle::ExactVec2;
-using oracle::Rational;
-
 const char* metricName(Metric m) {
     switch (m) {
         case Metric::Decision:
