@@ -14,7 +14,6 @@
 #include "oracle/exact/rational_convert.h"
 #include "oracle/seed/seed_resolve.h"
 #include "oracle/substep/substep_float.h"
-#include "src/decision_path.h"
 
 #include "tilesweep/scene/scene.h"
 
@@ -184,11 +183,14 @@ std::vector<FrameResult<T>> runFrames(const Scene<T>& scene, Resolve resolve) {
 
 /// The path that decided the production resolver's frames of a scene: the most exact one used.
 template <class T>
-detail::DecisionPath decisionPathOf(const Scene<T>& scene) {
-    detail::DecisionPath worst = detail::DecisionPath::Fast;
+DecisionPath decisionPathOf(const Scene<T>& scene) {
+    DecisionPath worst = DecisionPath::Fast;
     runFrames(scene, [&worst](const SweepInput<T>& in, const ResolveOutput<T>& out) {
-        const SweepResult<T> r = resolveMove(in, out);
-        worst = std::max(worst, detail::lastDecisionPath());
+        FrameStats stats;
+        ResolveOutput<T> counted = out;
+        counted.stats = &stats;
+        const SweepResult<T> r = resolveMove(in, counted);
+        worst = std::max(worst, stats.path);
         return r;
     });
     return worst;
@@ -263,9 +265,9 @@ void auditScene(const std::vector<Implementation>& impls, const Family& family, 
     cov.cornerPass += first.cornerPass ? 1 : 0;
     cov.startOverlap += first.exact.startOverlaps.empty() ? 0 : 1;
     cov.resting += first.restingRow >= 0 ? 1 : 0;
-    const detail::DecisionPath path = decisionPathOf(scene);
-    cov.filtered += path == detail::DecisionPath::Filtered ? 1 : 0;
-    cov.exactPath += path == detail::DecisionPath::Exact ? 1 : 0;
+    const DecisionPath path = decisionPathOf(scene);
+    cov.filtered += path == DecisionPath::Filtered ? 1 : 0;
+    cov.exactPath += path == DecisionPath::Exact ? 1 : 0;
 
     for (std::size_t r = 0; r < impls.size(); ++r) {
         const Implementation& impl = impls[r];

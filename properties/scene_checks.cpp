@@ -9,7 +9,6 @@
 #include "oracle/exact/rational_convert.h"
 #include "oracle/substep/substep_oracle.h"
 #include "scene_runner.h"
-#include "src/decision_path.h"
 
 #include "tilesweep/box_sweep.h"
 #include "tilesweep/mover.h"
@@ -739,19 +738,19 @@ int widestSignificand(const Scene<T>& scene) {
     return widest;
 }
 
-/// The path that decided the scene's frames (src/decision_path.h): "exact" when any frame fell
+/// The path that decided the scene's frames (tilesweep/frame_stats.h): "exact" when any frame fell
 /// back to the lattice, else "filtered" when any predicate needed the exact refinement, else "fast".
 template <class T>
 const char* decisionPathOf(const Scene<T>& scene) {
-    using detail::DecisionPath;
     DecisionPath worst = DecisionPath::Fast;
     Vec2<T> start = scene.box.pos;
     std::vector<Contact<T>> contacts(64);
     std::vector<Cell> overlaps(64);
     for (const Vec2<T>& move : scene.moves) {
+        FrameStats stats;
         const SweepResult<T> r = resolveMove<T>({scene.map.view(), {start, scene.box.size}, move},
-                                                {contacts.data(), 64, overlaps.data(), 64});
-        const DecisionPath path = detail::lastDecisionPath();
+                                                {contacts.data(), 64, overlaps.data(), 64, &stats});
+        const DecisionPath path = stats.path;
         if (static_cast<int>(path) > static_cast<int>(worst)) worst = path;
         start = r.position;
     }

@@ -2,7 +2,6 @@
 #include "tilesweep/resolve.h"
 
 #include "axis_sweep.h"
-#include "decision_path.h"
 #include "fast_frame.h"
 #include "fault_injection.h"
 #include "lattice.h"
@@ -39,8 +38,11 @@
 namespace tilesweep {
 namespace {
 
-/// The path that decided this thread's last frame (decision_path.h): one byte, no constructor.
-thread_local detail::DecisionPath lastPath = detail::DecisionPath::Exact;
+/// Records the path that decided the frame when the caller asked for it (frame_stats.h).
+template <class T>
+void recordPath(const ResolveOutput<T>& output, DecisionPath path) noexcept {
+    if (output.stats != nullptr) output.stats->path = path;
+}
 
 using detail::AxisMotion;
 using detail::Fraction;
@@ -452,7 +454,7 @@ resolveMoving(const SweepInput<T>& input, const ResolveOutput<T>& output) noexce
         detail::FastFrame<T> frame(input);
         SweepResult<T> result;
         if (frame.run(output, result)) {
-            lastPath = frame.refined() ? detail::DecisionPath::Filtered : detail::DecisionPath::Fast;
+            recordPath(output, frame.refined() ? DecisionPath::Filtered : DecisionPath::Fast);
             return result;
         }
     } else if (!isValid(input)) {
@@ -461,10 +463,10 @@ resolveMoving(const SweepInput<T>& input, const ResolveOutput<T>& output) noexce
         invalid.position = input.box.pos;
         if (!std::isfinite(invalid.position.x) || !std::isfinite(invalid.position.y))
             invalid.position = {0, 0};
-        lastPath = detail::DecisionPath::Exact;
+        recordPath(output, DecisionPath::Exact);
         return invalid;
     }
-    lastPath = detail::DecisionPath::Exact;
+    recordPath(output, DecisionPath::Exact);
     return solveOnLattice(input, output);
 }
 
@@ -476,16 +478,12 @@ SweepResult<T> resolveMove(const SweepInput<T>& input, const ResolveOutput<T>& o
     if (input.displacement.x == 0 && input.displacement.y == 0) {
         SweepResult<T> result;
         if (detail::resolveZeroMove(input, output, result)) {
-            lastPath = detail::DecisionPath::Fast;
+            recordPath(output, DecisionPath::Fast);
             return result;
         }
     }
     return resolveMoving(input, output);
 }
-
-namespace detail {
-DecisionPath lastDecisionPath() noexcept { return lastPath; }
-}  // namespace detail
 
 template SweepResult<float> resolveMove<float>(const SweepInput<float>&,
                                                const ResolveOutput<float>&) noexcept;

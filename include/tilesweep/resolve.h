@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "tilesweep/frame_stats.h"
 #include "tilesweep/math.h"
 #include "tilesweep/tile_map.h"
 
@@ -63,6 +64,7 @@ struct ResolveOutput {
     std::int32_t contactCapacity = 0;
     Cell* startOverlaps = nullptr;  ///< receives up to startOverlapCapacity cells
     std::int32_t startOverlapCapacity = 0;
+    FrameStats* stats = nullptr;  ///< optional: receives how the frame was decided (frame_stats.h)
 };
 
 /// The result of one frame.

@@ -6,6 +6,7 @@
 // are included on their own.
 
 #include "tilesweep/box_sweep.h"
+#include "tilesweep/frame_stats.h"
 #include "tilesweep/math.h"
 #include "tilesweep/mover.h"
 #include "tilesweep/resolve.h"
