@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-// The exact single-tile test of the contract, on lattice integers (lattice.h).
+// The contract's test of one box against one tile, written once for every arithmetic: the
+// lattice integers (lattice.h), and the exact doubles or exact pairs of the fast path
+// (pair_arithmetic.h). The resolver applies it to every candidate tile (frame_loop.h), and
+// sweepBox to its one tile (box_sweep.cpp).
 //
 // On one axis the box [low, high] moves by disp; a tile spans [lo, hi]. With dir = sign(disp)
 // and speed = |disp|, the projections overlap (open) for t in (entry, exit), where
@@ -10,25 +13,69 @@
 //     dir < 0: entryDistance = low - hi,   exitDistance = high - lo.
 // A static axis overlaps for all t or for none. With E = max entry and X = min exit over both
 // axes, the tile blocks iff 0 <= E < 1 and E < X (0 not in I and I meets (0, 1), CONTRACT.md).
-// Every comparison of two times n1/s1 and n2/s2 is made as n1*s2 against n2*s1 (s1, s2 > 0):
-// integers, so exact. That settles corner misses (E >= X, including a path exactly through a
-// corner, E == X) and exact ties (equal entries) without any tolerance.
+// Every comparison of two times n1/s1 and n2/s2 is made as n1*s2 against n2*s1 (s1, s2 > 0),
+// exactly (compareProducts: integers on the lattice; monotonic rounding and TwoProduct, or a
+// certified filter with an exact refinement, on doubles). That settles corner misses (E >= X,
+// including a path exactly through a corner, E == X) and exact ties (equal entries) without any
+// tolerance.
 
 #include "fault_injection.h"
+#include "pair_arithmetic.h"
 
 #include "tilesweep/math.h"
 
 #include <cmath>
 #include <cstdint>
+#include <utility>
 
 namespace tilesweep::detail {
 
-/// A time n / d with d > 0, as a fraction of the frame.
-template <class Num>
-struct Fraction {
-    Num num;
-    Num den;
+/// A time num / den with den > 0, as a fraction of the frame: a coordinate (a distance) over a
+/// speed.
+template <class Coord, class Speed>
+struct TimeRatio {
+    Coord num;
+    Speed den;
 };
+
+/// A time on the lattice: both parts integers.
+template <class Num>
+using Fraction = TimeRatio<Num, Num>;
+
+// The lattice integers' operations under the names the double arithmetic uses
+// (pair_arithmetic.h), so that the test below and the frame loop read the same on both.
+
+/// The sign of an integer.
+template <class Num>
+[[nodiscard]] inline auto signOf(const Num& v) noexcept -> decltype(v.sign()) {
+    return v.sign();
+}
+/// -1, 0 or 1 as a*s compares with b*t, exactly (integers).
+template <class Num>
+[[nodiscard]] inline auto compareProducts(const Num& a, const Num& s, const Num& b, const Num& t,
+                                          bool&) noexcept -> decltype(compare(a * s, b* t)) {
+    return compare(a * s, b * t);
+}
+/// An integer as a double, for estimates only.
+template <class Num>
+[[nodiscard]] inline auto approximate(const Num& v) noexcept
+    -> decltype(v.approximate(std::declval<int&>())) {
+    int e = 0;
+    const double m = v.approximate(e);
+    return std::ldexp(m, e);
+}
+
+/// Whether two closed intervals [low, high] and [lo, hi] overlap, given the signs of low - hi
+/// and high - lo: their interiors must meet, so touching is not overlapping (CONTRACT.md). The
+/// one statement of that rule: the start overlaps, the tile test and the held axis of a one-axis
+/// move all ask it.
+[[nodiscard]] inline bool overlapsOpen(int lowMinusHi, int highMinusLo) noexcept {
+#if defined(TILESWEEP_FAULT_TOUCH_OVERLAPS)
+    return lowMinusHi <= 0 && highMinusLo >= 0;  // deliberate fault: touching counted as overlap
+#else
+    return lowMinusHi < 0 && highMinusLo > 0;
+#endif
+}
 
 /// -1, 0 or 1 as a/b compares with c/d (denominators positive).
 template <class Num>
@@ -39,6 +86,10 @@ template <class Num>
 /// One axis of a box's motion, in lattice integers.
 template <class Num>
 struct AxisMotion {
+    using Coord = Num;  ///< a coordinate or a distance
+    using Speed = Num;  ///< the denominator of a time
+    using Edge = Num;   ///< a tile edge
+
     Num low;    ///< box edge with the smaller coordinate, at t = 0
     Num high;   ///< low + size
     Num disp;   ///< displacement over the frame
@@ -53,11 +104,7 @@ struct AxisMotion {
     }
     /// Open overlap of the box's projection at t = 0 with [lo, hi].
     [[nodiscard]] bool overlapsAtStart(const Num& lo, const Num& hi) const noexcept {
-#if defined(TILESWEEP_FAULT_TOUCH_OVERLAPS)
-        return low <= hi && high >= lo;  // deliberate fault: touching counted as overlap
-#else
-        return low < hi && high > lo;
-#endif
+        return overlapsOpen(compare(low, hi), compare(high, lo));
     }
 };
 
@@ -72,19 +119,22 @@ template <class Num>
 enum class TileVerdict : std::uint8_t { Misses, StartsOverlapping, BlocksOnX, BlocksOnY, Tie };
 
 /// The verdict on one tile and, when it blocks, its time of impact.
-template <class Num>
+template <class Coord, class Speed>
 struct TileTest {
     TileVerdict verdict;
-    Fraction<Num> time;  ///< set when the tile blocks (or ties)
+    TimeRatio<Coord, Speed> time;  ///< set when the tile blocks (or ties)
 };
 
 /// The contract's test of one tile [xlo, xhi] x [ylo, yhi] against a box moving on both axes
-/// or on one; a box that moves on neither never blocks.
-template <class Num>
-[[nodiscard]] TileTest<Num> testTile(const AxisMotion<Num>& mx, const AxisMotion<Num>& my, const Num& xlo,
-                                     const Num& xhi, const Num& ylo, const Num& yhi) noexcept {
-    const Num zero = Num::fromInt(0);
-    TileTest<Num> miss{TileVerdict::Misses, {zero, Num::fromInt(1)}};
+/// or on one; a box that moves on neither never blocks. `Motion` is an axis of the arithmetic
+/// in use (AxisMotion on the lattice, FastAxis on doubles); `refined` is set when a comparison
+/// of products needed its exact refinement (frame_stats.h, DecisionPath::Filtered).
+template <class Motion, class Coord = typename Motion::Coord, class Speed = typename Motion::Speed,
+          class Edge = typename Motion::Edge>
+[[nodiscard]] TileTest<Coord, Speed> testTile(const Motion& mx, const Motion& my, const Edge& xlo,
+                                              const Edge& xhi, const Edge& ylo, const Edge& yhi,
+                                              bool& refined) noexcept {
+    TileTest<Coord, Speed> miss{TileVerdict::Misses, {}};
     if (mx.dir == 0 || my.dir == 0) {
         if (mx.dir == 0 && my.dir == 0) {
             if (mx.overlapsAtStart(xlo, xhi) && my.overlapsAtStart(ylo, yhi))
@@ -93,46 +143,46 @@ template <class Num>
         }
         // One static axis: it overlaps at all times or never; the moving axis alone decides.
         const bool xMoves = mx.dir != 0;
-        const AxisMotion<Num>& moving = xMoves ? mx : my;
-        const AxisMotion<Num>& still = xMoves ? my : mx;
-        const Num& lo = xMoves ? xlo : ylo;
-        const Num& hi = xMoves ? xhi : yhi;
+        const Motion& moving = xMoves ? mx : my;
+        const Motion& still = xMoves ? my : mx;
+        const Edge& lo = xMoves ? xlo : ylo;
+        const Edge& hi = xMoves ? xhi : yhi;
         if (!(xMoves ? still.overlapsAtStart(ylo, yhi) : still.overlapsAtStart(xlo, xhi))) return miss;
-        const Num entry = moving.entryDistance(lo, hi);
-        if (entry.isNegative()) {
-            if (moving.exitDistance(lo, hi).sign() > 0) miss.verdict = TileVerdict::StartsOverlapping;
+        const Coord entry = moving.entryDistance(lo, hi);
+        if (signOf(entry) < 0) {
+            if (signOf(moving.exitDistance(lo, hi)) > 0) miss.verdict = TileVerdict::StartsOverlapping;
             return miss;
         }
-        if (entry >= moving.speed) return miss;  // entry >= 1
+        if (compare(entry, moving.speed) >= 0) return miss;  // entry >= 1
         return {xMoves ? TileVerdict::BlocksOnX : TileVerdict::BlocksOnY, {entry, moving.speed}};
     }
-    const Num ex = mx.entryDistance(xlo, xhi);
-    const Num ey = my.entryDistance(ylo, yhi);
-    const Num xx = mx.exitDistance(xlo, xhi);
-    const Num xy = my.exitDistance(ylo, yhi);
-    if (ex.isNegative() && ey.isNegative()) {
+    const Coord ex = mx.entryDistance(xlo, xhi);
+    const Coord ey = my.entryDistance(ylo, yhi);
+    const Coord xx = mx.exitDistance(xlo, xhi);
+    const Coord xy = my.exitDistance(ylo, yhi);
+    if (signOf(ex) < 0 && signOf(ey) < 0) {
         // E < 0: either the box overlaps the tile now (0 in I), or I lies before t = 0.
-        if (xx.sign() > 0 && xy.sign() > 0) miss.verdict = TileVerdict::StartsOverlapping;
+        if (signOf(xx) > 0 && signOf(xy) > 0) miss.verdict = TileVerdict::StartsOverlapping;
         return miss;
     }
 #if defined(TILESWEEP_FAULT_END_INCLUSIVE)
-    if (ex > mx.speed || ey > my.speed) return miss;  // deliberate fault: a tile reached at t = 1 blocks
+    if (compare(ex, mx.speed) > 0 || compare(ey, my.speed) > 0)
+        return miss;  // deliberate fault: a tile reached at t = 1 blocks
 #else
-    if (ex >= mx.speed || ey >= my.speed) return miss;  // E >= 1
+    if (compare(ex, mx.speed) >= 0 || compare(ey, my.speed) >= 0) return miss;  // E >= 1
 #endif
 #if !defined(TILESWEEP_FAULT_NO_CORNER_MISS)
     // E < X: each axis enters before the other exits (an axis's own entry precedes its exit).
-    if (!(ex * my.speed < xy * mx.speed)) return miss;
-    if (!(ey * mx.speed < xx * my.speed)) return miss;
+    if (compareProducts(ex, my.speed, xy, mx.speed, refined) >= 0) return miss;
+    if (compareProducts(ey, mx.speed, xx, my.speed, refined) >= 0) return miss;
 #endif
 #if defined(TILESWEEP_FAULT_DOUBLE_PREDICATE)
     // Deliberate fault: the entry comparison in plain double arithmetic.
-    int ea = 0, eb = 0, ec = 0, ed = 0;
-    const double pa = std::ldexp(ex.approximate(ea), ea) * std::ldexp(my.speed.approximate(eb), eb);
-    const double pb = std::ldexp(ey.approximate(ec), ec) * std::ldexp(mx.speed.approximate(ed), ed);
+    const double pa = approximate(ex) * approximate(my.speed);
+    const double pb = approximate(ey) * approximate(mx.speed);
     const int order = pa > pb ? 1 : (pa < pb ? -1 : 0);
 #else
-    const int order = compare(ex * my.speed, ey * mx.speed);
+    const int order = compareProducts(ex, my.speed, ey, mx.speed, refined);
 #endif
     if (order > 0) return {TileVerdict::BlocksOnX, {ex, mx.speed}};
     if (order < 0) return {TileVerdict::BlocksOnY, {ey, my.speed}};

@@ -18,6 +18,7 @@
 // 2^-400 and 2^244), far inside both limits.
 
 #include "fault_injection.h"
+#include "proof_constants.h"
 
 #include <cmath>
 #include <cstdint>
@@ -64,19 +65,25 @@ namespace tilesweep::detail {
 }
 
 /// A real number held exactly as hi + lo, where hi = fl(hi + lo) (the sum rounded to nearest)
-/// and |lo| <= ulp(hi) / 2: what TwoSum makes of a sum or difference of two doubles. Because hi
-/// is the rounded value, comparisons with a double are exact by monotonic rounding (compare).
-struct ExactPair {
-    double hi;
-    double lo;
+/// and |lo| <= ulp(hi) / 2: what TwoSum makes of a sum or difference of two floating-point
+/// numbers. Because hi is the rounded value, comparisons with a double are exact by monotonic
+/// rounding (compare).
+template <class T>
+struct ExactSum {
+    T hi;
+    T lo;
 };
+/// The fast path's exact pair of doubles.
+using ExactPair = ExactSum<double>;
 
 /// a + b exactly, as a normalized pair (Knuth's TwoSum: six operations, no branch, exact for
-/// any finite doubles whose sum does not overflow).
-[[nodiscard]] inline ExactPair twoSum(double a, double b) noexcept {
-    const double s = a + b;
-    const double bVirtual = s - a;
-    const double aVirtual = s - bVirtual;
+/// any finite floats or doubles whose sum does not overflow; no FMA: -ffp-contract=off). The
+/// one TwoSum of the library: the fast path, the zero and free moves and map validation use it.
+template <class T>
+[[nodiscard]] inline ExactSum<T> twoSum(T a, T b) noexcept {
+    const T s = a + b;
+    const T bVirtual = s - a;
+    const T aVirtual = s - bVirtual;
     return {s, (a - aVirtual) + (b - bVirtual)};
 }
 
@@ -126,10 +133,6 @@ struct ExactPair {
     return signOfSum(terms, 8);
 }
 
-/// The semi-static error bound of compareProducts on pairs, relative to |fl(a.hi*s)| +
-/// |fl(b.hi*t)|: (3 + 16u)u with u = 2^-53 (derivation at compareProducts below).
-inline constexpr double kPairProductErrorBound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53;
-
 /// -1, 0 or 1 as A*s compares with B*t, exactly, for exact pairs A, B and doubles s, t >= 0.
 /// Pairs whose low parts are zero go to the product comparison above (exact by monotonic
 /// rounding and TwoProduct). Otherwise a semi-static filter decides (Shewchuk 1997; the CGAL
@@ -138,11 +141,11 @@ inline constexpr double kPairProductErrorBound = (3.0 + 16.0 * 0x1p-53) * 0x1p-5
 /// (each rounding to nearest errs by at most u times its result), and the low parts add
 ///   |a.lo*s| + |b.lo*t| <= u|a.hi*s| + u|b.hi*t| <= (u + u^2)(|p| + |q|)
 /// (|lo| <= ulp(hi)/2 <= u|hi|): the exact difference lies within (3u + 2u^2)(|p| + |q|) of D.
-/// The bound is computed as fl(c * fl(|p| + |q|)), at least c(1 - u)^2(|p| + |q|), which for
-/// c = (3 + 16u)u exceeds (3u + 2u^2)(|p| + |q|). So |D| above it gives the sign of D, exactly.
-/// Inside it, the sign of the eight-term exact sum (four TwoProducts) settles it, and `refined`
-/// is set. The caller's range keeps every product and every TwoProduct error term far from
-/// overflow and underflow.
+/// The bound (kPairProductErrorBound, proof_constants.h) is computed as fl(c * fl(|p| + |q|)), at least c(1 -
+/// u)^2(|p| + |q|), which for c = (3 + 16u)u exceeds (3u + 2u^2)(|p| + |q|). So |D| above it gives the sign
+/// of D, exactly. Inside it, the sign of the eight-term exact sum (four TwoProducts) settles it, and
+/// `refined` is set. The caller's range keeps every product and every TwoProduct error term far from overflow
+/// and underflow.
 [[nodiscard, gnu::always_inline]] inline int compareProducts(ExactPair a, double s, ExactPair b, double t,
                                                              bool& refined) noexcept {
     if (a.lo == 0 && b.lo == 0) return compareProducts(a.hi, s, b.hi, t, refined);

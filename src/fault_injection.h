@@ -5,18 +5,18 @@
 // A build with -DTILESWEEP_FAULT=<NAME> defines TILESWEEP_FAULT_<NAME>, which switches on one
 // of these at its place in the code; an ordinary build defines none and compiles none of them.
 //
-//   TOUCH_OVERLAPS     touching counted as overlapping            (axis_sweep.h)
+//   TOUCH_OVERLAPS     touching counted as overlapping, wherever the solver asks (overlapsOpen,
+//                      axis_sweep.h: start overlaps, the tile test, a one-axis move's held span)
 //   NO_CORNER_MISS     the corner-miss test (E < X) dropped        (axis_sweep.h)
 //   TIE_REVERSED       the exposed-face tie rule reversed          (axis_sweep.h)
 //   DOUBLE_PREDICATE   entry times compared in plain double        (axis_sweep.h)
-//   ROUND_NEAREST      positions rounded to nearest, not toward the start (resolve.cpp)
-//   BROADPHASE_SHORT   the broadphase's secondary range one cell short   (resolve.cpp)
+//   ROUND_NEAREST      positions rounded to nearest, not toward the start (final_rounding.h)
+//   BROADPHASE_SHORT   the broadphase's secondary range one cell short   (frame_loop.h)
 //   OLD_ROUNDING_RULE  positions always rounded toward the start: the contract before its
-//                      amendment, which can leave the far edge inside a missed corner (resolve.cpp)
+//                      amendment, which can leave the far edge inside a missed corner (final_rounding.h)
 //   TIME_TIES_AWAY     a frame time exactly halfway between two values rounded away, not to even (lattice.h,
-//                      fast_frame.h)
-//   END_INCLUSIVE      a tile reached at exactly t = 1, both axes moving, counted as a hit (axis_sweep.h,
-//                      fast_frame.h)
+//                      time_rounding.h: one #if in each of the three roundings, float, double, lattice)
+//   END_INCLUSIVE      a tile reached at exactly t = 1, both axes moving, counted as a hit (axis_sweep.h)
 //   NARROW_TIER        frames that need 128 to 191 bits solved on 128-bit integers (lattice.h)
 //   FMA                -ffp-contract=fast instead of off           (cmake/warnings.cmake)
 //   ORACLE_SKIPS_TOUCH_AT_0  in the exact reference only: a tile touched at t = 0 never blocks
@@ -26,7 +26,7 @@
 //                      (kSecondaryRangeErrorUlps, fast_frame.h) and the double frames' time
 //                      comparison filter (kPairProductErrorBound, exact_double.h)
 //   FAST_RANGE_TOO_WIDE  the range test admitting a float frame to the fast path one binade
-//                      too generous (spans of 54 bits, which a double cannot hold) (fast_frame.h)
+//                      too generous (spans of 54 bits, which a double cannot hold) (range_admission.h)
 //   FAST_RANGE_FAR_TOO_WIDE  the same six binades too generous: the range test bounds every
 //                      coordinate with a few bits of slack, so one binade alone rarely shows
 // Issue 20's four classes, one fault standing for each:
@@ -34,7 +34,7 @@
 //                      with its two sides swapped, so a nonzero sign inside the filter's band
 //                      comes out reversed (exact_double.h)
 //   RANGE_NO_LOWER_BOUND  the tiny end of the range: the double range test forgets its lower
-//                      bound 2^-250, so products and TwoProduct errors underflow (fast_frame.h)
+//                      bound 2^-250, so products and TwoProduct errors underflow (range_admission.h)
 //   INLINE_LIMIT_EXCLUSIVE  capacity boundaries: a box whose maxContacts is exactly the inline
 //                      limit (64) refused as ContactBufferTooSmall with no buffer (mover.cpp)
 //   C_ERROR_CODES_SWAPPED  error codes: the C API maps the unrepresentable-edge errors on x and

@@ -10,6 +10,10 @@
 // settle) returns false and the caller runs the full resolver. Results are bit-identical to
 // resolveMove's (tests/mover_test.cpp compares them over random scenes).
 
+#include "cell_range.h"
+#include "exact_double.h"
+#include "proof_constants.h"
+
 #include "tilesweep/math.h"
 #include "tilesweep/tile_map.h"
 
@@ -33,9 +37,7 @@ template <class T>
     }
     const T s = x + d;
     if (!std::isfinite(s) || s == 0) return false;
-    const T dVirtual = s - x;  // Knuth's TwoSum: error = (x + d) - s exactly (-ffp-contract=off)
-    const T xVirtual = s - dVirtual;
-    const T error = (x - xVirtual) + (d - dVirtual);
+    const T error = twoSum(x, d).lo;  // (x + d) - s exactly
     if (error == 0) {
         q = s;
         return true;
@@ -45,29 +47,17 @@ template <class T>
     return true;
 }
 
-/// A range of cell indices on one axis, first <= last.
-struct CellRange {
-    std::int64_t first;
-    std::int64_t last;
-};
-
-/// The cells [first, last] of one axis that a closed interval [lo, hi] can touch, widened by
-/// one cell on each side and clamped to [0, count). Returns 1 with `range` set, 0 when the
-/// interval lies off the map (no cell), and -1 (not settled here: resolve fully) when
-/// `magnitude`, the sum of the input magnitudes, is too large against the tile for the
-/// estimate. Error: lo and hi come from at most two roundings of values below `magnitude`, and
-/// the subtraction of the origin and the product by the rounded inverse add a few more relative
-/// 2^-53; all told under 2^-50 * magnitude / tile cells, which 2^-48 * magnitude < tile / 4 keeps
-/// far below a quarter cell, and the widening by one covers it and the closed ends.
-[[nodiscard]] inline int cellRangeOf(double lo, double hi, double origin, double tile, double inverseTile,
-                                     double magnitude, std::int32_t count, CellRange& range) noexcept {
-    if (!(magnitude * 0x1p-48 < tile * 0.25)) return -1;  // not settled here
-    const double a = std::floor((lo - origin) * inverseTile) - 1;
-    const double b = std::floor((hi - origin) * inverseTile) + 1;
-    if (b < 0 || a >= static_cast<double>(count)) return 0;  // off the map: no cell
-    range.first = a < 0 ? 0 : static_cast<std::int64_t>(a);
-    range.last = b >= static_cast<double>(count) ? count - 1 : static_cast<std::int64_t>(b);
-    return 1;
+/// The cells of one axis that a closed interval [lo, hi] can touch, widened by one cell on each
+/// side and clamped to [0, count) (estimateCells: empty when the interval lies off the map);
+/// false (not settled here: resolve fully) when `magnitude`, the sum of the input magnitudes, is
+/// too large against the tile for the estimate (kFreeMoveMagnitudeScale, proof_constants.h: the
+/// estimate is then within a sixteenth of a cell, which the widening by one covers with the
+/// closed ends).
+[[nodiscard]] inline bool cellRangeOf(double lo, double hi, double origin, double tile, double inverseTile,
+                                      double magnitude, std::int32_t count, CellRange& range) noexcept {
+    if (!(magnitude * kFreeMoveMagnitudeScale < tile * 0.25)) return false;  // not settled here
+    range = estimateCells((lo - origin) * inverseTile, (hi - origin) * inverseTile, 1.0, count);
+    return true;
 }
 
 /// True when a row-major block of cells holds no solid byte (an OR over each row: vectorised).
@@ -108,13 +98,13 @@ template <class T>
     const double magY = std::fabs(y) + std::fabs(dy) + h + std::fabs(oy);
     CellRange cx{};
     CellRange cy{};
-    const int inX = cellRangeOf(dx < 0 ? x + dx : x, dx > 0 ? x + dx + w : x + w, ox,
-                                static_cast<double>(map.tileSize.x), inverseTile.x, magX, map.columns, cx);
-    if (inX < 0) return false;
-    const int inY = cellRangeOf(dy < 0 ? y + dy : y, dy > 0 ? y + dy + h : y + h, oy,
-                                static_cast<double>(map.tileSize.y), inverseTile.y, magY, map.rows, cy);
-    if (inY < 0) return false;
-    if (inX == 1 && inY == 1 && !blockIsEmpty(map.solid, map.columns, cx, cy)) return false;
+    if (!cellRangeOf(dx < 0 ? x + dx : x, dx > 0 ? x + dx + w : x + w, ox,
+                     static_cast<double>(map.tileSize.x), inverseTile.x, magX, map.columns, cx) ||
+        !cellRangeOf(dy < 0 ? y + dy : y, dy > 0 ? y + dy + h : y + h, oy,
+                     static_cast<double>(map.tileSize.y), inverseTile.y, magY, map.rows, cy))
+        return false;
+    if (cx.first <= cx.last && cy.first <= cy.last && !blockIsEmpty(map.solid, map.columns, cx, cy))
+        return false;
     position = end;
     return true;
 }

@@ -256,4 +256,19 @@ decltype(auto) withWidth(int bits, F&& f) {
     return f(WideInt<70>::fromInt(0));
 }
 
+/// The dyadic forms of `count` inputs, in order.
+template <class T>
+inline void decomposeEach(const T* values, int count, Dyadic* out) noexcept {
+    for (int k = 0; k < count; ++k) out[k] = decompose(values[k]);
+}
+
+/// The lattice set-up of a frame or of a single tile: the lattice of the inputs `d` (none of the
+/// coordinates formed from them reaching 2^topExponent), then f(Num{}, exponent) with the
+/// narrowest integers that hold it.
+template <class F>
+decltype(auto) onLattice(const Dyadic* d, int count, int topExponent, F&& f) {
+    const LatticeShape shape = shapeLattice(d, count, topExponent);
+    return withWidth(bitsNeeded(shape), [&](auto tag) { return f(tag, shape.exponent); });
+}
+
 }  // namespace tilesweep::detail

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "tilesweep/tile_map.h"
 
+#include "exact_double.h"
+
 #include <cmath>
 
 namespace tilesweep {
@@ -11,12 +13,9 @@ namespace {
 /// representable iff that error is zero. No FMA may fuse these lines: -ffp-contract=off.
 template <class T>
 bool sumIsExact(T a, T b, T& s) noexcept {
-    s = a + b;
-    if (!std::isfinite(s)) return false;
-    const T bVirtual = s - a;
-    const T aVirtual = s - bVirtual;
-    const T error = (a - aVirtual) + (b - bVirtual);
-    return error == 0;
+    const detail::ExactSum<T> sum = detail::twoSum(a, b);
+    s = sum.hi;
+    return std::isfinite(s) && sum.lo == 0;
 }
 
 /// First k in [1, count] whose edge origin + k*tile is not representable, or -1. Induction:

@@ -22,7 +22,10 @@
 // settles it exactly. Float inputs are widened to double (exactly) and take the
 // same test. Inputs must be valid (finite, sizes > 0); estimates beyond +-2^52 are undecided.
 
+#include "cell_range.h"
 #include "exact_double.h"
+#include "proof_constants.h"
+#include "validity.h"
 
 #include "tilesweep/resolve.h"
 
@@ -32,18 +35,12 @@
 
 namespace tilesweep::detail {
 
-/// floor(v) for a finite |v| < 2^52 (no libm call: x86-64's baseline has no rounding instruction).
-[[nodiscard]] inline std::int64_t zeroMoveFloor(double v) noexcept {
-    auto k = static_cast<std::int64_t>(v);  // toward zero
-    if (static_cast<double>(k) > v) --k;
-    return k;
-}
-
 /// Whether num = n * t exactly, for a double integer n = fl(num / t): the product rounds to num
 /// and its rounding error (TwoProduct, exact_double.h) is zero. Away from underflow only.
 [[nodiscard]] inline bool isExactQuotient(double num, double t, double n) noexcept {
     if (num == 0) return true;  // n = fl(0 / t) = 0
-    if (!(std::fabs(num) > 0x1p-900 && std::fabs(num) < 0x1p900)) return false;
+    if (!(std::fabs(num) > kZeroMoveUnderflowGuard && std::fabs(num) < 1 / kZeroMoveUnderflowGuard))
+        return false;
     const double p = n * t;
     return p == num && productError(n, t, p) == 0;
 }
@@ -85,15 +82,17 @@ zeroMoveCells(double x, double w, double o, double t, std::int64_t cells, std::i
     const double b = a + w;
     const double ql = a / t;
     const double qh = b / t;
-    constexpr double kReach = 0x1p52;
     // NaN (an overflowing x - o) fails this too.
-    if (!(std::fabs(ql) < kReach && std::fabs(qh) < kReach)) return false;
+    if (!(std::fabs(ql) < kZeroMoveReach && std::fabs(qh) < kZeroMoveReach)) return false;
     // A quotient near underflow loses its relative error bound (0 for a nonzero Ql, say).
-    if ((std::fabs(ql) < 0x1p-900 && a != 0) || (std::fabs(qh) < 0x1p-900 && b != 0)) return false;
-    const std::int64_t i0 = zeroMoveFloor(ql);
-    const std::int64_t i1 = zeroMoveFloor(qh);
-    const double el = 0x1p-50 * std::fabs(ql) + 0x1p-52;
-    const double eh = 0x1p-50 * (std::fabs(ql) + std::fabs(qh)) + 0x1p-52;
+    if ((std::fabs(ql) < kZeroMoveUnderflowGuard && a != 0) ||
+        (std::fabs(qh) < kZeroMoveUnderflowGuard && b != 0))
+        return false;
+    const std::int64_t i0 = floorToInt(ql);
+    const std::int64_t i1 = floorToInt(qh);
+    constexpr double kBand = kZeroMoveBandUlps * kUnitRoundoff;  // 2^-50 (proof_constants.h)
+    const double el = kBand * std::fabs(ql) + kZeroMoveBandFloor;
+    const double eh = kBand * (std::fabs(ql) + std::fabs(qh)) + kZeroMoveBandFloor;
     const double rl = ql - static_cast<double>(i0);
     const double rh = qh - static_cast<double>(i1);
     std::int64_t last = i1;
@@ -105,26 +104,12 @@ zeroMoveCells(double x, double w, double o, double t, std::int64_t cells, std::i
     return true;
 }
 
-/// isValid (validate.cpp) inline, for the early exit: v - v is +0 for a finite v and NaN for
-/// an infinity or a NaN, so the sum of eight of them is zero iff all eight are finite.
-template <class T>
-[[nodiscard]] inline bool isValidInline(const SweepInput<T>& in) noexcept {
-    const TileMapView<T>& map = in.map;
-    const T x = in.box.pos.x, y = in.box.pos.y, w = in.box.size.x, h = in.box.size.y;
-    const T ox = map.origin.x, oy = map.origin.y, tx = map.tileSize.x, ty = map.tileSize.y;
-    const T finite =
-        ((x - x) + (y - y)) + ((w - w) + (h - h)) + ((ox - ox) + (oy - oy)) + ((tx - tx) + (ty - ty));
-    const std::int64_t cells = static_cast<std::int64_t>(map.columns) * map.rows;
-    return finite == 0 && w > 0 && h > 0 && tx > 0 && ty > 0 && map.columns >= 0 && map.rows >= 0 &&
-           cells <= kMaxCells && (cells == 0 || map.solid != nullptr);
-}
-
 /// The zero-move frame (see the top of this file); false when it must take the ordinary path
 /// (invalid input, or a box edge too close to a grid line). Only for a displacement of zeros.
 template <class T>
 [[nodiscard]] inline bool resolveZeroMove(const SweepInput<T>& in, const ResolveOutput<T>& out,
                                           SweepResult<T>& result) noexcept {
-    if (!isValidInline(in)) return false;
+    if (!isValidInput(in)) return false;
     const TileMapView<T>& map = in.map;
     std::int64_t i0 = 0;
     std::int64_t i1 = 0;

@@ -1,0 +1,370 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+// The contract's frame loop ("One frame through a map", CONTRACT.md), written once for every
+// arithmetic the resolver uses: the exact lattice integers (lattice_frame.h), and the exact
+// doubles or exact pairs of the fast path (fast_frame.h), which may answer "undecided", so that
+// the frame falls back to the lattice.
+//
+// Structure. The contract's loop runs at most two steps, and the second is always a one-axis
+// move: after the first contact at time s, the motion on the contact axes is zeroed; if both
+// were contact axes nothing moves, otherwise only the free axis moves on, from where it was at
+// s, while the contact axis stays exactly touching. In the frame's own time the free axis is
+// still moving at its original speed, so a tile blocks the second step iff it overlaps the
+// (static) contact-axis span and its entry time on the free axis lies in [s, 1); its frame time
+// is that entry time. Solving step 2 in frame time avoids the rational position at s altogether.
+//
+// Broadphase. Candidate tiles come from the grid, never from a scan of the map. A short move
+// lists the solid cells of its swept bounds once (at most kNearArea cells), and those serve the
+// start overlaps and both steps. Otherwise the walk goes along the primary axis (the one whose
+// motion crosses more cells), cell by cell in the order the box enters them; for each primary
+// cell it takes the secondary cells the box's span covers while it is inside that primary cell,
+// and it stops at the first primary cell entered after the earliest time of impact found so
+// far, or at time 1. Cells entered at exactly that time are still visited: they may be hit at
+// the same time, and the contract takes all of them at once. The cost is the number of cells the
+// path touches, independent of the map's size. Cell ranges may be supersets (the fast path
+// estimates them with a certified margin): every cell in them gets the exact tile test.
+//
+// What an arithmetic `Arith` provides (LatticeFrame, FastFrame):
+//   types   Scalar (float or double), Coord (a box coordinate or a distance), Edge (a tile
+//           edge), Time (a ratio {Coord num, Speed den}), Axis (the motion of one axis: dir,
+//           speed, entryDistance, exitDistance, overlapsAtStart; axis_sweep.h), Walk (what the
+//           walk's secondary range needs, computed once a frame)
+//   grid    axis(a), edge(a, k), cells(a), cellOf(a, c) (exact, clamped to [-1, cells]),
+//           startCells(a) and sweptCells(a) (supersets), map()
+//   times   compareTimes(a, b), certainlyLater(a, b) (a > b for certain; false may be a tie)
+//   walk    primaryAxis(), prepareWalk(p), secondaryCells(walk, entry, exit)
+//   box     nearEdge(a), farEdge(a), endOf(a), touchLow(a, e), touchHigh(a, e)
+//   tile    testTile(i, j) (axis_sweep.h's test on its numbers)
+//   result  roundTime(time, out), and for roundFinal (final_rounding.h): false = undecided.
+
+#include "axis_sweep.h"
+#include "cell_range.h"
+#include "fault_injection.h"
+#include "final_rounding.h"
+
+#include "tilesweep/resolve.h"
+
+#include <algorithm>
+#include <cstdint>
+
+namespace tilesweep::detail {
+
+template <class Arith>
+class FrameLoop {
+public:
+    using T = typename Arith::Scalar;
+    using Coord = typename Arith::Coord;
+    using Edge = typename Arith::Edge;
+    using Time = typename Arith::Time;
+
+    explicit FrameLoop(Arith& arith) noexcept : m_(arith) {}
+
+    /// Solves the frame into `result`; false when the arithmetic could not decide something
+    /// (the caller then solves the frame on the lattice).
+    bool run(const ResolveOutput<T>& out, SweepResult<T>& result) noexcept {
+        // A short move: the solid cells of the swept bounds, listed once, serve the start
+        // overlaps and both steps (collectNear); otherwise the walk.
+        const bool nearOnly = collectNear(std::max<std::int32_t>(out.contactCapacity, 0));
+        result.startOverlapCount = nearOnly ? startOverlapsOfNear(out.startOverlaps, out.startOverlapCapacity)
+                                            : listStartOverlaps(out.startOverlaps, out.startOverlapCapacity);
+        result.position = {m_.start(0), m_.start(1)};
+        if (m_.axis(0).dir == 0 && m_.axis(1).dir == 0) {
+            result.status = Status::Moved;
+            return true;
+        }
+        Coord finalPos[2] = {m_.endOf(0), m_.endOf(1)};
+        Hits first{out.contacts, std::max<std::int32_t>(out.contactCapacity, 0)};
+        if (m_.axis(0).dir != 0 && m_.axis(1).dir != 0) {
+            if (nearOnly) {
+                for (std::int32_t n = 0; n < nearCount_; ++n) testAndRecord(near_[n].i, near_[n].j, first);
+            } else {
+                sweepBothAxes(first);
+            }
+        } else {
+            const int a = m_.axis(0).dir != 0 ? 0 : 1;
+            sweepOneAxis(a, m_.nearEdge(1 - a), m_.farEdge(1 - a), m_.zeroTime(), nearOnly, first);
+        }
+        std::int32_t total = 0;
+        if (first.any) {
+            if (!finishStep(first)) return false;
+            total = first.count;
+            result.blockedX = first.axisHit[0];
+            result.blockedY = first.axisHit[1];
+            for (int a = 0; a < 2; ++a)
+                if (first.axisHit[a]) finalPos[a] = m_.touchLow(a, first.touch[a]);
+            const int free = first.axisHit[0] ? 1 : 0;
+            if (first.axisHit[0] != first.axisHit[1] && m_.axis(free).dir != 0) {
+                const int held = 1 - free;
+                const std::int32_t used = std::min(first.count, first.capacity);
+                Hits second{out.contacts + used, first.capacity - used};
+                sweepOneAxis(free, m_.touchLow(held, first.touch[held]), m_.touchHigh(held, first.touch[held]),
+                             first.time, nearOnly, second);
+                if (second.any) {
+                    if (!finishStep(second)) return false;
+                    total += second.count;
+                    finalPos[free] = m_.touchLow(free, second.touch[free]);
+                    (free == 0 ? result.blockedX : result.blockedY) = true;  // step 2 moves on `free` alone
+                }
+            }
+        }
+        result.contactCount = total;
+        result.status = total > 0 ? Status::Blocked : Status::Moved;
+        return roundFinal(m_, finalPos[0], 0, result.position.x) &&
+               roundFinal(m_, finalPos[1], 1, result.position.y);
+    }
+
+private:
+    /// The hits of one step: all tiles at the earliest time of impact found so far. `touch` is
+    /// the tile edge the box touches on each contact axis.
+    struct Hits {
+        Contact<T>* store;       ///< caller's buffer, from the first slot this step may use
+        std::int32_t capacity;   ///< slots available from `store`
+        std::int32_t count = 0;  ///< hits at `time`, stored or not
+        bool any = false;
+        Time time{};
+        bool axisHit[2] = {false, false};
+        Edge touch[2]{};
+    };
+
+    /// Records a hit at `t`; a hit earlier than the current ones replaces them all. The frame
+    /// time is filled in when the step ends.
+    void add(Hits& hits, Cell cell, int a, const Time& t, const Edge& touchEdge) noexcept {
+        if (hits.any) {
+            const int order = m_.compareTimes(t, hits.time);
+            if (order > 0) return;
+            if (order < 0) {
+                hits.count = 0;
+                hits.axisHit[0] = hits.axisHit[1] = false;
+            }
+        }
+        hits.any = true;
+        hits.time = t;
+        hits.axisHit[a] = true;
+        hits.touch[a] = touchEdge;
+        if (hits.count < hits.capacity) hits.store[hits.count] = {cell, normalOn(a), T(0)};
+        ++hits.count;
+    }
+
+    /// Sorts a step's stored hits by row, then column, and writes its frame time (the same for
+    /// every hit of the step); false when the time's rounding is undecided.
+    bool finishStep(Hits& hits) noexcept {
+        const std::int32_t stored = std::min(hits.count, hits.capacity);
+        T time = 0;
+        if (!m_.roundTime(hits.time, time)) return false;
+        for (std::int32_t k = 0; k < stored; ++k) hits.store[k].time = time;
+        if (stored > 1)
+            std::sort(hits.store, hits.store + stored, [](const Contact<T>& a, const Contact<T>& b) {
+                return a.tile.j != b.tile.j ? a.tile.j < b.tile.j : a.tile.i < b.tile.i;
+            });
+        return true;
+    }
+
+    /// The normal of a hit on `a`: against the motion, (-sign(r_x), 0) or (0, -sign(r_y)).
+    Normal normalOn(int a) const noexcept {
+        const auto against = static_cast<std::int8_t>(-m_.axis(a).dir);
+        return a == 0 ? Normal{against, 0} : Normal{0, against};
+    }
+
+    /// The tile edge the box touches when it hits cell k on `a`.
+    Edge touchEdge(int a, std::int64_t k) const noexcept {
+        return m_.axis(a).dir > 0 ? m_.edge(a, k) : m_.edge(a, k + 1);
+    }
+
+    /// Whether the box's span on `a` at t = 0 overlaps (open) cell k's.
+    bool overlapsCellAtStart(int a, std::int64_t k) const noexcept {
+        return m_.axis(a).overlapsAtStart(m_.edge(a, k), m_.edge(a, k + 1));
+    }
+
+    /// Solid cells the box overlaps (open) at the start, by row then column: a solid byte in the
+    /// candidate range is the only thing that costs an exact test.
+    std::int32_t listStartOverlaps(Cell* store, std::int32_t capacity) const noexcept {
+        const CellRange cx = m_.startCells(0);
+        const CellRange cy = m_.startCells(1);
+        const TileMapView<T>& map = m_.map();
+        std::int32_t count = 0;
+        for (std::int64_t j = cy.first; j <= cy.last; ++j) {
+            const std::uint8_t* row = map.solid + j * map.columns;
+            bool rowChecked = false;
+            for (std::int64_t i = cx.first; i <= cx.last; ++i) {
+                if (row[i] == 0) continue;  // the byte first
+                if (!rowChecked) {
+                    if (!overlapsCellAtStart(1, j)) break;
+                    rowChecked = true;
+                }
+                if (!overlapsCellAtStart(0, i)) continue;
+                if (count < capacity) store[count] = {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)};
+                ++count;
+            }
+        }
+        return count;
+    }
+
+    /// First cell along `a` (in the direction of motion) whose far side the trailing edge has
+    /// not passed at t = 0, clamped into the map; -1 or cells when no map cell qualifies.
+    std::int64_t firstCellAhead(int a) const noexcept {
+        if (m_.axis(a).dir > 0) return std::max<std::int64_t>(m_.cellOf(a, m_.nearEdge(a)), 0);
+        // Largest k with edge(k) < the far edge.
+        std::int64_t k = m_.cellOf(a, m_.farEdge(a));
+        if (k >= 0 && k < m_.cells(a) && compare(m_.farEdge(a), m_.edge(a, k)) == 0) --k;
+        return std::min<std::int64_t>(k, m_.cells(a) - 1);
+    }
+
+    /// Step 1 when both axes move: walk the primary axis in time order.
+    void sweepBothAxes(Hits& hits) noexcept {
+        const int p = m_.primaryAxis();
+        const auto& mp = m_.axis(p);
+        const auto walk = m_.prepareWalk(p);
+        for (std::int64_t k = firstCellAhead(p); k >= 0 && k < m_.cells(p); k += mp.dir) {
+            const Edge lo = m_.edge(p, k);
+            const Edge hi = m_.edge(p, k + 1);
+            const Coord entry = mp.entryDistance(lo, hi);
+            if (compare(entry, mp.speed) >= 0) break;  // entered at t >= 1
+            // Entered after the hits found so far; on a near tie walking on is harmless.
+            if (hits.any && m_.certainlyLater(Time{entry, mp.speed}, hits.time)) break;
+            const CellRange range = secondaryCandidates(m_.secondaryCells(walk, entry, mp.exitDistance(lo, hi)));
+            for (std::int64_t j = range.first; j <= range.last; ++j) {
+                const std::int64_t ci = p == 0 ? k : j;
+                const std::int64_t cj = p == 0 ? j : k;
+                if (!m_.map().isSolid(ci, cj)) continue;
+                testAndRecord(ci, cj, hits);
+            }
+        }
+    }
+
+    /// The secondary cells the broadphase tests: those of the walk's secondary range, or the rows
+    /// of the swept bounds.
+    static CellRange secondaryCandidates(CellRange range) noexcept {
+#if defined(TILESWEEP_FAULT_BROADPHASE_SHORT)
+        --range.last;  // deliberate fault: the broadphase's secondary range one cell short
+#endif
+        return range;
+    }
+
+    void testAndRecord(std::int64_t i, std::int64_t j, Hits& hits) noexcept {
+        const auto test = m_.testTile(i, j);
+        Axis axis = Axis::Y;
+        switch (test.verdict) {
+            case TileVerdict::Misses:
+            case TileVerdict::StartsOverlapping:
+                return;
+            case TileVerdict::BlocksOnX:
+                axis = Axis::X;
+                break;
+            case TileVerdict::BlocksOnY:
+                axis = Axis::Y;
+                break;
+            case TileVerdict::Tie: {
+                // The cell across the face approached on each axis.
+                const bool xExposed = !m_.map().isSolid(i - m_.axis(0).dir, j);
+                const bool yExposed = !m_.map().isSolid(i, j - m_.axis(1).dir);
+                axis = settleTie(xExposed, yExposed);
+                break;
+            }
+        }
+        const int a = axis == Axis::X ? 0 : 1;
+        add(hits, {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)}, a, test.time,
+            touchEdge(a, a == 0 ? i : j));
+    }
+
+    /// Whether the held span [heldLow, heldHigh] on axis `o` overlaps (open) cell k's span;
+    /// touching is not overlapping.
+    bool heldOverlaps(int o, const Coord& heldLow, const Coord& heldHigh, std::int64_t k) const noexcept {
+        return overlapsOpen(compare(heldLow, m_.edge(o, k + 1)), compare(heldHigh, m_.edge(o, k)));
+    }
+
+    /// A move along `a` alone while the other axis stays at [heldLow, heldHigh]: step 1 with a
+    /// static axis (from = 0), or step 2 (from = s). Only tiles entered in [from, 1) block; they
+    /// are found in the first cell along `a` that has any (entry times grow strictly along the
+    /// motion), and all share its time.
+    void sweepOneAxis(int a, const Coord& heldLow, const Coord& heldHigh, const Time& from, bool nearOnly,
+                      Hits& hits) noexcept {
+        const int o = 1 - a;
+        const auto& ma = m_.axis(a);
+        if (nearOnly) {
+            for (std::int32_t n = 0; n < nearCount_; ++n) {
+                const std::int64_t k = a == 0 ? near_[n].i : near_[n].j;
+                if (!heldOverlaps(o, heldLow, heldHigh, a == 0 ? near_[n].j : near_[n].i)) continue;
+                const Coord entry = ma.entryDistance(m_.edge(a, k), m_.edge(a, k + 1));
+                if (compare(entry, ma.speed) >= 0) continue;  // entered at t >= 1
+                const Time at{entry, ma.speed};
+                if (m_.compareTimes(at, from) < 0) continue;  // overlapping already at `from`
+                add(hits, near_[n], a, at, touchEdge(a, k));
+            }
+            return;
+        }
+        const std::int64_t j0 = std::max<std::int64_t>(m_.cellOf(o, heldLow), 0);
+        const std::int64_t j1 = std::min<std::int64_t>(m_.cellOf(o, heldHigh), m_.cells(o) - 1);
+        if (j0 > j1) return;
+        for (std::int64_t k = firstCellAhead(a); k >= 0 && k < m_.cells(a); k += ma.dir) {
+            const Coord entry = ma.entryDistance(m_.edge(a, k), m_.edge(a, k + 1));
+            if (compare(entry, ma.speed) >= 0) return;  // entered at t >= 1
+            const Time at{entry, ma.speed};
+            if (m_.compareTimes(at, from) < 0) continue;  // overlapping already at `from`
+            for (std::int64_t j = j0; j <= j1; ++j) {
+                const std::int64_t ci = a == 0 ? k : j;
+                const std::int64_t cj = a == 0 ? j : k;
+                if (!m_.map().isSolid(ci, cj)) continue;
+                if (!heldOverlaps(o, heldLow, heldHigh, j)) continue;
+                add(hits, {static_cast<std::int32_t>(ci), static_cast<std::int32_t>(cj)}, a, at, touchEdge(a, k));
+            }
+            if (hits.any) return;
+        }
+    }
+
+    /// The most cells of swept bounds that collectNear scans, and the most solid ones it keeps.
+    static constexpr std::int64_t kNearArea = 12;
+
+    /// Lists the solid cells of the frame's swept bounds, row by row, when those bounds hold at
+    /// most kNearArea cells and at most `contactCapacity` of them are solid; false otherwise
+    /// (the walk then runs). Every tile that can block either step, or that the box overlaps at
+    /// the start, lies in them: on each axis the box covers [min(low, low + disp), max(high,
+    /// high + disp)] over the frame, and step 2 stays inside that (its held axis is at a touch
+    /// position between the start and the end, its free axis on the rest of its own motion).
+    /// The arithmetic's sweptCells is a superset of that; extra cells are tested exactly and
+    /// rejected. With every tile tested, the earliest hits are the same set as the walk's, and
+    /// none is cut short (solid cells <= capacity), so the stored contacts match too.
+    bool collectNear(std::int32_t contactCapacity) noexcept {
+        CellRange range[2] = {m_.sweptCells(0), m_.sweptCells(1)};
+        for (int a = 0; a < 2; ++a) {
+            if (range[a].first > range[a].last) {
+                nearCount_ = 0;  // the swept bounds miss the map: nothing to find
+                return true;
+            }
+        }
+        if ((range[0].last - range[0].first + 1) * (range[1].last - range[1].first + 1) > kNearArea)
+            return false;
+        range[1] = secondaryCandidates(range[1]);
+        const TileMapView<T>& map = m_.map();
+        std::int32_t count = 0;
+        for (std::int64_t j = range[1].first; j <= range[1].last; ++j) {
+            const std::uint8_t* row = map.solid + j * map.columns;
+            for (std::int64_t i = range[0].first; i <= range[0].last; ++i) {
+                if (row[i] == 0) continue;
+                if (count >= contactCapacity) return false;
+                near_[count++] = {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)};
+            }
+        }
+        nearCount_ = count;
+        return true;
+    }
+
+    /// The start overlaps among the listed cells (collectNear), which hold all of them, in the
+    /// same row-then-column order.
+    std::int32_t startOverlapsOfNear(Cell* store, std::int32_t capacity) const noexcept {
+        std::int32_t count = 0;
+        for (std::int32_t n = 0; n < nearCount_; ++n) {
+            const Cell c = near_[n];
+            if (!overlapsCellAtStart(1, c.j) || !overlapsCellAtStart(0, c.i)) continue;
+            if (count < capacity) store[count] = c;
+            ++count;
+        }
+        return count;
+    }
+
+    Arith& m_;
+    std::int32_t nearCount_ = 0;
+    Cell near_[kNearArea];
+};
+
+}  // namespace tilesweep::detail

@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+// The numbers that carry the fast path's proofs, in one place, each with its derivation.
+//
+// None of them is a tolerance on a decision: every decision of the resolver is exact. They are
+// error bounds on estimates (a cell index, a product, a grid coordinate) that only choose which
+// exact comparisons to make, or range limits inside which the fast path's arithmetic is exact.
+// An estimate's margin that is too large costs a few extra exact tests; one that is too small
+// would skip a tile, which is why the fault FILTER_BOUND_HALVED halves two of them and the suite
+// must catch it.
+//
+// Notation: u = 2^-53, the unit roundoff of double (rounding to nearest errs by at most u times
+// the result's magnitude, away from underflow and overflow). A bound "in ulps" is a multiple of u.
+
+namespace tilesweep::detail {
+
+/// u = 2^-53: the relative error of one double rounding to nearest.
+inline constexpr double kUnitRoundoff = 0x1p-53;
+
+// ---- cell estimates --------------------------------------------------------------------------
+
+/// Margin of a cell-range estimate fl(fl(v - origin) * fl(1 / tile)), in units of u times
+/// M / tile, where M is the sum of the magnitudes that formed v, plus |origin| (estimateCells).
+/// v is one input, or a sum of two or three inputs rounded to nearest (the far edge low + size
+/// of a double frame, the swept end low + disp, high + disp): within 2u M of the exact value.
+/// The difference with the origin rounds once more (u M), the rounded reciprocal and the
+/// product twice (relative u each, on a value below M / tile): 5.03u M / tile in all. The margin
+/// is computed as fl(fl(8u * M) * invTile), at least 8u(1 - 2u) M / tile, and subtracting or
+/// adding it rounds once more (u M / tile): 6.04u < 8u(1 - 2u). So the widened range holds every
+/// cell the exact coordinate lies in; a cell too many is tested exactly and rejected.
+inline constexpr double kCellEstimateErrorUlps = 8;
+
+/// Margin of the walk's secondary range, in units of u times A / tile, A = |low| + |high| +
+/// |disp| + |origin| of the secondary axis. The estimate v = (low + (disp / speed) * t - origin)
+/// * fl(1 / tile) takes six rounded operations. With t / speed in [0, 1] and every intermediate
+/// below A(1 + 3u), their errors are at most 2.01u|disp| (the slope and its product with t),
+/// + 1.01uA (sum), + 1.01uA (difference), all scaled by 1/tile (1 + 2.01u), then + 2.01uA/tile
+/// (the rounded reciprocal and the product): under 6.05uA/tile in all. Adding or subtracting the
+/// margin rounds once more, by at most 1.01uA/tile, and the margin itself is computed 5u low at
+/// worst: 10 covers the 7.07 needed (and half of it does not). Double frames estimate the
+/// distances t as well (the high part of an exact pair, within u|t|): 1.01u|disp| more; and
+/// `high` is the far edge rounded to nearest: 1.01u|high| more, 9.09 in all, which 10, computed
+/// at most 5u low, still covers.
+inline constexpr double kSecondaryRangeErrorUlps = 10;
+
+/// Bands of the zero move's exact cell decision (zero_move.h), in units of u times the
+/// quotients' magnitude: the rounded quotients ql, qh are within 2.02u|ql| and 1.01u|ql| +
+/// 2.01u|qh| of the exact ones, and the fraction r = fl(q - floor(q)) adds 2^-54. Bands of
+/// 8u|ql| (+ 8u|qh|) + 2^-52, computed with two roundings, exceed those sums.
+inline constexpr double kZeroMoveBandUlps = kCellEstimateErrorUlps;
+/// The absolute part of the zero move's bands: 2^-52 covers the 2^-54 of r's own rounding with
+/// room for the roundings of the band.
+inline constexpr double kZeroMoveBandFloor = 0x1p-52;
+/// Quotients (cell coordinates) the zero move estimates: below 2^52 in magnitude, so that
+/// floor() of a double is exact and fits an int64; larger ones take the ordinary path.
+inline constexpr double kZeroMoveReach = 0x1p52;
+/// Below this magnitude a quotient may have underflowed and lost its relative error bound; the
+/// zero move then takes the ordinary path (and TwoProduct stays exact above it).
+inline constexpr double kZeroMoveUnderflowGuard = 0x1p-900;
+
+/// The free move (free_move.h) widens its cell range by one whole cell on each side, which
+/// covers an estimate error below a quarter cell. The error is under 2^-50 M / tile (M the sum
+/// of the input magnitudes: at most two roundings of the ends, the difference, the reciprocal
+/// and the product), so M * 2^-48 < tile / 4 keeps it there (2^-50 M / tile < 2^-50 * 2^46 =
+/// 2^-4).
+inline constexpr double kFreeMoveMagnitudeScale = 0x1p-48;
+
+// ---- products and times ----------------------------------------------------------------------
+
+/// The semi-static error bound of compareProducts on exact pairs (exact_double.h), relative to
+/// |fl(a.hi*s)| + |fl(b.hi*t)|: (3 + 16u)u. The exact difference a*s - b*t lies within
+/// (3u + 2u^2)(|p| + |q|) of D = fl(p - q) (three roundings, and the low parts at most u of the
+/// high parts); the bound computed as fl(c * fl(|p| + |q|)) is at least c(1 - u)^2(|p| + |q|),
+/// which for c = (3 + 16u)u exceeds it. Full derivation above compareProducts.
+inline constexpr double kPairProductErrorBound = (3.0 + 16.0 * kUnitRoundoff) * kUnitRoundoff;
+
+/// The filter of roundTimeToDouble (time_rounding.h), in units of u times |d| + |e| + |lo|: the
+/// remainder R~ = fl(fl(d - e) + lo) is within (2u + u^2)(|d| + |e| + |lo|) of the exact one;
+/// the bound computed as fl(3u fl(fl(|d| + |e|) + |lo|)) is at least 3u(1 - u)^3 of that sum,
+/// which exceeds 2u + u^2.
+inline constexpr double kTimeRemainderErrorUlps = 3;
+
+// ---- the grid-line test of a double frame's final position -----------------------------------
+
+/// Reach of the filtered grid-line test of roundFinal on exact pairs (time_rounding.h), in
+/// units of u times A / tile, A = |hi| + size + |origin|. The grid coordinate of the far edge,
+/// z = fl(fl(fl(hi + size) - origin) * fl(1 / tile)), is within 4.1uA / tile of (hi + size -
+/// origin) / tile (two rounded sums, the reciprocal and the product), and the pair's low part lo
+/// (left out) moves the exact value by |lo| / tile more. The interval to search, [exact,
+/// rounded) + size, spans (|rounded - hi| + |lo|) / tile from there. So the reach must be at
+/// least 4.1uA / tile + (|rounded - hi| + 2|lo|) / tile, plus the roundings of the reach itself
+/// (six operations, relative 6.1u of it) and of z -+ reach (u|z| + u reach <= 1.01uA / tile +
+/// u reach). The code takes 16u A / tile + 2(|rounded - hi| + |lo|) / tile: 16 against the
+/// 5.2 needed, and the factor 2 on the widths against the 1 (|rounded - hi|) and 2 (|lo|)
+/// needed, covering the reach's own roundings. A larger reach only sends more frames to the
+/// lattice (the test then says "may hold a line"); it never changes a result.
+inline constexpr double kGridLineReachUlps = 16;
+/// The width terms of the same reach: twice (|rounded - hi| + |lo|) / tile (see above).
+inline constexpr double kGridLineWidthFactor = 2;
+/// The same test only runs for |z| < 2^40. Since |origin| < 2^47 tiles (admitDoubleFrame), it
+/// keeps A / tile below 2^48, so the reach stays below 2 cells and z -+ reach inside floorToInt's
+/// |v| < 2^62, and the doubles near z still resolve 2^-12 of a cell. Any limit up to 2^52 would
+/// be as sound; a larger z (or a NaN) goes to the lattice.
+inline constexpr double kGridLineReachLimit = 0x1p40;
+
+// ---- range admission -------------------------------------------------------------------------
+
+/// The most bits the fast path's exact doubles may need: a double's 53.
+inline constexpr int kFastSpanBits = 53;
+/// Float frames: every coordinate below 2^120, so that sums of three and products of the fast
+/// path (squares of coordinates at most) stay far from double overflow, and a far edge plus a
+/// tile stays below float's largest value.
+inline constexpr int kFloatFrameTopExponent = 120;
+/// Double frames: every nonzero input in [2^-250, 2^251), so that no product, TwoProduct error
+/// term or filter bound (products of up to four inputs: below 2^1004, above 2^-1000 before the
+/// error terms' 2^-106) comes near overflow or underflow.
+inline constexpr int kDoubleFrameExponentLimit = 250;
+/// Double frames: |origin| < 2^47 tiles, so that a cell estimate from a rounded quotient is off
+/// by less than 0.2 cells where it matters (|quotient| < 2^32: u(|c| + |origin|) / tile < 2^-5).
+inline constexpr int kDoubleFrameOriginTileBits = 46;
+/// Double frames: the far box edge's distances to tile edges come out as exact pairs when the
+/// largest coordinate is at most 2^104 times the lowest set bit of the box and grid inputs
+/// (admitDoubleFrame derives it: the three-term sum's low terms fit 53 bits).
+inline constexpr int kDoubleFramePairSpanBits = 104;
+
+}  // namespace tilesweep::detail
