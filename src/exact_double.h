@@ -23,6 +23,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
+#include <type_traits>
 
 namespace tilesweep::detail {
 
@@ -167,15 +169,25 @@ template <class T>
 #endif
 }
 
-/// The next double above (up = true) or below a finite nonzero double, by its bits.
-[[nodiscard]] inline double stepDouble(double v, bool up) noexcept {
-    std::uint64_t bits = 0;
+/// The next float or double above (up = true) or below a finite one, by its bits (the least
+/// subnormal, with its sign, from a zero); never crosses the largest finite value (the callers'
+/// ranges keep well inside it).
+template <class T>
+[[nodiscard]] inline T stepScalar(T v, bool up) noexcept {
+    using Bits = std::conditional_t<sizeof(T) == sizeof(std::uint32_t), std::uint32_t, std::uint64_t>;
+    static_assert(sizeof(Bits) == sizeof(T), "float or double");
+    if (v == 0) return up ? std::numeric_limits<T>::denorm_min() : -std::numeric_limits<T>::denorm_min();
+    Bits bits = 0;
     std::memcpy(&bits, &v, sizeof bits);
     const bool away = (v > 0) == up;  // magnitude grows
     bits = away ? bits + 1 : bits - 1;
     std::memcpy(&v, &bits, sizeof bits);
     return v;
 }
+/// stepScalar on a double.
+[[nodiscard]] inline double stepDouble(double v, bool up) noexcept { return stepScalar(v, up); }
+/// stepScalar on a float.
+[[nodiscard]] inline float stepFloat(float f, bool up) noexcept { return stepScalar(f, up); }
 
 /// The spacing of doubles just above |v|, for any finite v: 2^(exponent(v) - 52) for a normal v
 /// whose ulp is normal; the ulp's subnormal bit pattern below that; 2^-1074 for 0 and the
@@ -193,18 +205,6 @@ template <class T>
     double u = 0;
     std::memcpy(&u, &bits, sizeof bits);
     return u;
-}
-
-/// The next float above (up = true) or below a finite float, by its bits; never crosses the
-/// largest finite value (the caller's range keeps well inside it).
-[[nodiscard]] inline float stepFloat(float f, bool up) noexcept {
-    if (f == 0) return up ? 1e-45f : -1e-45f;  // the least subnormal, either sign
-    std::uint32_t bits = 0;
-    std::memcpy(&bits, &f, sizeof bits);
-    const bool away = (f > 0) == up;  // magnitude grows
-    bits = away ? bits + 1 : bits - 1;
-    std::memcpy(&f, &bits, sizeof bits);
-    return f;
 }
 
 /// The exact double v rounded to float toward minus infinity (down) or plus infinity. The

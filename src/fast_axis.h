@@ -16,6 +16,9 @@
 
 namespace tilesweep::detail {
 
+// The members below run in the solver's innermost loops, from many call sites: always inlined
+// (gnu::always_inline; other compilers ignore it), as they were when each solver had its own.
+
 /// One axis of a fast frame: the box's motion and the grid, as exact doubles. The far box edge
 /// low + size is held as high + highLow: on float frames it is a double (highLow = 0); on double
 /// frames it is the TwoSum pair of low and size, and the distances from it to a tile edge are
@@ -38,7 +41,7 @@ struct FastAxis {
     double size;         ///< the box size: low + size is the far edge, exactly
     double highLow = 0;  ///< low + size - high, exactly (|highLow| <= ulp(high) / 2)
 
-    [[nodiscard]] double edge(std::int64_t k) const noexcept {
+    [[nodiscard, gnu::always_inline]] double edge(std::int64_t k) const noexcept {
         return origin + static_cast<double>(k) * tile;
     }
 
@@ -49,7 +52,7 @@ struct FastAxis {
     /// u|high|, and |a|, |high| < 2^(L+105)). A last TwoSum of a and b + highLow returns a
     /// normalized pair (hi = fl(value)), exact for any doubles: the form compare,
     /// compareProducts and roundTimeToDouble ask for.
-    [[nodiscard]] Coord farEdgeMinus(double e) const noexcept {
+    [[nodiscard, gnu::always_inline]] Coord farEdgeMinus(double e) const noexcept {
         if constexpr (std::is_same<Coord, ExactPair>::value) {
             const ExactPair s = twoSum(high, -e);
             if (highLow == 0) return s;
@@ -60,7 +63,7 @@ struct FastAxis {
     }
     /// The tile edge e minus the far edge, exactly: the negation of farEdgeMinus (negation is
     /// exact and keeps a pair normalized).
-    [[nodiscard]] Coord minusFarEdge(double e) const noexcept {
+    [[nodiscard, gnu::always_inline]] Coord minusFarEdge(double e) const noexcept {
         if constexpr (std::is_same<Coord, ExactPair>::value) {
             const ExactPair s = farEdgeMinus(e);
             return {-s.hi, -s.lo};
@@ -69,31 +72,32 @@ struct FastAxis {
         }
     }
     /// The far edge at t = 0 as a coordinate (exact).
-    [[nodiscard]] Coord farEdge() const noexcept {
+    [[nodiscard, gnu::always_inline]] Coord farEdge() const noexcept {
         if constexpr (std::is_same<Coord, ExactPair>::value) {
             return {high, highLow};
         } else {
             return high;
         }
     }
-    [[nodiscard]] Coord entryDistance(double lo, double hi) const noexcept {
+    [[nodiscard, gnu::always_inline]] Coord entryDistance(double lo, double hi) const noexcept {
         return dir > 0 ? minusFarEdge(lo) : differenceOf<Coord>(low, hi);
     }
-    [[nodiscard]] Coord exitDistance(double lo, double hi) const noexcept {
+    [[nodiscard, gnu::always_inline]] Coord exitDistance(double lo, double hi) const noexcept {
         return dir > 0 ? differenceOf<Coord>(hi, low) : farEdgeMinus(lo);
     }
     /// Open overlap of the box's projection at t = 0 with [lo, hi] (overlapsOpen, axis_sweep.h).
-    [[nodiscard]] bool overlapsAtStart(double lo, double hi) const noexcept {
+    [[nodiscard, gnu::always_inline]] bool overlapsAtStart(double lo, double hi) const noexcept {
         return overlapsOpen(compare(low, hi), compare(farEdge(), lo));
     }
 
-    /// clamp(floor((c - origin) / tile), -1, cells), exactly. The estimate is off by less than
-    /// one cell where the clamp does not decide: for an exact double c, (c - origin) * invTile
-    /// is within 2.01u of the quotient, relatively (float frames: the difference is exact); for
-    /// a pair, the difference of its high part and the origin adds u(|c| + |origin|) / tile,
-    /// under 0.2 cells where |quotient| < 2^32 since |origin| < 2^47 tile (admitDoubleFrame).
-    /// One exact comparison with a tile edge, either way, settles it.
-    [[nodiscard]] std::int64_t cellOf(const Coord& c) const noexcept {
+    /// clamp(floor((c - origin) / tile), -1, cells), exactly, for an exact double or a Coord. The estimate is
+    /// off by less than one cell where the clamp does not decide: for an exact double c, (c - origin) *
+    /// invTile is within 2.01u of the quotient, relatively (float frames: the difference is exact); for a
+    /// pair, the difference of its high part and the origin adds u(|c| + |origin|) / tile, under 0.2 cells
+    /// where |quotient| < 2^32 since |origin| < 2^47 tile (admitDoubleFrame). One exact comparison with a
+    /// tile edge, either way, settles it.
+    template <class Value>
+    [[nodiscard, gnu::always_inline]] std::int64_t cellOf(const Value& c) const noexcept {
         std::int64_t k = clampCell((approximate(c) - origin) * invTile, cells);
         if (k > -1 && compare(c, edge(k)) < 0) {
             --k;
@@ -119,6 +123,5 @@ struct FastAxis {
         return origin + k * tile < hi;
     }
 };
-
 
 }  // namespace tilesweep::detail

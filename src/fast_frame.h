@@ -82,7 +82,13 @@ public:
     T start(int a) const noexcept { return start_[a]; }
     double edge(int a, std::int64_t k) const noexcept { return axis_[a].edge(k); }
     std::int64_t cells(int a) const noexcept { return axis_[a].cells; }
-    std::int64_t cellOf(int a, const Coord& c) const noexcept { return axis_[a].cellOf(c); }
+    [[gnu::always_inline]] std::int64_t cellOf(int a, const Coord& c) const noexcept {
+        return axis_[a].cellOf(c);
+    }
+    /// The low edge is an exact double on either kind of frame: its cell without a pair.
+    [[gnu::always_inline]] std::int64_t nearEdgeCell(int a) const noexcept {
+        return axis_[a].cellOf(axis_[a].low);
+    }
 
     /// The cells the box's span covers at the start, estimated (kCellEstimateErrorUlps).
     CellRange startCells(int a) const noexcept {
@@ -117,7 +123,7 @@ public:
     }
 
     static Time zeroTime() noexcept { return {coordOf<Coord>(0), 1}; }
-    int compareTimes(const Time& a, const Time& b) noexcept {
+    [[gnu::always_inline]] int compareTimes(const Time& a, const Time& b) noexcept {
         // The same fraction (tiles entered across one face line): equal without arithmetic.
         if (identical(a.num, b.num) && a.den == b.den) return 0;
         return compareProducts(a.num, b.den, b.num, a.den, refined_);

@@ -27,7 +27,8 @@ enum class LineTest { No, Yes, Undecided };
 /// The exact final coordinate `exact` on axis `a`, rounded as the contract asks, into `out`;
 /// false when the arithmetic could not decide the grid-line test.
 template <class Arith, class Coord, class T>
-[[nodiscard]] bool roundFinal(const Arith& m, const Coord& exact, int a, T& out) noexcept {
+[[nodiscard, gnu::always_inline]] inline bool roundFinal(const Arith& m, const Coord& exact, int a,
+                                                         T& out) noexcept {
     const int side = m.compareWithStart(exact, a);
     if (side == 0) {
         out = m.start(a);

@@ -30,7 +30,8 @@
 //           edge), Time (a ratio {Coord num, Speed den}), Axis (the motion of one axis: dir,
 //           speed, entryDistance, exitDistance, overlapsAtStart; axis_sweep.h), Walk (what the
 //           walk's secondary range needs, computed once a frame)
-//   grid    axis(a), edge(a, k), cells(a), cellOf(a, c) (exact, clamped to [-1, cells]),
+//   grid    axis(a), edge(a, k), cells(a), cellOf(a, c) and nearEdgeCell(a) (the cell of a
+//           coordinate, of the box's low edge at the start: exact, clamped to [-1, cells]),
 //           startCells(a) and sweptCells(a) (supersets), map()
 //   times   compareTimes(a, b), certainlyLater(a, b) (a > b for certain; false may be a tie)
 //   walk    primaryAxis(), prepareWalk(p), secondaryCells(walk, entry, exit)
@@ -50,6 +51,9 @@
 
 namespace tilesweep::detail {
 
+// The small steps of the loop (add, firstCellAhead, the overlap and edge helpers) are always
+// inlined (gnu::always_inline; other compilers ignore it), as they were when each arithmetic had
+// its own solver: the fast path is measured against that (bench/).
 template <class Arith>
 class FrameLoop {
 public:
@@ -98,8 +102,8 @@ public:
                 const int held = 1 - free;
                 const std::int32_t used = std::min(first.count, first.capacity);
                 Hits second{out.contacts + used, first.capacity - used};
-                sweepOneAxis(free, m_.touchLow(held, first.touch[held]), m_.touchHigh(held, first.touch[held]),
-                             first.time, nearOnly, second);
+                sweepOneAxis(free, m_.touchLow(held, first.touch[held]),
+                             m_.touchHigh(held, first.touch[held]), first.time, nearOnly, second);
                 if (second.any) {
                     if (!finishStep(second)) return false;
                     total += second.count;
@@ -129,7 +133,8 @@ private:
 
     /// Records a hit at `t`; a hit earlier than the current ones replaces them all. The frame
     /// time is filled in when the step ends.
-    void add(Hits& hits, Cell cell, int a, const Time& t, const Edge& touchEdge) noexcept {
+    [[gnu::always_inline]] void add(Hits& hits, Cell cell, int a, const Time& t,
+                                    const Edge& touchEdge) noexcept {
         if (hits.any) {
             const int order = m_.compareTimes(t, hits.time);
             if (order > 0) return;
@@ -161,18 +166,18 @@ private:
     }
 
     /// The normal of a hit on `a`: against the motion, (-sign(r_x), 0) or (0, -sign(r_y)).
-    Normal normalOn(int a) const noexcept {
+    [[gnu::always_inline]] Normal normalOn(int a) const noexcept {
         const auto against = static_cast<std::int8_t>(-m_.axis(a).dir);
         return a == 0 ? Normal{against, 0} : Normal{0, against};
     }
 
     /// The tile edge the box touches when it hits cell k on `a`.
-    Edge touchEdge(int a, std::int64_t k) const noexcept {
+    [[gnu::always_inline]] Edge touchEdge(int a, std::int64_t k) const noexcept {
         return m_.axis(a).dir > 0 ? m_.edge(a, k) : m_.edge(a, k + 1);
     }
 
     /// Whether the box's span on `a` at t = 0 overlaps (open) cell k's.
-    bool overlapsCellAtStart(int a, std::int64_t k) const noexcept {
+    [[gnu::always_inline]] bool overlapsCellAtStart(int a, std::int64_t k) const noexcept {
         return m_.axis(a).overlapsAtStart(m_.edge(a, k), m_.edge(a, k + 1));
     }
 
@@ -193,7 +198,8 @@ private:
                     rowChecked = true;
                 }
                 if (!overlapsCellAtStart(0, i)) continue;
-                if (count < capacity) store[count] = {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)};
+                if (count < capacity)
+                    store[count] = {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)};
                 ++count;
             }
         }
@@ -202,8 +208,8 @@ private:
 
     /// First cell along `a` (in the direction of motion) whose far side the trailing edge has
     /// not passed at t = 0, clamped into the map; -1 or cells when no map cell qualifies.
-    std::int64_t firstCellAhead(int a) const noexcept {
-        if (m_.axis(a).dir > 0) return std::max<std::int64_t>(m_.cellOf(a, m_.nearEdge(a)), 0);
+    [[gnu::always_inline]] std::int64_t firstCellAhead(int a) const noexcept {
+        if (m_.axis(a).dir > 0) return std::max<std::int64_t>(m_.nearEdgeCell(a), 0);
         // Largest k with edge(k) < the far edge.
         std::int64_t k = m_.cellOf(a, m_.farEdge(a));
         if (k >= 0 && k < m_.cells(a) && compare(m_.farEdge(a), m_.edge(a, k)) == 0) --k;
@@ -222,7 +228,8 @@ private:
             if (compare(entry, mp.speed) >= 0) break;  // entered at t >= 1
             // Entered after the hits found so far; on a near tie walking on is harmless.
             if (hits.any && m_.certainlyLater(Time{entry, mp.speed}, hits.time)) break;
-            const CellRange range = secondaryCandidates(m_.secondaryCells(walk, entry, mp.exitDistance(lo, hi)));
+            const CellRange range =
+                secondaryCandidates(m_.secondaryCells(walk, entry, mp.exitDistance(lo, hi)));
             for (std::int64_t j = range.first; j <= range.last; ++j) {
                 const std::int64_t ci = p == 0 ? k : j;
                 const std::int64_t cj = p == 0 ? j : k;
@@ -269,7 +276,8 @@ private:
 
     /// Whether the held span [heldLow, heldHigh] on axis `o` overlaps (open) cell k's span;
     /// touching is not overlapping.
-    bool heldOverlaps(int o, const Coord& heldLow, const Coord& heldHigh, std::int64_t k) const noexcept {
+    [[gnu::always_inline]] bool heldOverlaps(int o, const Coord& heldLow, const Coord& heldHigh,
+                                             std::int64_t k) const noexcept {
         return overlapsOpen(compare(heldLow, m_.edge(o, k + 1)), compare(heldHigh, m_.edge(o, k)));
     }
 
@@ -306,7 +314,8 @@ private:
                 const std::int64_t cj = a == 0 ? j : k;
                 if (!m_.map().isSolid(ci, cj)) continue;
                 if (!heldOverlaps(o, heldLow, heldHigh, j)) continue;
-                add(hits, {static_cast<std::int32_t>(ci), static_cast<std::int32_t>(cj)}, a, at, touchEdge(a, k));
+                add(hits, {static_cast<std::int32_t>(ci), static_cast<std::int32_t>(cj)}, a, at,
+                    touchEdge(a, k));
             }
             if (hits.any) return;
         }

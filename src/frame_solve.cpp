@@ -5,23 +5,33 @@
 #include "frame_loop.h"
 #include "lattice.h"
 #include "lattice_frame.h"
+#include "range_admission.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 namespace tilesweep::detail {
+namespace {
 
+/// Solves an admitted frame (range_admission.h) on the fast path into `result`; false when it
+/// meets a case it hands to the lattice. `refined` is set when some predicate needed its exact
+/// refinement (DecisionPath::Filtered).
 template <class T>
-bool solveFast(const SweepInput<T>& input, const ResolveOutput<T>& output, SweepResult<T>& result,
-               bool& refined) noexcept {
+[[gnu::always_inline]] inline bool solveFast(const SweepInput<T>& input, const ResolveOutput<T>& output,
+                                             SweepResult<T>& result, bool& refined) noexcept {
     FastFrame<T> frame(input);
     const bool solved = FrameLoop<FastFrame<T>>(frame).run(output, result);
     refined = frame.refined();
     return solved;
 }
 
+/// Solves a valid frame exactly: scaled onto its lattice, with integers wide enough for it. Out
+/// of line (gnu::noinline): the fast path, inlined into resolveMovingFrame, pays for none of it.
 template <class T>
-SweepResult<T> solveOnLattice(const SweepInput<T>& in, const ResolveOutput<T>& out) noexcept {
+[[gnu::noinline]] SweepResult<T> solveOnLattice(const SweepInput<T>& in,
+                                                const ResolveOutput<T>& out) noexcept {
     const T values[10] = {in.box.pos.x,      in.box.pos.y,      in.box.size.x,   in.box.size.y,
                           in.displacement.x, in.displacement.y, in.map.origin.x, in.map.origin.y,
                           in.map.tileSize.x, in.map.tileSize.y};
@@ -44,12 +54,46 @@ SweepResult<T> solveOnLattice(const SweepInput<T>& in, const ResolveOutput<T>& o
     });
 }
 
-template bool solveFast<float>(const SweepInput<float>&, const ResolveOutput<float>&, SweepResult<float>&,
-                               bool&) noexcept;
-template bool solveFast<double>(const SweepInput<double>&, const ResolveOutput<double>&, SweepResult<double>&,
-                                bool&) noexcept;
-template SweepResult<float> solveOnLattice<float>(const SweepInput<float>&, const ResolveOutput<float>&) noexcept;
-template SweepResult<double> solveOnLattice<double>(const SweepInput<double>&,
-                                                    const ResolveOutput<double>&) noexcept;
+}  // namespace
+
+template <class T>
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+SweepResult<T>
+resolveMovingFrame(const SweepInput<T>& input, const ResolveOutput<T>& output) noexcept {
+    // The fast path, when the range test admits the frame: float frames on exact doubles,
+    // double frames on exact pairs under a certified filter. The range test implies the frame
+    // is valid, so isValid only runs for the frames it turns away.
+    bool admitted = false;
+    if constexpr (std::is_same<T, float>::value) {
+        admitted = admitFloatFrame(input);
+    } else {
+        admitted = admitDoubleFrame(input);
+    }
+    if (admitted) {
+        SweepResult<T> result;
+        bool refined = false;
+        if (solveFast(input, output, result, refined)) {
+            recordPath(output, refined ? DecisionPath::Filtered : DecisionPath::Fast);
+            return result;
+        }
+    } else if (!isValid(input)) {
+        SweepResult<T> invalid;
+        invalid.status = Status::InvalidInput;
+        invalid.position = input.box.pos;
+        if (!std::isfinite(invalid.position.x) || !std::isfinite(invalid.position.y))
+            invalid.position = {0, 0};
+        recordPath(output, DecisionPath::Exact);
+        return invalid;
+    }
+    recordPath(output, DecisionPath::Exact);
+    return solveOnLattice(input, output);
+}
+
+template SweepResult<float> resolveMovingFrame<float>(const SweepInput<float>&,
+                                                      const ResolveOutput<float>&) noexcept;
+template SweepResult<double> resolveMovingFrame<double>(const SweepInput<double>&,
+                                                        const ResolveOutput<double>&) noexcept;
 
 }  // namespace tilesweep::detail

@@ -1,31 +1,29 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-// The two solvers of a moving frame, both the one frame loop (frame_loop.h) on a different
-// arithmetic; defined in frame_solve.cpp, instantiated there for float and double.
+// A moving frame, solved: the fast path when the range test admits the frame, else (or when the
+// fast path answers "undecided") the exact lattice. Both are the one frame loop (frame_loop.h)
+// on a different arithmetic. Defined in frame_solve.cpp, instantiated there for float and
+// double, so that the fast path inlines into its caller there.
 
 #include "tilesweep/resolve.h"
 
 namespace tilesweep::detail {
 
-/// Solves an admitted frame (range_admission.h) on the fast path into `result`; false when it
-/// meets a case it hands to the lattice. `refined` is set when some predicate needed its exact
-/// refinement (DecisionPath::Filtered).
+/// Records the path that decided the frame when the caller asked for it (frame_stats.h).
 template <class T>
-[[nodiscard]] bool solveFast(const SweepInput<T>& input, const ResolveOutput<T>& output, SweepResult<T>& result,
-                             bool& refined) noexcept;
+inline void recordPath(const ResolveOutput<T>& output, DecisionPath path) noexcept {
+    if (output.stats != nullptr) output.stats->path = path;
+}
 
-/// Solves a valid frame exactly: scaled onto its lattice, with integers wide enough for it.
+/// resolveMove for every frame but the zero moves resolveZeroMove settles (resolve.cpp).
 template <class T>
-[[nodiscard]] SweepResult<T> solveOnLattice(const SweepInput<T>& input, const ResolveOutput<T>& output) noexcept;
+[[nodiscard]] SweepResult<T> resolveMovingFrame(const SweepInput<T>& input,
+                                                const ResolveOutput<T>& output) noexcept;
 
-extern template bool solveFast<float>(const SweepInput<float>&, const ResolveOutput<float>&, SweepResult<float>&,
-                                      bool&) noexcept;
-extern template bool solveFast<double>(const SweepInput<double>&, const ResolveOutput<double>&,
-                                       SweepResult<double>&, bool&) noexcept;
-extern template SweepResult<float> solveOnLattice<float>(const SweepInput<float>&,
-                                                         const ResolveOutput<float>&) noexcept;
-extern template SweepResult<double> solveOnLattice<double>(const SweepInput<double>&,
-                                                           const ResolveOutput<double>&) noexcept;
+extern template SweepResult<float> resolveMovingFrame<float>(const SweepInput<float>&,
+                                                             const ResolveOutput<float>&) noexcept;
+extern template SweepResult<double> resolveMovingFrame<double>(const SweepInput<double>&,
+                                                               const ResolveOutput<double>&) noexcept;
 
 }  // namespace tilesweep::detail

@@ -46,7 +46,9 @@ struct GridAxis {
         while (q < cells && b * (q + 1) <= a) ++q;
         return q;
     }
-    [[nodiscard]] std::int64_t cellOf(const Num& coord) const noexcept { return cellOf(coord, Num::fromInt(1)); }
+    [[nodiscard]] std::int64_t cellOf(const Num& coord) const noexcept {
+        return cellOf(coord, Num::fromInt(1));
+    }
 
     /// Whether a grid line origin + k*tile (k any integer, on the map or off it) lies in
     /// [low, high). One exact remainder; the map is not scanned.
@@ -92,6 +94,7 @@ public:
     Num edge(int a, std::int64_t k) const noexcept { return grid_[a].edge(k); }
     std::int64_t cells(int a) const noexcept { return grid_[a].cells; }
     std::int64_t cellOf(int a, const Num& c) const noexcept { return grid_[a].cellOf(c); }
+    std::int64_t nearEdgeCell(int a) const noexcept { return grid_[a].cellOf(motion_[a].low); }
 
     /// The cells the box's span [low, high] covers at the start, exactly (closed, so a superset
     /// of the open overlaps).
@@ -145,8 +148,8 @@ public:
 
     TileTest<Num, Num> testTile(std::int64_t i, std::int64_t j) const noexcept {
         bool refined = false;  // integers need no refinement
-        return detail::testTile(motion_[0], motion_[1], grid_[0].edge(i), grid_[0].edge(i + 1), grid_[1].edge(j),
-                                grid_[1].edge(j + 1), refined);
+        return detail::testTile(motion_[0], motion_[1], grid_[0].edge(i), grid_[0].edge(i + 1),
+                                grid_[1].edge(j), grid_[1].edge(j + 1), refined);
     }
 
     bool roundTime(const Time& t, T& out) const noexcept {
@@ -157,8 +160,9 @@ public:
     // The final rounding (final_rounding.h).
     int compareWithStart(const Num& exact, int a) const noexcept { return compare(exact, motion_[a].low); }
     T roundDirected(const Num& exact, bool up) const noexcept {
-        return roundLattice<T>(exact, exponent_,
-                               up != exact.isNegative() ? MagnitudeRounding::AwayFromZero : MagnitudeRounding::TowardZero);
+        return roundLattice<T>(
+            exact, exponent_,
+            up != exact.isNegative() ? MagnitudeRounding::AwayFromZero : MagnitudeRounding::TowardZero);
     }
     T roundNearest(const Num& exact) const noexcept {
         return roundLattice<T>(exact, exponent_, MagnitudeRounding::NearestEven);
@@ -166,7 +170,8 @@ public:
     bool isExactly(const Num& exact, T v) const noexcept { return lattice(decompose(v)) == exact; }
     LineTest gridLineAhead(const Num& exact, T rounded, int a) const noexcept {
         const Num size = motion_[a].high - motion_[a].low;
-        return grid_[a].hasLineIn(exact + size, lattice(decompose(rounded)) + size) ? LineTest::Yes : LineTest::No;
+        return grid_[a].hasLineIn(exact + size, lattice(decompose(rounded)) + size) ? LineTest::Yes
+                                                                                    : LineTest::No;
     }
 
 private:

@@ -40,15 +40,19 @@ struct FloatFields {
 
 [[nodiscard]] inline FloatFields readFloatFields(const float* values, int count) noexcept {
     FloatFields r;
+    int lowest = 255;  // locals, not r's members, so that the loop keeps them in registers
+    bool subnormal = false;
     for (int k = 0; k < count; ++k) {
         std::uint32_t bits = 0;
         std::memcpy(&bits, &values[k], sizeof bits);
         const int f = static_cast<int>((bits >> 23) & 0xff);
         const bool zero = (bits & 0x7fffffff) == 0;
-        r.subnormal |= f == 0 && !zero;
+        subnormal |= f == 0 && !zero;
         r.field[k] = zero ? -1000 : f;
-        if (!zero) r.lowest = std::min(r.lowest, f);
+        if (!zero) lowest = std::min(lowest, f);
     }
+    r.lowest = lowest;
+    r.subnormal = subnormal;
     return r;
 }
 
@@ -107,13 +111,13 @@ struct FloatFields {
 }
 
 /// Whether the double fast path holds every value of this double frame (see the top of this
-/// file), which must be valid (hasValidShape, validity.h): nonzero inputs in [2^-250, 2^251), so that no product,
-/// TwoProduct error term or filter bound comes near overflow or underflow; every tile edge origin + k*tile
-/// with 0 <= k <= cells + 2 a multiple of 2^g (g the lowest set bit of origin and tile) below 2^(g + 53), so
-/// that k*tile and the sum are exact doubles; |origin| < 2^47 tile, so that a cell estimate from a rounded
-/// quotient is off by less than one cell; and a span of at most 104 bits between the largest coordinate and
-/// the lowest set bit of the box and grid inputs, so that the far box edge's distances to tile edges come out
-/// as exact pairs (farEdgeMinus).
+/// file), which must be valid (hasValidShape, validity.h): nonzero inputs in [2^-250, 2^251), so that no
+/// product, TwoProduct error term or filter bound comes near overflow or underflow; every tile edge origin +
+/// k*tile with 0 <= k <= cells + 2 a multiple of 2^g (g the lowest set bit of origin and tile) below 2^(g +
+/// 53), so that k*tile and the sum are exact doubles; |origin| < 2^47 tile, so that a cell estimate from a
+/// rounded quotient is off by less than one cell; and a span of at most 104 bits between the largest
+/// coordinate and the lowest set bit of the box and grid inputs, so that the far box edge's distances to tile
+/// edges come out as exact pairs (farEdgeMinus).
 [[nodiscard]] inline bool admitDoubleFrame(const SweepInput<double>& in) noexcept {
     const double values[10] = {in.box.pos.x,      in.box.pos.y,      in.box.size.x,   in.box.size.y,
                                in.displacement.x, in.displacement.y, in.map.origin.x, in.map.origin.y,
@@ -131,7 +135,8 @@ struct FloatFields {
             continue;
         }
 #if defined(TILESWEEP_FAULT_RANGE_NO_LOWER_BOUND)
-        if (f > 1023 + kDoubleFrameExponentLimit) return false;  // deliberate fault: the lower bound 2^-250 forgotten
+        if (f > 1023 + kDoubleFrameExponentLimit)
+            return false;  // deliberate fault: the lower bound 2^-250 forgotten
 #else
         if (f < 1023 - kDoubleFrameExponentLimit || f > 1023 + kDoubleFrameExponentLimit) return false;
 #endif
@@ -147,7 +152,8 @@ struct FloatFields {
         // |origin| + (cells + 2) * tile < 2^(max(eo + 1, et + 1 + cellBits) + 1).
         const int top = std::max(field[o] + 1, field[t] + 1 + cellBits) + 1;
         if (top > std::min(lsb[o], lsb[t]) + kFastSpanBits) return false;
-        if (field[o] - field[t] > kDoubleFrameOriginTileBits) return false;  // |origin| / tile < 2^(eo + 1 - et) <= 2^47
+        if (field[o] - field[t] > kDoubleFrameOriginTileBits)
+            return false;  // |origin| / tile < 2^(eo + 1 - et) <= 2^47
         // The far edge's distances to tile edges (FastAxis::farEdgeMinus). With x, w the box's
         // position and size, h = fl(x + w) and h + l = x + w: |h| <= |x| + |w| < 2^boxTop; for an
         // edge e (|e| < 2^top), fl(h - e) = a with h - e = a + b, |a| < 2^(m + 1), m = max(top,

@@ -20,7 +20,8 @@ namespace tilesweep::detail {
 /// The exact time num / den (0 <= num <= den, exact doubles) rounded to the nearest float,
 /// ties to even; false for a time in float's subnormal range (the lattice rounds those).
 /// `refined` is set when the rounded quotient landed on a float rounding midpoint.
-[[nodiscard]] inline bool roundTimeToFloat(const TimeRatio<double, double>& t, bool& refined, float& out) noexcept {
+[[nodiscard]] inline bool roundTimeToFloat(const TimeRatio<double, double>& t, bool& refined,
+                                           float& out) noexcept {
     const double q = t.num / t.den + 0.0;  // -0 (from -0 - +0) reads +0, as the lattice's does
     if (q != 0 && q < 0x1p-126) return false;
     std::uint64_t bits = 0;
@@ -76,7 +77,8 @@ namespace tilesweep::detail {
         const double e = productError(q, t.den, p);
         const double d = t.num.hi - p;
         const double r = (d - e) + t.num.lo;
-        const double bound = kTimeRemainderErrorUlps * kUnitRoundoff * ((std::fabs(d) + std::fabs(e)) + std::fabs(t.num.lo));
+        const double bound =
+            kTimeRemainderErrorUlps * kUnitRoundoff * ((std::fabs(d) + std::fabs(e)) + std::fabs(t.num.lo));
         const double ulp = ulpAbove(q);
         const double up = 0.5 * ulp * t.den;
         std::uint64_t bits = 0;
