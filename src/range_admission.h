@@ -97,17 +97,26 @@ struct FloatFields {
 /// The same for one box against one tile (sweepBox), with the box's edges (sums of three
 /// inputs) and the tile's bounds as the coordinates: every coordinate below 2^C, every
 /// difference of two below 2^(C+1), all multiples of 2^G; (C + 1) - G <= 53.
-[[nodiscard]] inline bool admitFloatPair(const BoxSweepInput<float>& in) noexcept {
+[[nodiscard, gnu::always_inline]] inline bool admitFloatPair(const BoxSweepInput<float>& in) noexcept {
     const float values[10] = {in.box.pos.x,      in.box.pos.y,      in.box.size.x, in.box.size.y,
                               in.displacement.x, in.displacement.y, in.tileMin.x,  in.tileMin.y,
                               in.tileMax.x,      in.tileMax.y};
-    const FloatFields f = readFloatFields(values, 10);
-    if (f.subnormal) return false;
+    int lowest = 255;
     int boxTop = 0;
     int tileTop = 0;
-    for (int k = 0; k < 6; ++k) boxTop = std::max(boxTop, f.field[k]);
-    for (int k = 6; k < 10; ++k) tileTop = std::max(tileTop, f.field[k]);
-    return floatSpanFits(std::max(boxTop + 2, tileTop), 1, f.lowest);
+    for (int k = 0; k < 10; ++k) {  // one pass (sweepBox is a few dozen instructions in all)
+        std::uint32_t bits = 0;
+        std::memcpy(&bits, &values[k], sizeof bits);
+        const int f = static_cast<int>((bits >> 23) & 0xff);  // |v| in [2^(f-127), 2^(f-126))
+        if ((bits & 0x7fffffff) == 0) continue;
+        if (f == 0) return false;  // subnormal
+        lowest = std::min(lowest, f);
+        if (k < 6)
+            boxTop = std::max(boxTop, f);
+        else
+            tileTop = std::max(tileTop, f);
+    }
+    return floatSpanFits(std::max(boxTop + 2, tileTop), 1, lowest);
 }
 
 /// Whether the double fast path holds every value of this double frame (see the top of this
