@@ -66,14 +66,17 @@ template <class Num>
 }
 
 /// Whether two closed intervals [low, high] and [lo, hi] overlap, given the signs of low - hi
-/// and high - lo: their interiors must meet, so touching is not overlapping (CONTRACT.md). The
-/// one statement of that rule: the start overlaps, the tile test and the held axis of a one-axis
-/// move all ask it.
-[[nodiscard]] inline bool overlapsOpen(int lowMinusHi, int highMinusLo) noexcept {
+/// and high - lo as two callables (the second is evaluated only when the first leaves the answer
+/// open, which matters for pairs and wide integers): their interiors must meet, so touching is
+/// not overlapping (CONTRACT.md). The one statement of that rule: the start overlaps, the tile
+/// test and the held axis of a one-axis move all ask it.
+template <class LowMinusHi, class HighMinusLo>
+[[nodiscard, gnu::always_inline]] inline bool overlapsOpen(const LowMinusHi& lowMinusHi,
+                                                           const HighMinusLo& highMinusLo) noexcept {
 #if defined(TILESWEEP_FAULT_TOUCH_OVERLAPS)
-    return lowMinusHi <= 0 && highMinusLo >= 0;  // deliberate fault: touching counted as overlap
+    return lowMinusHi() <= 0 && highMinusLo() >= 0;  // deliberate fault: touching counted as overlap
 #else
-    return lowMinusHi < 0 && highMinusLo > 0;
+    return lowMinusHi() < 0 && highMinusLo() > 0;
 #endif
 }
 
@@ -104,7 +107,7 @@ struct AxisMotion {
     }
     /// Open overlap of the box's projection at t = 0 with [lo, hi].
     [[nodiscard]] bool overlapsAtStart(const Num& lo, const Num& hi) const noexcept {
-        return overlapsOpen(compare(low, hi), compare(high, lo));
+        return overlapsOpen([&] { return compare(low, hi); }, [&] { return compare(high, lo); });
     }
 };
 

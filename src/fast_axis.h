@@ -87,7 +87,7 @@ struct FastAxis {
     }
     /// Open overlap of the box's projection at t = 0 with [lo, hi] (overlapsOpen, axis_sweep.h).
     [[nodiscard, gnu::always_inline]] bool overlapsAtStart(double lo, double hi) const noexcept {
-        return overlapsOpen(compare(low, hi), compare(farEdge(), lo));
+        return overlapsOpen([&] { return compare(low, hi); }, [&] { return compare(farEdge(), lo); });
     }
 
     /// clamp(floor((c - origin) / tile), -1, cells), exactly, for an exact double or a Coord. The estimate is

@@ -278,7 +278,8 @@ private:
     /// touching is not overlapping.
     [[gnu::always_inline]] bool heldOverlaps(int o, const Coord& heldLow, const Coord& heldHigh,
                                              std::int64_t k) const noexcept {
-        return overlapsOpen(compare(heldLow, m_.edge(o, k + 1)), compare(heldHigh, m_.edge(o, k)));
+        return overlapsOpen([&] { return compare(heldLow, m_.edge(o, k + 1)); },
+                            [&] { return compare(heldHigh, m_.edge(o, k)); });
     }
 
     /// A move along `a` alone while the other axis stays at [heldLow, heldHigh]: step 1 with a
