@@ -27,15 +27,16 @@
 //
 // What an arithmetic `Arith` provides (LatticeFrame, FastFrame):
 //   types   Scalar (float or double), Coord (a box coordinate or a distance), Edge (a tile
-//           edge), Time (a ratio {Coord num, Speed den}), Axis (the motion of one axis: dir,
-//           speed, entryDistance, exitDistance, overlapsAtStart; axis_sweep.h), Walk (what the
-//           walk's secondary range needs, computed once a frame)
-//   grid    axis(a), edge(a, k), cells(a), cellOf(a, c) and nearEdgeCell(a) (the cell of a
+//           edge), Time (a ratio {Coord num, Speed den}), Motion (one axis of the box's
+//           motion: dir, speed, entryDistance, exitDistance, overlapsAtStart; axis_sweep.h),
+//           Walk (what the walk's secondary range needs, computed once a frame)
+//   grid    axis(a) (the Motion), edge(a, k), cells(a), cellOf(a, c) and nearEdgeCell(a) (the cell of a
 //           coordinate, of the box's low edge at the start: exact, clamped to [-1, cells]),
 //           startCells(a) and sweptCells(a) (supersets), map()
-//   times   compareTimes(a, b), certainlyLater(a, b) (a > b for certain; false may be a tie)
+//   times   zeroTime(), compareTimes(a, b), certainlyLater(a, b) (a > b for certain; false may
+//           be a tie)
 //   walk    primaryAxis(), prepareWalk(p), secondaryCells(walk, entry, exit)
-//   box     nearEdge(a), farEdge(a), endOf(a), touchLow(a, e), touchHigh(a, e)
+//   box     start(a), nearEdge(a), farEdge(a), endOf(a), touchLow(a, e), touchHigh(a, e)
 //   tile    testTile(i, j) (axis_sweep.h's test on its numbers)
 //   result  roundTime(time, out), and for roundFinal (final_rounding.h): false = undecided.
 
@@ -286,22 +287,36 @@ private:
     /// static axis (from = 0), or step 2 (from = s). Only tiles entered in [from, 1) block; they
     /// are found in the first cell along `a` that has any (entry times grow strictly along the
     /// motion), and all share its time.
-    void sweepOneAxis(int a, const Coord& heldLow, const Coord& heldHigh, const Time& from, bool nearOnly,
-                      Hits& hits) noexcept {
+    [[gnu::always_inline]] void sweepOneAxis(int a, const Coord& heldLow, const Coord& heldHigh,
+                                             const Time& from, bool nearOnly, Hits& hits) noexcept {
+        if (nearOnly) {
+            sweepOneAxisNear(a, heldLow, heldHigh, from, hits);
+        } else {
+            walkOneAxis(a, heldLow, heldHigh, from, hits);
+        }
+    }
+
+    /// sweepOneAxis over the listed cells (collectNear): the earliest of them entered in
+    /// [from, 1) whose span meets the held one.
+    void sweepOneAxisNear(int a, Coord heldLow, Coord heldHigh, const Time& from, Hits& hits) noexcept {
         const int o = 1 - a;
         const auto& ma = m_.axis(a);
-        if (nearOnly) {
-            for (std::int32_t n = 0; n < nearCount_; ++n) {
-                const std::int64_t k = a == 0 ? near_[n].i : near_[n].j;
-                if (!heldOverlaps(o, heldLow, heldHigh, a == 0 ? near_[n].j : near_[n].i)) continue;
-                const Coord entry = ma.entryDistance(m_.edge(a, k), m_.edge(a, k + 1));
-                if (compare(entry, ma.speed) >= 0) continue;  // entered at t >= 1
-                const Time at{entry, ma.speed};
-                if (m_.compareTimes(at, from) < 0) continue;  // overlapping already at `from`
-                add(hits, near_[n], a, at, touchEdge(a, k));
-            }
-            return;
+        for (std::int32_t n = 0; n < nearCount_; ++n) {
+            const std::int64_t k = a == 0 ? near_[n].i : near_[n].j;
+            if (!heldOverlaps(o, heldLow, heldHigh, a == 0 ? near_[n].j : near_[n].i)) continue;
+            const Coord entry = ma.entryDistance(m_.edge(a, k), m_.edge(a, k + 1));
+            if (compare(entry, ma.speed) >= 0) continue;  // entered at t >= 1
+            const Time at{entry, ma.speed};
+            if (m_.compareTimes(at, from) < 0) continue;  // overlapping already at `from`
+            add(hits, near_[n], a, at, touchEdge(a, k));
         }
+    }
+
+    /// sweepOneAxis by the walk along `a`. The held span comes by value (here and in
+    /// sweepOneAxisNear): a copy the stores into the contact buffer cannot alias.
+    void walkOneAxis(int a, Coord heldLow, Coord heldHigh, const Time& from, Hits& hits) noexcept {
+        const int o = 1 - a;
+        const auto& ma = m_.axis(a);
         const std::int64_t j0 = std::max<std::int64_t>(m_.cellOf(o, heldLow), 0);
         const std::int64_t j1 = std::min<std::int64_t>(m_.cellOf(o, heldHigh), m_.cells(o) - 1);
         if (j0 > j1) return;
