@@ -7,7 +7,6 @@
 // of its draws took the exact refinement and asserts a floor, so none of them is vacuous.
 #include "exact_double.h"
 #include "fast_frame.h"
-
 #include "oracle/exact/rational.h"
 #include "oracle/exact/rational_convert.h"
 
@@ -107,7 +106,8 @@ TEST(ExactPrimitives, comparesProductsThatRoundToTheSameDoubleExactly) {
 
 /// A normalized pair hi + lo (hi = fl(hi + lo)) near `near`, with a random low part.
 ExactPair randomPair(std::mt19937_64& rng, double near) {
-    const double lo = std::ldexp(randomDouble(rng, 0, 0), std::ilogb(near) - 54 - static_cast<int>(rng() % 20));
+    const double lo =
+        std::ldexp(randomDouble(rng, 0, 0), std::ilogb(near) - 54 - static_cast<int>(rng() % 20));
     return twoSum(near, lo);
 }
 
@@ -129,10 +129,11 @@ TEST(ExactPrimitives, comparesPairProductsInsideTheFilterBandExactly) {
             b = twoSum(b.hi, lo);
         }
         if (k % 8 == 0) b = twoSum(b.hi, b.lo + std::ldexp(b.hi, -60));  // still inside the band
-        if (k % 8 == 4) b = twoSum(b.hi, std::ldexp(b.hi, -45));            // outside: the filter decides
+        if (k % 8 == 4) b = twoSum(b.hi, std::ldexp(b.hi, -45));         // outside: the filter decides
         bool refined = false;
         const int order = compareProducts(a, s, b, t, refined);
-        const Rational exact = (exactly(a.hi) + exactly(a.lo)) * exactly(s) - (exactly(b.hi) + exactly(b.lo)) * exactly(t);
+        const Rational exact =
+            (exactly(a.hi) + exactly(a.lo)) * exactly(s) - (exactly(b.hi) + exactly(b.lo)) * exactly(t);
         ASSERT_EQ(order, signOf(exact)) << std::hexfloat << "A = " << a.hi << " + " << a.lo << ", s = " << s
                                         << "; B = " << b.hi << " + " << b.lo << ", t = " << t;
         refinedCount += refined ? 1 : 0;
@@ -150,7 +151,8 @@ TEST(ExactPrimitives, signOfSumIsTheSignOfTheExactSum) {
         const double x = randomDouble(rng, -30, 30);
         terms[0] = x;
         terms[1] = -x;
-        for (int i = 2; i < 6; ++i) terms[i] = std::ldexp(randomDouble(rng, 0, 0), std::ilogb(x) - 53 * (i - 1) / 2);
+        for (int i = 2; i < 6; ++i)
+            terms[i] = std::ldexp(randomDouble(rng, 0, 0), std::ilogb(x) - 53 * (i - 1) / 2);
         if (k % 3 == 0) terms[5] = -(terms[2] + terms[3]);  // sometimes a zero tail
         Rational sum = 0;
         for (const double term : terms) sum += exactly(term);
@@ -163,8 +165,10 @@ TEST(ExactPrimitives, signOfSumIsTheSignOfTheExactSum) {
 /// from the midpoint of 2^-30 of q's ulp; the other half a full den (53 bits) and offsets of a
 /// few units in the last place of q*den's low half, which put R = num - q*den within the
 /// filter's bound of the midpoint without being on it. Returns false when num is not a pair.
-bool drawTimeNearDoubleMidpoint(std::mt19937_64& rng, FastTime<ExactPair>& time, Rational& exact, bool& onMidpoint) {
-    const double q = std::ldexp(1.0 + std::ldexp(static_cast<double>(rng() >> 12), -52), -1 - static_cast<int>(rng() % 12));
+bool drawTimeNearDoubleMidpoint(std::mt19937_64& rng, FastTime<ExactPair>& time, Rational& exact,
+                                bool& onMidpoint) {
+    const double q = std::ldexp(1.0 + std::ldexp(static_cast<double>(rng() >> 12), -52),
+                                -1 - static_cast<int>(rng() % 12));
     const bool fullDen = (rng() & 1) != 0;
     const double den = fullDen ? std::fabs(randomDouble(rng, -4, 20)) : shortDouble(rng, 20, -4, 20);
     const bool above = (rng() & 1) != 0;
@@ -172,13 +176,14 @@ bool drawTimeNearDoubleMidpoint(std::mt19937_64& rng, FastTime<ExactPair>& time,
     const Rational midpoint = exactly(q) + (above ? 1 : -1) * exactly(ulp) / 2;
     // A third of the draws on the midpoint itself.
     const int offset = rng() % 3 == 0 ? 0 : std::uniform_int_distribution<int>(-3, 3)(rng);
-    const Rational unit = fullDen ? exactly(ulp) * exactly(nextUp(den) - den) / 4 : exactly(ulp) * exactly(den) / Rational(0x1p30);
+    const Rational unit = fullDen ? exactly(ulp) * exactly(nextUp(den) - den) / 4
+                                  : exactly(ulp) * exactly(den) / Rational(0x1p30);
     const Rational num = midpoint * exactly(den) + offset * unit;
     onMidpoint = offset == 0;
     // hi: the double nearest num (from the double estimate and its neighbours), lo = num - hi.
     const double estimate = q * den;
-    const double hi = nearestOf(num, {nextDown(nextDown(estimate)), nextDown(estimate), estimate, nextUp(estimate),
-                                      nextUp(nextUp(estimate))});
+    const double hi = nearestOf(num, {nextDown(nextDown(estimate)), nextDown(estimate), estimate,
+                                      nextUp(estimate), nextUp(nextUp(estimate))});
     const Rational rest = num - exactly(hi);
     const double lo = static_cast<double>(rest);
     if (exactly(lo) != rest) return false;  // lo needs more than 53 bits: not a pair
@@ -207,9 +212,10 @@ TEST(ExactPrimitives, roundsPairTimesNextToADoubleMidpointCorrectly) {
         ASSERT_TRUE(roundTimeToDouble(time, refined, out))
             << std::hexfloat << "(" << time.num.hi << " + " << time.num.lo << ") / " << time.den;
         const double guess = time.num.hi / time.den;
-        const double expected =
-            nearestOf(exact, {nextDown(nextDown(guess)), nextDown(guess), guess, nextUp(guess), nextUp(nextUp(guess))});
-        ASSERT_EQ(out, expected) << std::hexfloat << "(" << time.num.hi << " + " << time.num.lo << ") / " << time.den;
+        const double expected = nearestOf(
+            exact, {nextDown(nextDown(guess)), nextDown(guess), guess, nextUp(guess), nextUp(nextUp(guess))});
+        ASSERT_EQ(out, expected) << std::hexfloat << "(" << time.num.hi << " + " << time.num.lo << ") / "
+                                 << time.den;
         refinedCount += refined ? 1 : 0;
         refinedOffMidpoint += (refined && !onMidpoint) ? 1 : 0;
     }
@@ -225,7 +231,8 @@ TEST(ExactPrimitives, roundsDoubleTimesNextToAFloatMidpointCorrectly) {
         // num = m * den + a small offset, m a float rounding midpoint in [2^-12, 1): 25 bits.
         const auto f = static_cast<float>(std::ldexp(1.0 + std::ldexp(static_cast<double>(rng() >> 41), -23),
                                                      -1 - static_cast<int>(rng() % 12)));
-        const double m = static_cast<double>(f) + (static_cast<double>(std::nextafter(f, 2.0f)) - static_cast<double>(f)) / 2;
+        const double m = static_cast<double>(f) +
+                         (static_cast<double>(std::nextafter(f, 2.0f)) - static_cast<double>(f)) / 2;
         const double den = shortDouble(rng, 20, -4, 20);
         const double base = m * den;  // exact: 25 + 20 bits
         const int offset = std::uniform_int_distribution<int>(-2, 2)(rng);
@@ -241,7 +248,8 @@ TEST(ExactPrimitives, roundsDoubleTimesNextToAFloatMidpointCorrectly) {
         const Rational toAbove = abs(exact - exactly(aboveF));
         std::uint32_t bits = 0;
         std::memcpy(&bits, &below, sizeof bits);
-        const float expected = toBelow < toAbove ? below : (toAbove < toBelow ? aboveF : ((bits & 1) == 0 ? below : aboveF));
+        const float expected =
+            toBelow < toAbove ? below : (toAbove < toBelow ? aboveF : ((bits & 1) == 0 ? below : aboveF));
         ASSERT_EQ(out, expected) << std::hexfloat << num << " / " << den;
         refinedCount += refined ? 1 : 0;
     }
