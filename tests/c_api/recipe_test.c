@@ -81,7 +81,8 @@ static int recipeIsQuotedVerbatim(const char* header, const char* source) {
     }
     for (k = 0; k < count; ++k) {
         if (strcmp(quoted[k], region[k]) != 0) {
-            fprintf(stderr, "recipe_test: line %d differs:\n  header: %s  test:   %s", k + 1, quoted[k], region[k]);
+            fprintf(stderr, "recipe_test: line %d differs:\n  header: %s  test:   %s", k + 1, quoted[k],
+                    region[k]);
             return 1;
         }
     }
@@ -105,7 +106,7 @@ static int runRecipe(void) {
     // [recipe:tilesweep.h]
     ts_map_f* map = NULL;  // cells: columns * rows bytes, row by row, 1 = solid
     ts_map_desc_f desc = {{0, 0}, {16, 16}, columns, rows, cells, NULL};  // NULL: malloc
-    ts_error error = ts_map_create_f(&desc, &map);  // copies the cells
+    ts_error error = ts_map_create_f(&desc, &map);                        // copies the cells
     if (error != TS_OK) return fail(ts_error_message(error));
     ts_vec2_f velocity = {vx, vy};
     ts_mover_f mover = {{{x, y}, {w, h}}, {velocity.x * dt, velocity.y * dt}};
