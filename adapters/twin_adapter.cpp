@@ -1,12 +1,11 @@
 // SPDX-License-Identifier: MIT
-// The inexact game-style twin (bench/twin_resolve.h) behind the resolver protocol: scene lines
-// in on standard input, one result line per scene out, flushed per line (CONTRACT.md,
-// "tilesweep resolve"). What `tilesweep check --resolver-cmd` and `tilesweep audit
+// The inexact game-style twin (baselines/: tilesweep/baselines/twin_resolve.h) behind the resolver protocol:
+// scene lines in on standard input, one result line per scene out, flushed per line (CONTRACT.md, "tilesweep
+// resolve"). What `tilesweep check --resolver-cmd` and `tilesweep audit
 // --resolver-cmd` hold to the contract as "the move-and-slide a competent game developer writes".
 //
 //     tilesweep_twin_adapter [--scalar float|double] < scenes.jsonl
-#include "bench/twin_resolve.h"
-
+#include "tilesweep/baselines/twin_resolve.h"
 #include "tilesweep/scene/scene.h"
 
 #include <cstdio>
@@ -28,7 +27,7 @@ std::vector<tilesweep::FrameResult<T>> runTwin(const tilesweep::Scene<T>& scene)
     for (const tilesweep::Vec2<T>& move : scene.moves) {
         tilesweep::SweepResult<T> r;
         for (;;) {
-            r = tilesweep::bench::resolveMoveTwin<T>(
+            r = tilesweep::baselines::resolveMoveTwin<T>(
                 {scene.map.view(), box, move}, {contacts.data(), static_cast<std::int32_t>(contacts.size()),
                                                 overlaps.data(), static_cast<std::int32_t>(overlaps.size())});
             if (static_cast<std::size_t>(r.contactCount) <= contacts.size() &&

@@ -6,8 +6,6 @@
 #include "audit/audit.h"
 
 #include "audit/scene_judge.h"
-#include "bench/grid_resolve.h"
-#include "bench/twin_resolve.h"
 #include "frame_safety.h"  // checks/
 #include "oracle/exact/exact_resolve.h"
 #include "oracle/exact/exact_sweep.h"
@@ -16,6 +14,8 @@
 #include "oracle/substep/substep_float.h"
 #include "src/decision_path.h"
 
+#include "tilesweep/baselines/grid_resolve.h"
+#include "tilesweep/baselines/twin_resolve.h"
 #include "tilesweep/scene/scene.h"
 
 #include <algorithm>
@@ -199,11 +199,11 @@ std::vector<FrameResult<T>> implementationFrames(const Implementation& impl, con
     switch (impl.kind) {
         case ImplementationKind::Twin:
             return runFrames(scene, [](const SweepInput<T>& in, const ResolveOutput<T>& out) {
-                return bench::resolveMoveTwin(in, out);
+                return baselines::resolveMoveTwin(in, out);
             });
         case ImplementationKind::Grid:
             return runFrames(scene, [](const SweepInput<T>& in, const ResolveOutput<T>& out) {
-                return bench::resolveMoveGrid(in, out);
+                return baselines::resolveMoveGrid(in, out);
             });
         case ImplementationKind::Core:
             return runScene(scene);

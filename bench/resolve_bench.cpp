@@ -21,13 +21,13 @@
 #endif
 
 #include "frame_scenarios.h"
-#include "grid_resolve.h"
 #include "oracle/exact/exact_geometry.h"
 #include "oracle/exact/exact_resolve.h"
 #include "oracle/seed/seed_resolve.h"
 #include "oracle/substep/substep_float.h"
-#include "twin_resolve.h"
 
+#include "tilesweep/baselines/grid_resolve.h"
+#include "tilesweep/baselines/twin_resolve.h"
 #include "tilesweep/scene/scene.h"
 #include "tilesweep/sweep.h"
 
@@ -235,8 +235,8 @@ BENCHMARK(BM_Box2D_TimeOfImpact_Pairs);
 // ---------------------------------------------------------------------------------------------
 // Side by side (issue 10): tilesweep's exact resolver against the baselines a game developer
 // would pick instead, on the same pre-generated frames (frame_scenarios.h, 65,536 per
-// scenario): the inexact twin (twin_resolve.h: plain T arithmetic, the same path-order walk)
-// and the swept-bounds grid resolver (grid_resolve.h). Named BM_<Impl>_<Scenario><T>[/speed],
+// scenario): the inexact twin (tilesweep/baselines/twin_resolve.h: plain T arithmetic, the same path-order
+// walk) and the swept-bounds grid resolver (grid_resolve.h there). Named BM_<Impl>_<Scenario><T>[/speed],
 // registered scenario by scenario so that the three implementations run next to each other.
 // Why each scenario: Random30 and FloorAndWalls are the common cases at four speeds; resting
 // on a floor is what a platformer does most frames (a hit at t = 0 and a slide, every frame);
@@ -271,9 +271,9 @@ void frameLoop(benchmark::State& state, tilesweep::bench::FrameKind kind, int sp
         if constexpr (I == Impl::Tilesweep) {
             benchmark::DoNotOptimize(tilesweep::resolveMove<T>(in, out));
         } else if constexpr (I == Impl::Twin) {
-            benchmark::DoNotOptimize(tilesweep::bench::resolveMoveTwin<T>(in, out));
+            benchmark::DoNotOptimize(tilesweep::baselines::resolveMoveTwin<T>(in, out));
         } else {
-            benchmark::DoNotOptimize(tilesweep::bench::resolveMoveGrid<T>(in, out));
+            benchmark::DoNotOptimize(tilesweep::baselines::resolveMoveGrid<T>(in, out));
         }
         benchmark::ClobberMemory();
         k = (k + 1) & (tilesweep::bench::kFrameCount - 1);

@@ -15,8 +15,9 @@
 //   ends inside       the final box overlaps (open, evaluated exactly) a solid tile it did not
 //                     overlap at the start: the failure the contract's rounding rule rules out.
 #include "frame_scenarios.h"
-#include "grid_resolve.h"
-#include "twin_resolve.h"
+
+#include "tilesweep/baselines/grid_resolve.h"
+#include "tilesweep/baselines/twin_resolve.h"
 
 #include <cmath>
 #include <cstdint>
@@ -132,10 +133,12 @@ Counts countScenario(tb::FrameKind kind, int speedArg) {
         runFrame(in, exact, [](const SweepInput<T>& i, const ResolveOutput<T>& o) {
             return tilesweep::resolveMove(i, o);
         });
-        runFrame(in, twin,
-                 [](const SweepInput<T>& i, const ResolveOutput<T>& o) { return tb::resolveMoveTwin(i, o); });
-        runFrame(in, grid,
-                 [](const SweepInput<T>& i, const ResolveOutput<T>& o) { return tb::resolveMoveGrid(i, o); });
+        runFrame(in, twin, [](const SweepInput<T>& i, const ResolveOutput<T>& o) {
+            return tilesweep::baselines::resolveMoveTwin(i, o);
+        });
+        runFrame(in, grid, [](const SweepInput<T>& i, const ResolveOutput<T>& o) {
+            return tilesweep::baselines::resolveMoveGrid(i, o);
+        });
         ++c.frames;
         c.blocked += exact.result.contactCount > 0;
         c.twinDecisions += !sameDecisions(exact, twin);

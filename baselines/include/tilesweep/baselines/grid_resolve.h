@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "twin_resolve.h"
+#include "tilesweep/baselines/twin_resolve.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -12,7 +12,7 @@
 // row, with no early exit. The cost grows with the area of the bounds, so with speed squared on
 // a diagonal move, where the path walk grows linearly.
 
-namespace tilesweep::bench {
+namespace tilesweep::baselines {
 
 namespace detail {
 
@@ -46,4 +46,4 @@ template <class T>
         });
 }
 
-}  // namespace tilesweep::bench
+}  // namespace tilesweep::baselines

@@ -30,10 +30,10 @@
 // next frame then lets it walk out. No validation: the input is assumed valid (tilesweep's
 // resolveMove checks it every frame; a NaN here just propagates). No allocation.
 //
-// The frame loop and the tile test are shared with bench/grid_resolve.h (the swept-bounds
+// The frame loop and the tile test are shared with grid_resolve.h (the swept-bounds
 // variant); only the broadphase differs.
 
-namespace tilesweep::bench {
+namespace tilesweep::baselines {
 
 namespace detail {
 
@@ -286,4 +286,4 @@ template <class T>
                                    detail::StepHits<T>& hits) { detail::findHitsInPathOrder(map, f, hits); });
 }
 
-}  // namespace tilesweep::bench
+}  // namespace tilesweep::baselines
