@@ -17,8 +17,8 @@ namespace tilesweep::baselines {
 namespace detail {
 
 /// Every solid cell of the step's swept bounds, row by row.
-template <class T>
-inline void findHitsInSweptBounds(const TileMapView<T>& map, const StepFrame<T>& f,
+template <class T, CellIndexing I>
+inline void findHitsInSweptBounds(const TileMapView<T>& map, const StepFrame<T, I>& f,
                                   StepHits<T>& hits) noexcept {
     std::int64_t first[2];
     std::int64_t last[2];
@@ -35,15 +35,24 @@ inline void findHitsInSweptBounds(const TileMapView<T>& map, const StepFrame<T>&
 
 }  // namespace detail
 
-/// Resolves one frame with the swept-bounds broadphase; otherwise as resolveMoveTwin.
+/// Resolves one frame with the swept-bounds broadphase, with the reciprocal of the map's tile
+/// size computed once per map by the caller; otherwise as resolveMoveTwin (lean).
+template <class T>
+[[nodiscard]] inline SweepResult<T> resolveMoveGrid(const SweepInput<T>& input,
+                                                    const ResolveOutput<T>& output,
+                                                    TileReciprocal<T> reciprocal) noexcept {
+    using Frame = detail::StepFrame<T, detail::CellIndexing::Lean>;
+    return detail::resolveFrame<T, detail::CellIndexing::Lean>(
+        input, output, reciprocal, [](const TileMapView<T>& map, const Frame& f, detail::StepHits<T>& hits) {
+            detail::findHitsInSweptBounds(map, f, hits);
+        });
+}
+
+/// As above, the reciprocal computed for this frame (resolveMove's signature shape).
 template <class T>
 [[nodiscard]] inline SweepResult<T> resolveMoveGrid(const SweepInput<T>& input,
                                                     const ResolveOutput<T>& output) noexcept {
-    return detail::resolveFrame(
-        input, output,
-        [](const TileMapView<T>& map, const detail::StepFrame<T>& f, detail::StepHits<T>& hits) {
-            detail::findHitsInSweptBounds(map, f, hits);
-        });
+    return resolveMoveGrid(input, output, reciprocalOf(input.map));
 }
 
 }  // namespace tilesweep::baselines
