@@ -121,6 +121,9 @@ struct WorstCase {
     bool found = false;
     double score = 0;
     std::uint64_t caseIndex = 0;
+
+    /// Keeps the worse of this and `other` (the larger score; the lower case index on a tie).
+    void merge(const WorstCase& other);
 };
 
 /// The figures of one implementation on one family.
