@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The audit's rows (audit.h): each implementation, and a scene's frames through it.
 #include "audit/audit.h"
-
 #include "oracle/seed/seed_resolve.h"
 #include "oracle/substep/substep_float.h"
 

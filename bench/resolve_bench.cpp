@@ -308,19 +308,7 @@ void registerFrameBenchmarks(const char* scalar, tilesweep::bench::FrameKind kin
 }
 
 bool registerSideBySide() {
-    using tilesweep::bench::FrameKind;
-    struct Entry {
-        FrameKind kind;
-        int speedArg;  // 2 x tiles/frame, as above; 0 for none
-    };
-    const Entry entries[] = {
-        {FrameKind::Random30, 1},       {FrameKind::Random30, 4},       {FrameKind::Random30, 16},
-        {FrameKind::Random30, 64},      {FrameKind::FloorAndWalls, 1},  {FrameKind::FloorAndWalls, 4},
-        {FrameKind::FloorAndWalls, 16}, {FrameKind::FloorAndWalls, 64}, {FrameKind::RestingOnFloor, 0},
-        {FrameKind::FreeFlight, 4},     {FrameKind::FarRandom30, 1},    {FrameKind::FarRandom30, 4},
-        {FrameKind::FarRandom30, 16},   {FrameKind::FarRandom30, 64},   {FrameKind::ZeroMove, 0},
-    };
-    for (const Entry& e : entries) {
+    for (const tilesweep::bench::SideBySideScenario& e : tilesweep::bench::kSideBySideScenarios) {
         registerFrameBenchmarks<float>("float", e.kind, e.speedArg);
         registerFrameBenchmarks<double>("double", e.kind, e.speedArg);
     }

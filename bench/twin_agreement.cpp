@@ -238,32 +238,22 @@ void printLibmRow(const char* name, const LibmCounts& c) {
 }  // namespace
 
 int main() {
-    using tb::FrameKind;
-    struct Entry {
-        FrameKind kind;
-        int speedArg;  // 2 x tiles/frame; 0 for none
-    };
-    const Entry entries[] = {
-        {FrameKind::Random30, 1},       {FrameKind::Random30, 4},       {FrameKind::Random30, 16},
-        {FrameKind::Random30, 64},      {FrameKind::FloorAndWalls, 1},  {FrameKind::FloorAndWalls, 4},
-        {FrameKind::FloorAndWalls, 16}, {FrameKind::FloorAndWalls, 64}, {FrameKind::RestingOnFloor, 0},
-        {FrameKind::FreeFlight, 4},     {FrameKind::FarRandom30, 1},    {FrameKind::FarRandom30, 4},
-        {FrameKind::FarRandom30, 16},   {FrameKind::FarRandom30, 64},   {FrameKind::ZeroMove, 0},
-    };
     std::printf("Against tilesweep::resolveMove, %zu frames per scenario (speed arg = 2 x tiles/frame).\n",
                 tb::kFrameCount);
     std::printf("%-26s %7s %7s | %9s %9s %9s %5s | %9s %9s %9s %5s | %5s\n", "scenario", "frames", "blocked",
                 "twin dec", "twin pos", "> 1 ulp", "in", "grid dec", "grid pos", "> 1 ulp", "in", "ts in");
     Counts all[2];
-    for (const Entry& e : entries) report<float>("float", e.kind, e.speedArg, all[0]);
-    for (const Entry& e : entries) report<double>("double", e.kind, e.speedArg, all[1]);
+    for (const tb::SideBySideScenario& e : tb::kSideBySideScenarios)
+        report<float>("float", e.kind, e.speedArg, all[0]);
+    for (const tb::SideBySideScenario& e : tb::kSideBySideScenarios)
+        report<double>("double", e.kind, e.speedArg, all[1]);
     printRow("all float", all[0]);
     printRow("all double", all[1]);
 
     std::printf("\nThe lean twin against the first twin (libm), frames that differ:\n");
     std::printf("%-26s %8s | %8s %8s\n", "scenes", "frames", "decision", "position");
     LibmCounts frames[2];
-    for (const Entry& e : entries) {
+    for (const tb::SideBySideScenario& e : tb::kSideBySideScenarios) {
         const LibmCounts f = libmOnFrames<float>(e.kind, e.speedArg);
         const LibmCounts d = libmOnFrames<double>(e.kind, e.speedArg);
         frames[0].frames += f.frames;

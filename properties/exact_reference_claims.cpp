@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The claims against the exact reference (claims.h): the resolver bit for bit, sweepBox tile by
 // tile, and the reference itself against the exact substep oracle.
-#include "claims.h"
-
 #include "claim_support.h"
+#include "claims.h"
 #include "oracle/exact/exact_resolve.h"
 #include "oracle/exact/exact_sweep.h"
 

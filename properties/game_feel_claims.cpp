@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The game-feel claims (claims.h): a box resting on a floor stays put, and one sliding along a
 // floor never snags on the seams between its tiles.
-#include "claims.h"
-
 #include "claim_support.h"
+#include "claims.h"
 
 #include <cstdint>
 

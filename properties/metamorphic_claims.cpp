@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The metamorphic claims (claims.h): a scene changed in a way whose effect is known (every move
 // zero, every length times 8, mirrored, translated by whole tiles) changes the result just so.
-#include "claims.h"
-
 #include "claim_support.h"
+#include "claims.h"
 
 #include <cmath>
 #include <cstdint>

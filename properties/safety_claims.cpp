@@ -2,9 +2,8 @@
 // The safety claims (claims.h): what any sound resolver holds whatever its rounding, with no
 // allowance: never inside a tile it did not start in, never into a wall, stopped touching, every
 // rule of checks/frame_safety.h, no contact the substeps see missed; and bad input refused.
-#include "claims.h"
-
 #include "claim_support.h"
+#include "claims.h"
 
 #include <cmath>
 #include <limits>
