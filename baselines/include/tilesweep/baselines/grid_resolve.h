@@ -17,21 +17,22 @@ namespace tilesweep::baselines {
 namespace detail {
 
 /// Every solid cell of the step's swept bounds, row by row.
-template <class T, CellIndexing I>
-inline void findHitsInSweptBounds(const TileMapView<T>& map, const StepFrame<T, I>& f,
-                                  StepHits<T>& hits) noexcept {
-    std::int64_t first[2];
-    std::int64_t last[2];
-    for (int a = 0; a < 2; ++a) {
-        const T lo = std::min(f.lo[a], f.lo[a] + f.r[a]);
-        const T hi = std::max(f.hi[a], f.hi[a] + f.r[a]);
-        first[a] = std::max<std::int64_t>(f.cellBefore(a, lo), 0);
-        last[a] = std::min<std::int64_t>(f.cellOf(a, hi), f.cells[a] - 1);
+struct FindHitsInSweptBounds {
+    template <class T, CellIndexing I>
+    void operator()(const TileMapView<T>& map, const StepFrame<T, I>& f, StepHits<T>& hits) const noexcept {
+        std::int64_t first[2];
+        std::int64_t last[2];
+        for (int a = 0; a < 2; ++a) {
+            const T lo = std::min(f.lo[a], f.lo[a] + f.r[a]);
+            const T hi = std::max(f.hi[a], f.hi[a] + f.r[a]);
+            first[a] = std::max<std::int64_t>(f.cellBefore(a, lo), 0);
+            last[a] = std::min<std::int64_t>(f.cellOf(a, hi), f.cells[a] - 1);
+        }
+        for (std::int64_t j = first[1]; j <= last[1]; ++j)
+            for (std::int64_t i = first[0]; i <= last[0]; ++i)
+                if (map.isSolid(i, j)) testTile(map, f, i, j, hits);
     }
-    for (std::int64_t j = first[1]; j <= last[1]; ++j)
-        for (std::int64_t i = first[0]; i <= last[0]; ++i)
-            if (map.isSolid(i, j)) testTile(map, f, i, j, hits);
-}
+};
 
 }  // namespace detail
 
@@ -41,11 +42,8 @@ template <class T>
 [[nodiscard]] inline SweepResult<T> resolveMoveGrid(const SweepInput<T>& input,
                                                     const ResolveOutput<T>& output,
                                                     TileReciprocal<T> reciprocal) noexcept {
-    using Frame = detail::StepFrame<T, detail::CellIndexing::Lean>;
-    return detail::resolveFrame<T, detail::CellIndexing::Lean>(
-        input, output, reciprocal, [](const TileMapView<T>& map, const Frame& f, detail::StepHits<T>& hits) {
-            detail::findHitsInSweptBounds(map, f, hits);
-        });
+    return detail::resolveFrame<T, detail::CellIndexing::Lean>(input, output, reciprocal,
+                                                               detail::FindHitsInSweptBounds{});
 }
 
 /// As above, the reciprocal computed for this frame (resolveMove's signature shape).

@@ -281,47 +281,49 @@ template <class T, CellIndexing I, class FindHits>
 }
 
 /// The twin's broadphase: cells in path order along the primary axis, with the early exit.
-template <class T, CellIndexing I>
-inline void findHitsInPathOrder(const TileMapView<T>& map, const StepFrame<T, I>& f,
-                                StepHits<T>& hits) noexcept {
-    // Primary: the axis whose motion crosses more cells, |r_x| / tile_x >= |r_y| / tile_y.
-    const int p = std::abs(f.r[0]) * f.tile[1] >= std::abs(f.r[1]) * f.tile[0] ? 0 : 1;
-    const int s = 1 - p;
-    const T rp = f.r[p];
-    const bool forward = rp > T(0);
-    // From the cell holding the trailing edge to the one holding the leading edge at the end.
-    std::int64_t k = forward ? f.cellBefore(p, f.lo[p]) : f.cellOf(p, f.hi[p]);
-    std::int64_t last = forward ? f.cellOf(p, f.hi[p] + rp) : f.cellBefore(p, f.lo[p] + rp);
-    const std::int64_t dir = forward ? 1 : -1;
-    if (forward) {
-        k = std::max<std::int64_t>(k, 0);
-        last = std::min<std::int64_t>(last, f.cells[p] - 1);
-    } else {
-        k = std::min<std::int64_t>(k, f.cells[p] - 1);
-        last = std::max<std::int64_t>(last, 0);
-    }
-    for (; forward ? k <= last : k >= last; k += dir) {
-        const T lo = f.edge(p, k);
-        const T hi = f.edge(p, k + 1);
-        // The box is inside this primary cell for t in (enter, leave), clamped to [0, 1].
-        T enter = forward ? (lo - f.hi[p]) / rp : (hi - f.lo[p]) / rp;
-        T leave = forward ? (hi - f.lo[p]) / rp : (lo - f.hi[p]) / rp;
-        enter = std::max(enter, T(0));
-        leave = std::min(leave, T(1));
-        if (enter >= T(1)) break;
-        if (hits.any && enter > hits.time) break;  // later than the earliest hit: done
-        // The secondary span over that window.
-        const T a = f.r[s] * enter;
-        const T b = f.r[s] * leave;
-        const std::int64_t j0 = std::max<std::int64_t>(f.cellBefore(s, f.lo[s] + std::min(a, b)), 0);
-        const std::int64_t j1 = std::min<std::int64_t>(f.cellOf(s, f.hi[s] + std::max(a, b)), f.cells[s] - 1);
-        for (std::int64_t j = j0; j <= j1; ++j) {
-            const std::int64_t ci = p == 0 ? k : j;
-            const std::int64_t cj = p == 0 ? j : k;
-            if (map.isSolid(ci, cj)) testTile(map, f, ci, cj, hits);
+struct FindHitsInPathOrder {
+    template <class T, CellIndexing I>
+    void operator()(const TileMapView<T>& map, const StepFrame<T, I>& f, StepHits<T>& hits) const noexcept {
+        // Primary: the axis whose motion crosses more cells, |r_x| / tile_x >= |r_y| / tile_y.
+        const int p = std::abs(f.r[0]) * f.tile[1] >= std::abs(f.r[1]) * f.tile[0] ? 0 : 1;
+        const int s = 1 - p;
+        const T rp = f.r[p];
+        const bool forward = rp > T(0);
+        // From the cell holding the trailing edge to the one holding the leading edge at the end.
+        std::int64_t k = forward ? f.cellBefore(p, f.lo[p]) : f.cellOf(p, f.hi[p]);
+        std::int64_t last = forward ? f.cellOf(p, f.hi[p] + rp) : f.cellBefore(p, f.lo[p] + rp);
+        const std::int64_t dir = forward ? 1 : -1;
+        if (forward) {
+            k = std::max<std::int64_t>(k, 0);
+            last = std::min<std::int64_t>(last, f.cells[p] - 1);
+        } else {
+            k = std::min<std::int64_t>(k, f.cells[p] - 1);
+            last = std::max<std::int64_t>(last, 0);
+        }
+        for (; forward ? k <= last : k >= last; k += dir) {
+            const T lo = f.edge(p, k);
+            const T hi = f.edge(p, k + 1);
+            // The box is inside this primary cell for t in (enter, leave), clamped to [0, 1].
+            T enter = forward ? (lo - f.hi[p]) / rp : (hi - f.lo[p]) / rp;
+            T leave = forward ? (hi - f.lo[p]) / rp : (lo - f.hi[p]) / rp;
+            enter = std::max(enter, T(0));
+            leave = std::min(leave, T(1));
+            if (enter >= T(1)) break;
+            if (hits.any && enter > hits.time) break;  // later than the earliest hit: done
+            // The secondary span over that window.
+            const T a = f.r[s] * enter;
+            const T b = f.r[s] * leave;
+            const std::int64_t j0 = std::max<std::int64_t>(f.cellBefore(s, f.lo[s] + std::min(a, b)), 0);
+            const std::int64_t j1 =
+                std::min<std::int64_t>(f.cellOf(s, f.hi[s] + std::max(a, b)), f.cells[s] - 1);
+            for (std::int64_t j = j0; j <= j1; ++j) {
+                const std::int64_t ci = p == 0 ? k : j;
+                const std::int64_t cj = p == 0 ? j : k;
+                if (map.isSolid(ci, cj)) testTile(map, f, ci, cj, hits);
+            }
         }
     }
-}
+};
 
 }  // namespace detail
 
@@ -332,11 +334,8 @@ template <class T>
 [[nodiscard]] inline SweepResult<T> resolveMoveTwin(const SweepInput<T>& input,
                                                     const ResolveOutput<T>& output,
                                                     TileReciprocal<T> reciprocal) noexcept {
-    using Frame = detail::StepFrame<T, detail::CellIndexing::Lean>;
-    return detail::resolveFrame<T, detail::CellIndexing::Lean>(
-        input, output, reciprocal, [](const TileMapView<T>& map, const Frame& f, detail::StepHits<T>& hits) {
-            detail::findHitsInPathOrder(map, f, hits);
-        });
+    return detail::resolveFrame<T, detail::CellIndexing::Lean>(input, output, reciprocal,
+                                                               detail::FindHitsInPathOrder{});
 }
 
 /// As above, the reciprocal computed for this frame: the same signature shape as
@@ -354,12 +353,8 @@ template <class T>
 template <class T>
 [[nodiscard]] inline SweepResult<T> resolveMoveTwinLibm(const SweepInput<T>& input,
                                                         const ResolveOutput<T>& output) noexcept {
-    using Frame = detail::StepFrame<T, detail::CellIndexing::Libm>;
-    return detail::resolveFrame<T, detail::CellIndexing::Libm>(
-        input, output, TileReciprocal<T>{T(0), T(0)},
-        [](const TileMapView<T>& map, const Frame& f, detail::StepHits<T>& hits) {
-            detail::findHitsInPathOrder(map, f, hits);
-        });
+    return detail::resolveFrame<T, detail::CellIndexing::Libm>(input, output, TileReciprocal<T>{T(0), T(0)},
+                                                               detail::FindHitsInPathOrder{});
 }
 
 }  // namespace tilesweep::baselines
