@@ -270,7 +270,7 @@ int main() {
     const std::pair<DrawnFamily, const char*> drawn[] = {
         {DrawnFamily::Uniform, "uniform"}, {DrawnFamily::NearCorner, "near-corner"},
         {DrawnFamily::Tie, "tie"},         {DrawnFamily::Seam, "seam"},
-        {DrawnFamily::Tiny, "tiny"},       {DrawnFamily::HighSpeed, "high-speed"},
+        {DrawnFamily::Tiny, "tiny"},
     };
     for (const auto& [family, name] : drawn) {
         char row[64];
