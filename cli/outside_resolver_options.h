@@ -13,8 +13,9 @@ namespace tilesweep::cli {
 /// pipe mode, its answer file growing in file mode) before it counts as hung.
 inline void addResolverTimeoutOption(CLI::App* command, double& seconds, const std::string& helpPrefix = "") {
     command
-        ->add_option("--resolver-timeout", seconds,
-                     helpPrefix + "Seconds an outside resolver may go without answering before it counts as hung")
+        ->add_option(
+            "--resolver-timeout", seconds,
+            helpPrefix + "Seconds an outside resolver may go without answering before it counts as hung")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
 }
