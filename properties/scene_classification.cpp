@@ -10,6 +10,7 @@
 
 #include "tilesweep/mover.h"
 #include "tilesweep/resolve.h"
+#include "tilesweep/scenarios/scene_pieces.h"
 
 #include <algorithm>
 #include <cmath>
@@ -85,18 +86,7 @@ int latticeSpan(const Scene<T>& scene) {
         lowest = std::min(lowest, low);
         highest = std::max(highest, e);
     };
-    note(scene.map.origin.x);
-    note(scene.map.origin.y);
-    note(scene.map.tileSize.x);
-    note(scene.map.tileSize.y);
-    note(scene.box.pos.x);
-    note(scene.box.pos.y);
-    note(scene.box.size.x);
-    note(scene.box.size.y);
-    for (const Vec2<T>& m : scene.moves) {
-        note(m.x);
-        note(m.y);
-    }
+    scenarios::forEachSceneValue(scene, note);
     return highest >= lowest ? highest - lowest : 0;
 }
 
@@ -110,14 +100,7 @@ int smallestInputExponent(const Scene<T>& scene) {
         (void)std::frexp(v, &e);
         lowest = std::min(lowest, e);
     };
-    for (const Vec2<T>& v : {scene.map.origin, scene.map.tileSize, scene.box.pos, scene.box.size}) {
-        note(v.x);
-        note(v.y);
-    }
-    for (const Vec2<T>& m : scene.moves) {
-        note(m.x);
-        note(m.y);
-    }
+    scenarios::forEachSceneValue(scene, note);
     return lowest;
 }
 
@@ -137,14 +120,7 @@ int widestSignificand(const Scene<T>& scene) {
         }
         widest = std::max(widest, bits);
     };
-    for (const Vec2<T>& v : {scene.map.origin, scene.map.tileSize, scene.box.pos, scene.box.size}) {
-        note(v.x);
-        note(v.y);
-    }
-    for (const Vec2<T>& m : scene.moves) {
-        note(m.x);
-        note(m.y);
-    }
+    scenarios::forEachSceneValue(scene, note);
     return widest;
 }
 

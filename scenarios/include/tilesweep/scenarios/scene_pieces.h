@@ -19,6 +19,24 @@
 #include <type_traits>
 #include <vector>
 
+namespace tilesweep::scenarios {
+
+/// Calls `f(v)` for every number of `scene` that is an input: the map's origin and tile size, the
+/// box's position and size, then every move, x before y.
+template <class T, class F>
+void forEachSceneValue(const Scene<T>& scene, F&& f) {
+    for (const Vec2<T>& v : {scene.map.origin, scene.map.tileSize, scene.box.pos, scene.box.size}) {
+        f(v.x);
+        f(v.y);
+    }
+    for (const Vec2<T>& m : scene.moves) {
+        f(m.x);
+        f(m.y);
+    }
+}
+
+}  // namespace tilesweep::scenarios
+
 namespace tilesweep::scenarios::detail {
 
 template <class T>

@@ -48,14 +48,7 @@ rc::Gen<GeneratedScene<T>> genTinyScaleScene(rc::Gen<GeneratedScene<T>> base) {
             lowest = std::min(lowest, e);
         };
         const Scene<T>& s = g.scene;
-        for (const Vec2<T>& v : {s.map.origin, s.map.tileSize, s.box.pos, s.box.size}) {
-            note(v.x);
-            note(v.y);
-        }
-        for (const Vec2<T>& m : s.moves) {
-            note(m.x);
-            note(m.y);
-        }
+        forEachSceneValue(s, note);
         // v * 2^-shift stays normal while frexp's exponent e - shift >= min_exponent.
         const int most = lowest - std::numeric_limits<T>::min_exponent;
         const int wanted = isFloat ? *rc::gen::element(100, 110, 120, 1000, 60)
