@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
-// The inexact game-style twin (bench/twin_resolve.h) behind the resolver protocol: scene lines
-// in on standard input, one result line per scene out, flushed per line (CONTRACT.md,
-// "tilesweep resolve"). What `tilesweep check --resolver-cmd` and `tilesweep audit
+// The inexact game-style twin (tilesweep/baselines/twin_resolve.h) behind the resolver
+// protocol: scene lines in on standard input, one result line per scene out, flushed per line
+// (CONTRACT.md, "tilesweep resolve"). What `tilesweep check --resolver-cmd` and `tilesweep audit
 // --resolver-cmd` hold to the contract as "the move-and-slide a competent game developer writes".
 //
 //     tilesweep_twin_adapter [--scalar float|double] < scenes.jsonl
-#include "bench/twin_resolve.h"
-
+#include "tilesweep/baselines/run_frames.h"
+#include "tilesweep/baselines/twin_resolve.h"
 #include "tilesweep/scene/scene.h"
 
 #include <cstdio>
@@ -17,34 +17,13 @@
 
 namespace {
 
-/// Every frame of a scene through the twin, each starting where the last ended (runScene's
-/// loop, with the twin in place of resolveMove).
+/// Every frame of a scene through the twin, each starting where the last ended.
 template <class T>
 std::vector<tilesweep::FrameResult<T>> runTwin(const tilesweep::Scene<T>& scene) {
-    std::vector<tilesweep::FrameResult<T>> frames;
-    tilesweep::Box<T> box = scene.box;
-    std::vector<tilesweep::Contact<T>> contacts(16);
-    std::vector<tilesweep::Cell> overlaps(16);
-    for (const tilesweep::Vec2<T>& move : scene.moves) {
-        tilesweep::SweepResult<T> r;
-        for (;;) {
-            r = tilesweep::bench::resolveMoveTwin<T>(
-                {scene.map.view(), box, move}, {contacts.data(), static_cast<std::int32_t>(contacts.size()),
-                                                overlaps.data(), static_cast<std::int32_t>(overlaps.size())});
-            if (static_cast<std::size_t>(r.contactCount) <= contacts.size() &&
-                static_cast<std::size_t>(r.startOverlapCount) <= overlaps.size())
-                break;
-            contacts.resize(std::max(contacts.size(), static_cast<std::size_t>(r.contactCount)));
-            overlaps.resize(std::max(overlaps.size(), static_cast<std::size_t>(r.startOverlapCount)));
-        }
-        tilesweep::FrameResult<T> frame;
-        frame.position = r.position;
-        frame.contacts.assign(contacts.begin(), contacts.begin() + r.contactCount);
-        frame.startOverlaps.assign(overlaps.begin(), overlaps.begin() + r.startOverlapCount);
-        frames.push_back(std::move(frame));
-        box.pos = r.position;
-    }
-    return frames;
+    return tilesweep::baselines::runFrames(
+        scene, [](const tilesweep::SweepInput<T>& in, const tilesweep::ResolveOutput<T>& out) {
+            return tilesweep::baselines::resolveMoveTwin<T>(in, out);
+        });
 }
 
 template <class T>

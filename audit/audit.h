@@ -91,8 +91,8 @@ enum class ImplementationKind : std::uint8_t {
     Core,          ///< tilesweep's production resolver
     Seed,          ///< the seed article's algorithm
     SubstepFloat,  ///< N substeps in plain float
-    Twin,          ///< game-style swept AABB walking cells in path order (bench/twin_resolve.h)
-    Grid,          ///< game-style swept AABB scanning the swept bounds (bench/grid_resolve.h)
+    Twin,          ///< game-style swept AABB walking cells in path order (tilesweep/baselines/twin_resolve.h)
+    Grid,          ///< game-style swept AABB scanning the swept bounds (tilesweep/baselines/grid_resolve.h)
 };
 
 /// One row of the report.
@@ -121,6 +121,9 @@ struct WorstCase {
     bool found = false;
     double score = 0;
     std::uint64_t caseIndex = 0;
+
+    /// Keeps the worse of this and `other` (the larger score; the lower case index on a tie).
+    void merge(const WorstCase& other);
 };
 
 /// The figures of one implementation on one family.

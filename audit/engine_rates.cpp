@@ -4,16 +4,17 @@
 // their engines (one process each, for an outside resolver), merged at the end.
 #include "audit/engine_rates.h"
 
+#include "audit/parallel_tasks.h"
 #include "audit/scene_judge.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <thread>
 #include <utility>
@@ -172,69 +173,56 @@ RatesResult measureRates(const RatesConfig& config, const std::vector<EngineSpec
     using Cells = std::vector<std::vector<RateCell>>;
     std::vector<Cells> shards(static_cast<std::size_t>(jobs),
                               Cells(engines.size(), std::vector<RateCell>(result.families.size())));
-    std::vector<std::string> errors(static_cast<std::size_t>(jobs));
-    std::atomic<std::size_t> next{0};
-    std::atomic<std::uint64_t> done{0};
-    std::atomic<bool> failed{false};
+    // Each worker's engines (one process each, for an outside resolver), started at its first task.
+    std::vector<std::vector<std::unique_ptr<BatchResolver>>> resolvers(static_cast<std::size_t>(jobs));
+    for (auto& own : resolvers) own.resize(engines.size());
 
-    auto work = [&](std::size_t w) {
-        try {
-            std::vector<std::unique_ptr<BatchResolver>> resolvers(engines.size());
-            for (std::size_t t; (t = next.fetch_add(1)) < tasks.size();) {
-                const Task& task = tasks[t];
-                const Family& family = result.families[task.family];
-                std::vector<Scene<float>> scenes;
-                std::vector<std::uint64_t> cases;
-                scenes.reserve(task.cases.size());
-                for (const std::uint64_t c : task.cases) {
-                    Scene<float> s = generateScene<float>(family, config.seed, c);
-                    // A far map whose edges float cannot hold is not a scene of the contract.
-                    if (validateTileMap(s.map.view()) != MapError::None) continue;
-                    scenes.push_back(std::move(s));
-                    cases.push_back(c);
-                }
-                std::vector<judge::SceneJudge<float>> judges;
-                judges.reserve(scenes.size());
-                for (const Scene<float>& s : scenes) judges.emplace_back(s);
-                for (std::size_t e = 0; e < engines.size(); ++e) {
-                    if (!resolvers[e]) resolvers[e] = engines[e].make();
-                    const std::vector<EngineAnswer> answers = resolvers[e]->resolve(scenes);
-                    std::vector<RateCell>& row = shards[w][e];
-                    for (std::size_t k = 0; k < scenes.size(); ++k) {
-                        RateCell& cell = row[task.family];
-                        if (k >= answers.size()) {
-                            recordNoAnswer(cell, "the resolver returned fewer answers than scenes", cases[k]);
-                        } else if (!answers[k].failure.empty()) {
-                            recordNoAnswer(cell, answers[k].failure, cases[k]);
-                        } else if (answers[k].frames.size() != scenes[k].moves.size()) {
-                            recordNoAnswer(cell,
-                                           "answered " + std::to_string(answers[k].frames.size()) +
-                                               " frames for a scene of " +
-                                               std::to_string(scenes[k].moves.size()),
-                                           cases[k]);
-                        } else {
-                            record(cell, judges[k].judge(answers[k].frames), cases[k]);
-                        }
-                    }
-                }
-                done.fetch_add(task.cases.size());
-            }
-        } catch (const std::exception& e) {
-            errors[w] = e.what();
-            failed.store(true);
-            next.store(tasks.size());
+    ParallelTasks parallel;
+    parallel.workers = jobs;
+    parallel.tasks = tasks.size();
+    parallel.units = total;
+    parallel.name = "rates";
+    parallel.progress = config.progress;
+    parallel.run = [&](std::size_t w, std::size_t t) -> std::uint64_t {
+        const Task& task = tasks[t];
+        const Family& family = result.families[task.family];
+        std::vector<Scene<float>> scenes;
+        std::vector<std::uint64_t> cases;
+        scenes.reserve(task.cases.size());
+        for (const std::uint64_t c : task.cases) {
+            Scene<float> s = generateScene<float>(family, config.seed, c);
+            // A far map whose edges float cannot hold is not a scene of the contract.
+            if (validateTileMap(s.map.view()) != MapError::None) continue;
+            scenes.push_back(std::move(s));
+            cases.push_back(c);
         }
+        std::vector<judge::SceneJudge<float>> judges;
+        judges.reserve(scenes.size());
+        for (const Scene<float>& s : scenes) judges.emplace_back(s);
+        for (std::size_t e = 0; e < engines.size(); ++e) {
+            if (!resolvers[w][e]) resolvers[w][e] = engines[e].make();
+            const std::vector<EngineAnswer> answers = resolvers[w][e]->resolve(scenes);
+            std::vector<RateCell>& row = shards[w][e];
+            for (std::size_t k = 0; k < scenes.size(); ++k) {
+                RateCell& cell = row[task.family];
+                if (k >= answers.size()) {
+                    recordNoAnswer(cell, "the resolver returned fewer answers than scenes", cases[k]);
+                } else if (!answers[k].failure.empty()) {
+                    recordNoAnswer(cell, answers[k].failure, cases[k]);
+                } else if (answers[k].frames.size() != scenes[k].moves.size()) {
+                    recordNoAnswer(cell,
+                                   "answered " + std::to_string(answers[k].frames.size()) +
+                                       " frames for a scene of " + std::to_string(scenes[k].moves.size()),
+                                   cases[k]);
+                } else {
+                    record(cell, judges[k].judge(answers[k].frames), cases[k]);
+                }
+            }
+        }
+        return task.cases.size();
     };
-    std::vector<std::thread> threads;
-    for (int w = 0; w < jobs; ++w) threads.emplace_back(work, static_cast<std::size_t>(w));
-    for (int tick = 0; done.load() < total && !failed.load(); ++tick) {
-        if (config.progress && tick % 10 == 0) config.progress(done.load(), total);
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
-    for (std::thread& t : threads) t.join();
-    for (const std::string& e : errors)
-        if (!e.empty()) throw std::runtime_error("rates worker failed: " + e);
-    if (config.progress) config.progress(total, total);
+    runParallelTasks(parallel);
+    resolvers.clear();  // the outside resolvers' processes end here, as when each worker ended
 
     result.cells.assign(engines.size(), std::vector<RateCell>(result.families.size()));
     for (const Cells& s : shards)

@@ -24,7 +24,7 @@ enum class FamilyKind : std::uint8_t {
     Tie,         ///< both axes enter at the same time (an exact corner hit), sometimes 1 ulp off
     Seam,        ///< landings across floor seams and long slides resting on a floor
     Tiny,        ///< displacements below one ulp of the position, free or against a face
-    HighSpeed,   ///< 1 to 100 tiles per frame through thin walls
+    HighSpeed,   ///< 1 to 100 tiles per frame through thin walls (the property family high-speed)
     Far,         ///< uniform, near-corner, tie and seam scenes translated by `magnitude`
     Suite,       ///< a family of the property suite (`suite`), drawn from a seed (scenarios::buildScene)
 };

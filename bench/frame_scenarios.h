@@ -13,7 +13,9 @@ using scenarios::kFarOrigin;
 using scenarios::kFrameCount;
 using scenarios::kFrameMapSize;
 using scenarios::kFrameTile;
+using scenarios::kSideBySideScenarios;
 using scenarios::makeFrameScenario;
 using scenarios::nameOf;
+using scenarios::SideBySideScenario;
 
 }  // namespace tilesweep::bench

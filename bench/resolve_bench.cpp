@@ -21,13 +21,13 @@
 #endif
 
 #include "frame_scenarios.h"
-#include "grid_resolve.h"
 #include "oracle/exact/exact_geometry.h"
 #include "oracle/exact/exact_resolve.h"
 #include "oracle/seed/seed_resolve.h"
 #include "oracle/substep/substep_float.h"
-#include "twin_resolve.h"
 
+#include "tilesweep/baselines/grid_resolve.h"
+#include "tilesweep/baselines/twin_resolve.h"
 #include "tilesweep/scene/scene.h"
 #include "tilesweep/sweep.h"
 
@@ -198,7 +198,9 @@ BENCHMARK_TEMPLATE(BM_SweepBox_Pairs, double);
 
 #if TILESWEEP_BENCH_HAVE_BOX2D
 // Box2D's general time of impact (conservative advancement) on the same pairs: the peer a user
-// might pick instead. It stops short of contact by design (its target separation).
+// might pick instead. It stops short of contact by design (its target separation). Float only:
+// Box2D has no double build (v2.4's b2Vec2 holds floats, and v3's b2Vec2 too), so against
+// BM_SweepBox_Pairs<double> there is no Box2D row to set beside it.
 void BM_Box2D_TimeOfImpact_Pairs(benchmark::State& state) {
     const auto pairs = makePairs<float>();
     b2PolygonShape moving;
@@ -235,15 +237,18 @@ BENCHMARK(BM_Box2D_TimeOfImpact_Pairs);
 // ---------------------------------------------------------------------------------------------
 // Side by side (issue 10): tilesweep's exact resolver against the baselines a game developer
 // would pick instead, on the same pre-generated frames (frame_scenarios.h, 65,536 per
-// scenario): the inexact twin (twin_resolve.h: plain T arithmetic, the same path-order walk)
-// and the swept-bounds grid resolver (grid_resolve.h). Named BM_<Impl>_<Scenario><T>[/speed],
-// registered scenario by scenario so that the three implementations run next to each other.
+// scenario): the lean inexact twin (baselines/: tilesweep/baselines/twin_resolve.h, plain T
+// arithmetic, the same path-order walk, no libm call and the tile reciprocal computed once per
+// map) and the lean swept-bounds grid resolver (grid_resolve.h there); and TwinLibm, the first
+// twin, whose cell indices are std::floor/std::ceil of a quotient per cell, kept so that the
+// cost of those calls stays visible. Named BM_<Impl>_<Scenario><T>[/speed], registered
+// scenario by scenario so that the implementations run next to each other.
 // Why each scenario: Random30 and FloorAndWalls are the common cases at four speeds; resting
 // on a floor is what a platformer does most frames (a hit at t = 0 and a slide, every frame);
 // free flight is the cheapest useful frame (no hit: the walk's cost alone); far from the origin
 // tilesweep's lattice needs wider integers; a zero move measures the fixed cost per call.
 
-enum class Impl { Tilesweep, Twin, Grid };
+enum class Impl { Tilesweep, Twin, Grid, TwinLibm };
 
 template <class T>
 const tilesweep::bench::FrameScenario<T>& frameScenario(tilesweep::bench::FrameKind kind, int speedArg) {
@@ -265,15 +270,19 @@ void frameLoop(benchmark::State& state, tilesweep::bench::FrameKind kind, int sp
     tilesweep::Contact<T> contacts[64];
     tilesweep::Cell overlaps[64];
     const tilesweep::ResolveOutput<T> out{contacts, 64, overlaps, 64};
+    // The baselines' tile reciprocal, once per map as a game keeps it beside its map.
+    const tilesweep::baselines::TileReciprocal<T> reciprocal = tilesweep::baselines::reciprocalOf(view);
     std::size_t k = 0;
     for (auto _ : state) {
         const tilesweep::SweepInput<T> in{view, s.boxes[k], s.moves[k]};
         if constexpr (I == Impl::Tilesweep) {
             benchmark::DoNotOptimize(tilesweep::resolveMove<T>(in, out));
         } else if constexpr (I == Impl::Twin) {
-            benchmark::DoNotOptimize(tilesweep::bench::resolveMoveTwin<T>(in, out));
+            benchmark::DoNotOptimize(tilesweep::baselines::resolveMoveTwin<T>(in, out, reciprocal));
+        } else if constexpr (I == Impl::Grid) {
+            benchmark::DoNotOptimize(tilesweep::baselines::resolveMoveGrid<T>(in, out, reciprocal));
         } else {
-            benchmark::DoNotOptimize(tilesweep::bench::resolveMoveGrid<T>(in, out));
+            benchmark::DoNotOptimize(tilesweep::baselines::resolveMoveTwinLibm<T>(in, out));
         }
         benchmark::ClobberMemory();
         k = (k + 1) & (tilesweep::bench::kFrameCount - 1);
@@ -295,22 +304,11 @@ void registerFrameBenchmarks(const char* scalar, tilesweep::bench::FrameKind kin
     registerFrameBenchmark<T, Impl::Tilesweep>("Tilesweep", scalar, kind, speedArg);
     registerFrameBenchmark<T, Impl::Twin>("Twin", scalar, kind, speedArg);
     registerFrameBenchmark<T, Impl::Grid>("Grid", scalar, kind, speedArg);
+    registerFrameBenchmark<T, Impl::TwinLibm>("TwinLibm", scalar, kind, speedArg);
 }
 
 bool registerSideBySide() {
-    using tilesweep::bench::FrameKind;
-    struct Entry {
-        FrameKind kind;
-        int speedArg;  // 2 x tiles/frame, as above; 0 for none
-    };
-    const Entry entries[] = {
-        {FrameKind::Random30, 1},       {FrameKind::Random30, 4},       {FrameKind::Random30, 16},
-        {FrameKind::Random30, 64},      {FrameKind::FloorAndWalls, 1},  {FrameKind::FloorAndWalls, 4},
-        {FrameKind::FloorAndWalls, 16}, {FrameKind::FloorAndWalls, 64}, {FrameKind::RestingOnFloor, 0},
-        {FrameKind::FreeFlight, 4},     {FrameKind::FarRandom30, 1},    {FrameKind::FarRandom30, 4},
-        {FrameKind::FarRandom30, 16},   {FrameKind::FarRandom30, 64},   {FrameKind::ZeroMove, 0},
-    };
-    for (const Entry& e : entries) {
+    for (const tilesweep::bench::SideBySideScenario& e : tilesweep::bench::kSideBySideScenarios) {
         registerFrameBenchmarks<float>("float", e.kind, e.speedArg);
         registerFrameBenchmarks<double>("double", e.kind, e.speedArg);
     }

@@ -5,6 +5,11 @@
 //
 //   tilesweep_twin_agreement            # every scenario, float and double
 //
+// Then the lean twin against the first one (resolveMoveTwinLibm, std::floor/std::ceil of a
+// quotient per cell): the frames on which they decide differently or end at different
+// positions, on the benchmarks' frames (16-px tiles: a power of two, where the two must agree)
+// and on the audit's drawn families (tiles of 8 to 32 px, 12 and 24 among them).
+//
 // Per frame and implementation, against tilesweep::resolveMove (which matches the exact
 // reference bit for bit):
 //   decisions differ  the contact count, or any contact's tile or normal (in order), or the
@@ -15,8 +20,10 @@
 //   ends inside       the final box overlaps (open, evaluated exactly) a solid tile it did not
 //                     overlap at the start: the failure the contract's rounding rule rules out.
 #include "frame_scenarios.h"
-#include "grid_resolve.h"
-#include "twin_resolve.h"
+
+#include "tilesweep/baselines/grid_resolve.h"
+#include "tilesweep/baselines/twin_resolve.h"
+#include "tilesweep/scenarios/drawn_families.h"
 
 #include <cmath>
 #include <cstdint>
@@ -132,10 +139,12 @@ Counts countScenario(tb::FrameKind kind, int speedArg) {
         runFrame(in, exact, [](const SweepInput<T>& i, const ResolveOutput<T>& o) {
             return tilesweep::resolveMove(i, o);
         });
-        runFrame(in, twin,
-                 [](const SweepInput<T>& i, const ResolveOutput<T>& o) { return tb::resolveMoveTwin(i, o); });
-        runFrame(in, grid,
-                 [](const SweepInput<T>& i, const ResolveOutput<T>& o) { return tb::resolveMoveGrid(i, o); });
+        runFrame(in, twin, [](const SweepInput<T>& i, const ResolveOutput<T>& o) {
+            return tilesweep::baselines::resolveMoveTwin(i, o);
+        });
+        runFrame(in, grid, [](const SweepInput<T>& i, const ResolveOutput<T>& o) {
+            return tilesweep::baselines::resolveMoveGrid(i, o);
+        });
         ++c.frames;
         c.blocked += exact.result.contactCount > 0;
         c.twinDecisions += !sameDecisions(exact, twin);
@@ -176,29 +185,99 @@ void report(const char* scalar, tb::FrameKind kind, int speedArg, Counts& total)
     total.add(c);
 }
 
+/// The lean twin against the first twin, frame by frame.
+struct LibmCounts {
+    long frames = 0;
+    long decisions = 0;  ///< frames whose contacts or start overlaps differ
+    long positions = 0;  ///< frames whose final positions differ in any bit
+};
+
+/// One frame through both; returns the lean twin's result.
+template <class T>
+SweepResult<T> compareWithLibm(const SweepInput<T>& in, LibmCounts& c) {
+    static FrameOutput<T> lean, libm;
+    runFrame(in, lean, [](const SweepInput<T>& i, const ResolveOutput<T>& o) {
+        return tilesweep::baselines::resolveMoveTwin(i, o);
+    });
+    runFrame(in, libm, [](const SweepInput<T>& i, const ResolveOutput<T>& o) {
+        return tilesweep::baselines::resolveMoveTwinLibm(i, o);
+    });
+    ++c.frames;
+    c.decisions += !sameDecisions(lean, libm);
+    c.positions += lean.result.position != libm.result.position;
+    return lean.result;
+}
+
+/// The side-by-side scenarios' frames.
+template <class T>
+LibmCounts libmOnFrames(tb::FrameKind kind, int speedArg) {
+    const tb::FrameScenario<T> s = tb::makeFrameScenario<T>(kind, speedArg / 2.0);
+    LibmCounts c;
+    for (std::size_t k = 0; k < s.boxes.size(); ++k)
+        (void)compareWithLibm<T>({s.map.view(), s.boxes[k], s.moves[k]}, c);
+    return c;
+}
+
+/// `scenes` scenes of a drawn family, each frame from where the lean twin ended the last.
+template <class T>
+LibmCounts libmOnDrawnFamily(tilesweep::scenarios::DrawnFamily family, std::uint64_t scenes) {
+    LibmCounts c;
+    for (std::uint64_t seed = 0; seed < scenes; ++seed) {
+        const tilesweep::Scene<T> scene = tilesweep::scenarios::drawScene<T>(family, seed);
+        Vec2<T> start = scene.box.pos;
+        for (const Vec2<T>& move : scene.moves)
+            start = compareWithLibm<T>({scene.map.view(), {start, scene.box.size}, move}, c).position;
+    }
+    return c;
+}
+
+void printLibmRow(const char* name, const LibmCounts& c) {
+    std::printf("%-26s %8ld | %8ld %8ld\n", name, c.frames, c.decisions, c.positions);
+}
+
 }  // namespace
 
 int main() {
-    using tb::FrameKind;
-    struct Entry {
-        FrameKind kind;
-        int speedArg;  // 2 x tiles/frame; 0 for none
-    };
-    const Entry entries[] = {
-        {FrameKind::Random30, 1},       {FrameKind::Random30, 4},       {FrameKind::Random30, 16},
-        {FrameKind::Random30, 64},      {FrameKind::FloorAndWalls, 1},  {FrameKind::FloorAndWalls, 4},
-        {FrameKind::FloorAndWalls, 16}, {FrameKind::FloorAndWalls, 64}, {FrameKind::RestingOnFloor, 0},
-        {FrameKind::FreeFlight, 4},     {FrameKind::FarRandom30, 1},    {FrameKind::FarRandom30, 4},
-        {FrameKind::FarRandom30, 16},   {FrameKind::FarRandom30, 64},   {FrameKind::ZeroMove, 0},
-    };
     std::printf("Against tilesweep::resolveMove, %zu frames per scenario (speed arg = 2 x tiles/frame).\n",
                 tb::kFrameCount);
     std::printf("%-26s %7s %7s | %9s %9s %9s %5s | %9s %9s %9s %5s | %5s\n", "scenario", "frames", "blocked",
                 "twin dec", "twin pos", "> 1 ulp", "in", "grid dec", "grid pos", "> 1 ulp", "in", "ts in");
     Counts all[2];
-    for (const Entry& e : entries) report<float>("float", e.kind, e.speedArg, all[0]);
-    for (const Entry& e : entries) report<double>("double", e.kind, e.speedArg, all[1]);
+    for (const tb::SideBySideScenario& e : tb::kSideBySideScenarios)
+        report<float>("float", e.kind, e.speedArg, all[0]);
+    for (const tb::SideBySideScenario& e : tb::kSideBySideScenarios)
+        report<double>("double", e.kind, e.speedArg, all[1]);
     printRow("all float", all[0]);
     printRow("all double", all[1]);
+
+    std::printf("\nThe lean twin against the first twin (libm), frames that differ:\n");
+    std::printf("%-26s %8s | %8s %8s\n", "scenes", "frames", "decision", "position");
+    LibmCounts frames[2];
+    for (const tb::SideBySideScenario& e : tb::kSideBySideScenarios) {
+        const LibmCounts f = libmOnFrames<float>(e.kind, e.speedArg);
+        const LibmCounts d = libmOnFrames<double>(e.kind, e.speedArg);
+        frames[0].frames += f.frames;
+        frames[0].decisions += f.decisions;
+        frames[0].positions += f.positions;
+        frames[1].frames += d.frames;
+        frames[1].decisions += d.decisions;
+        frames[1].positions += d.positions;
+    }
+    printLibmRow("benchmark frames<float>", frames[0]);
+    printLibmRow("benchmark frames<double>", frames[1]);
+    using tilesweep::scenarios::DrawnFamily;
+    constexpr std::uint64_t kDrawnScenes = 20000;
+    const std::pair<DrawnFamily, const char*> drawn[] = {
+        {DrawnFamily::Uniform, "uniform"}, {DrawnFamily::NearCorner, "near-corner"},
+        {DrawnFamily::Tie, "tie"},         {DrawnFamily::Seam, "seam"},
+        {DrawnFamily::Tiny, "tiny"},
+    };
+    for (const auto& [family, name] : drawn) {
+        char row[64];
+        std::snprintf(row, sizeof row, "drawn %s<float>", name);
+        printLibmRow(row, libmOnDrawnFamily<float>(family, kDrawnScenes));
+        std::snprintf(row, sizeof row, "drawn %s<double>", name);
+        printLibmRow(row, libmOnDrawnFamily<double>(family, kDrawnScenes));
+    }
     return 0;
 }

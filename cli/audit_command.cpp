@@ -5,6 +5,7 @@
 #include "audit_command.h"
 
 #include "audit/audit.h"
+#include "outside_resolver_options.h"
 #include "progress_line.h"
 #include "shard.h"
 
@@ -64,18 +65,11 @@ CLI::App* addAuditCommand(CLI::App& app, AuditOptions& options) {
                      "Conformance mode: cases per property per round")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
-    command
-        ->add_option("--claims", options.claims, "Conformance mode: all, or safety (no bit-for-bit claims)")
-        ->check(CLI::IsMember(std::vector<std::string>{"all", "safety"}))
-        ->capture_default_str();
+    addClaimsOption(command, options.claims, "Conformance mode: ");
     command->add_option("--scalar", options.scalar, "Conformance mode: the resolvers' scalar type")
         ->check(CLI::IsMember(std::vector<std::string>{"float", "double"}))
         ->capture_default_str();
-    command
-        ->add_option("--resolver-timeout", options.resolverTimeout,
-                     "Conformance mode: seconds an outside resolver may go without answering")
-        ->check(CLI::PositiveNumber)
-        ->capture_default_str();
+    addResolverTimeoutOption(command, options.resolverTimeout);
     command
         ->add_option("--rates-cases", options.ratesCases,
                      "Conformance mode: scenes per family for the engine rates and tolerances (0: none)")

@@ -29,7 +29,7 @@ struct AuditOptions {
     int propertyCases = 200;                     ///< cases per property per round
     std::string claims = "all";                  ///< "all" or "safety"
     std::string scalar = "float";                ///< the scalar type the resolvers work in
-    double resolverTimeout = 10;                 ///< seconds per batch before a resolver counts as hung
+    double resolverTimeout = 10;  ///< seconds without an answer before a resolver counts as hung
     // Engine rates (audit/engine_rates.h), in conformance mode after the checks.
     std::uint64_t ratesCases = 2000;              ///< scenes per family; 0: no rates
     std::vector<std::string> resolverTolerances;  ///< "NAME=PIXELS [what it is]", by --resolver-name

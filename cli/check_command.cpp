@@ -15,6 +15,7 @@
 #include "check_command.h"
 
 #include "conformance_report.h"
+#include "outside_resolver_options.h"
 #include "property_suite.h"
 #include "scene_runner.h"
 #include "shard.h"
@@ -203,14 +204,8 @@ CLI::App* addCheckCommand(CLI::App& app, CheckOptions& options) {
                      "Check an outside resolver: a shell command that reads scene lines on stdin and writes\n"
                      "one result line per scene, as `tilesweep resolve` does")
         ->type_name("CMD");
-    command
-        ->add_option("--resolver-timeout", options.resolverTimeout,
-                     "Seconds the outside resolver may go without answering before it counts as hung")
-        ->check(CLI::PositiveNumber)
-        ->capture_default_str();
-    command->add_option("--claims", options.claims, "all, or safety: leave out the bit-for-bit claims")
-        ->check(CLI::IsMember(std::vector<std::string>{"all", "safety"}))
-        ->capture_default_str();
+    addResolverTimeoutOption(command, options.resolverTimeout);
+    addClaimsOption(command, options.claims);
     command
         ->add_option("--scalar", options.scalar,
                      "Only the properties in this scalar type (default: both; float with --resolver-cmd)")

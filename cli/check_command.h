@@ -24,7 +24,7 @@ struct CheckOptions {
     std::string corpusDir;          ///< where failing cases are written; empty: the default
                                     ///< (properties/corpus, or resolver-corpus for an outside resolver)
     std::string resolverCmd;        ///< outside resolver (sh -c); empty: tilesweep's own
-    double resolverTimeout = 10;    ///< seconds one batch may take before the process counts as hung
+    double resolverTimeout = 10;    ///< seconds without an answer before the process counts as hung
     std::string claims = "all";     ///< "all" or "safety" (leaves out the bit-for-bit claims)
     std::string scalar;             ///< "float" or "double"; empty: both (built-in), float (outside)
     std::string report;             ///< a conformance report (Markdown) to write; empty: none

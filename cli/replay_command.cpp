@@ -5,6 +5,7 @@
 // claim fails, so a team's CI keeps its counterexamples fixed.
 #include "replay_command.h"
 
+#include "outside_resolver_options.h"
 #include "scene_checks.h"
 #include "scene_runner.h"
 
@@ -72,14 +73,8 @@ CLI::App* addReplayCommand(CLI::App& app, ReplayOptions& options) {
             "--resolver-cmd", options.resolverCmd,
             "Replay against an outside resolver (a shell command speaking `tilesweep resolve`'s protocol)")
         ->type_name("CMD");
-    command
-        ->add_option("--resolver-timeout", options.resolverTimeout,
-                     "Seconds per scene before it counts as hung")
-        ->check(CLI::PositiveNumber)
-        ->capture_default_str();
-    command->add_option("--claims", options.claims, "all, or safety: leave out the bit-for-bit claims")
-        ->check(CLI::IsMember(std::vector<std::string>{"all", "safety"}))
-        ->capture_default_str();
+    addResolverTimeoutOption(command, options.resolverTimeout);
+    addClaimsOption(command, options.claims);
     command->footer(
         "Each scene line is read in the scalar its \"scalar\" field names (float when absent), as\n"
         "`tilesweep check` writes them. Exit status: 0 every claim held on every scene; 1 some claim\n"

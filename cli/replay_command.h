@@ -16,7 +16,7 @@ namespace tilesweep::cli {
 struct ReplayOptions {
     std::vector<std::string> paths;  ///< files (.jsonl) or directories of them
     std::string resolverCmd;         ///< outside resolver (sh -c); empty: tilesweep's own
-    double resolverTimeout = 10;     ///< seconds per scene before the process counts as hung
+    double resolverTimeout = 10;     ///< seconds without an answer before the process counts as hung
     std::string claims = "all";      ///< "all" or "safety"
 };
 

@@ -10,7 +10,7 @@
 //   substep:N        the exact fine-substep oracle with N substeps
 //   substep-float:N  the game-style substep loop, positions accumulated in --scalar
 //   seed             the seed article's algorithm as written (a baseline, not a reference)
-//   twin, grid       the game-style swept-AABB baselines of bench/ (plain T arithmetic)
+//   twin, grid       the game-style swept-AABB baselines of baselines/ (plain T, lean)
 
 #include "tilesweep/scene/scene.h"
 

@@ -58,7 +58,7 @@ template <class T>
 /// once on one face), "start-overlap", "lattice-wide" and "lattice-192" (inputs spanning more
 /// than 60 or 92 bits: the resolver's wide integer tiers), "empty-map" (no solid tile),
 /// "huge-move" (a move of 2^40 or more), "far-origin"; "path:fast", "path:filtered" or
-/// "path:exact" (which of the resolver's paths decided the frames: src/decision_path.h), and
+/// "path:exact" (which of the resolver's paths decided the frames: tilesweep/frame_stats.h), and
 /// "fallback" when it was not the fast one.
 template <class T>
 [[nodiscard]] std::vector<std::string> classifyScene(const Scene<T>& scene);

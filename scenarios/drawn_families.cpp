@@ -271,38 +271,6 @@ Scene<T> tinyScene(Draw<T>& d) {
     return s;
 }
 
-// 1 to 100 tiles per frame along a 128-column corridor with thin walls and scattered tiles.
-template <class T>
-Scene<T> highSpeedScene(Draw<T>& d) {
-    const double tile = d.chance(0.5) ? 8.0 : 16.0;
-    const std::int32_t columns = 128;
-    const std::int32_t rows = 6;
-    Scene<T> s;
-    s.map = emptyMap<T>(0, tile, columns, rows);
-    const int walls = d.integer(1, 3);
-    for (int k = 0; k < walls; ++k) {
-        const std::int32_t i = d.integer(8, 120);
-        const bool full = d.chance(0.6);
-        const std::int32_t from = full ? 0 : d.integer(0, rows - 1);
-        const std::int32_t to = full ? rows - 1 : d.integer(from, rows - 1);
-        for (std::int32_t j = from; j <= to; ++j) setSolid(s.map, i, j);
-    }
-    for (int k = 0; k < 6; ++k) setSolid(s.map, d.integer(8, 120), d.integer(0, rows - 1));
-    const int sx = d.sign();
-    const double w = d.uniform(0.3, 1.2) * tile;
-    const double h = d.uniform(0.3, 1.2) * tile;
-    const double x = sx > 0 ? d.uniform(0.5, 4) * tile : (columns - 4 - d.uniform(0, 3.5)) * tile;
-    const double y = d.uniform(0, rows * tile - h);
-    s.box = {{static_cast<T>(x), static_cast<T>(y)}, {static_cast<T>(w), static_cast<T>(h)}};
-    const double speed = std::pow(10.0, d.uniform(0, 2)) * tile;
-    double dy = 0;
-    const int shape = d.integer(0, 2);
-    if (shape == 1) dy = speed * d.uniform(-0.1, 0.1);
-    if (shape == 2) dy = d.uniform(-2, 2) * tile;
-    s.moves.push_back({static_cast<T>(sx * speed), static_cast<T>(dy)});
-    return s;
-}
-
 }  // namespace
 
 template <class T>
@@ -319,8 +287,6 @@ Scene<T> drawScene(DrawnFamily family, std::uint64_t seed, double magnitude) {
             return seamScene(d);
         case DrawnFamily::Tiny:
             return tinyScene(d);
-        case DrawnFamily::HighSpeed:
-            return highSpeedScene(d);
     }
     return uniformScene(d);
 }

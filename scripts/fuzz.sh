@@ -7,27 +7,35 @@
 #   bash scripts/fuzz.sh [SECONDS_PER_TARGET [TARGET...]]    # default: 60 s, every target
 #   bash scripts/fuzz.sh 0                                   # build and replay only
 #   bash scripts/fuzz.sh --tests 'unit|property' 30          # first the ctest suite built by clang
+#   bash scripts/fuzz.sh --tests 'unit|property' --exclude 'Slow' 30   # leaving out tests by name
 #
 # --tests LABELS builds the whole fuzz preset (tests, properties, oracles) and runs
 # `ctest -L LABELS` in it before fuzzing: the default configuration compiled by clang, under the
 # sanitizers (TILESWEEP_PROPERTY_CASES cases a property, 300 unless set).
 # A failing input is written to fuzz/regressions/<target>/ (a regression test from then on) and
 # makes the script exit 1. The grown corpus stays in <build>/corpus/<target>/ between runs.
+# TILESWEEP_FUZZ_PRESET=fuzz-portable builds with the portable integer code (build/fuzz-portable/);
 # TILESWEEP_FUZZ_NO_BUILD=1 skips configure and build (to run targets side by side);
 # TILESWEEP_FUZZ_FLAGS adds compile options to the core library, after the sanitizer flags
 # (say "-fno-sanitize=builtin -mlzcnt -O0", to look past a known finding while it is fixed).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 tests=""
+exclude=""
 if [ "${1:-}" = --tests ]; then
     tests=${2:?--tests needs ctest labels (a regular expression)}
+    shift 2
+fi
+if [ "${1:-}" = --exclude ]; then
+    exclude=${2:?--exclude needs ctest test names (a regular expression)}
     shift 2
 fi
 seconds=${1:-60}
 shift || true
 targets=("$@")
 ((${#targets[@]})) || targets=(scene_reader resolver)
-build=${TILESWEEP_FUZZ_BUILD_DIR:-$root/build/fuzz}
+preset=${TILESWEEP_FUZZ_PRESET:-fuzz}
+build=${TILESWEEP_FUZZ_BUILD_DIR:-$root/build/$preset}
 
 # clang and its sanitizer and libFuzzer runtimes, from Debian's packages, when missing, with
 # what every build needs (scripts/setup.sh).
@@ -35,7 +43,7 @@ TILESWEEP_EXTRA_PACKAGES="clang libclang-rt-14-dev" source "$root/scripts/setup.
 
 if [ "${TILESWEEP_FUZZ_NO_BUILD:-0}" != 1 ]; then
     # Warnings are errors under clang too, as in the g++ builds.
-    (cd "$root" && cmake --preset fuzz -B "$build" -DTILESWEEP_FUZZ_FLAGS="${TILESWEEP_FUZZ_FLAGS:-}" >/dev/null)
+    (cd "$root" && cmake --preset "$preset" -B "$build" -DTILESWEEP_FUZZ_FLAGS="${TILESWEEP_FUZZ_FLAGS:-}" >/dev/null)
     if [ -n "$tests" ]; then
         cmake --build "$build" --parallel "$(nproc)"
     else
@@ -48,7 +56,7 @@ fi
 if [ -n "$tests" ]; then
     echo "== ctest -L '$tests' (clang, ASan + UBSan)"
     TILESWEEP_PROPERTY_CASES=${TILESWEEP_PROPERTY_CASES:-300} \
-        ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)" -L "$tests"
+        ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)" -L "$tests" ${exclude:+-E "$exclude"}
 fi
 
 # Input size bounds: a scene line of a few KiB covers every field several times over; a resolver

@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
 // Many movers at once (tilesweep/batch.h): a batch on 1, 2 and 3 threads, and on a game's own
 // job system through TaskSystem, gives every mover exactly what moveAndSlide and resolveMove
-// give it alone, bit for bit, over random maps and movers (tests/mover_scenes.h). TILESWEEP_PROPERTY_CASES
-// sets the number of maps (default 300, 500 movers each).
+// give it alone, bit for bit, over random maps and movers (tilesweep/scenarios/mover_scenes.h).
+// TILESWEEP_PROPERTY_CASES sets the number of maps (default 300, 500 movers each).
 #include "tilesweep/batch.h"
 
-#include "mover_scenes.h"
+#include "property_cases.h"
 
 #include "tilesweep/resolve.h"
+#include "tilesweep/scenarios/mover_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -54,10 +55,10 @@ TYPED_TEST(Batch, givesEveryMoverWhatResolveMoveGivesItAlone) {
         inline_(kMovers);
     std::vector<Contact<T>> contacts(4096);
     for (std::uint64_t m = 0; m < maps && !::testing::Test::HasFailure(); ++m) {
-        const test::RandomScene<T> level = test::randomScene<T>(rng);
+        const scenarios::RandomScene<T> level = scenarios::randomScene<T>(rng);
         const PreparedMap<T> map = prepareMap(level.view());
         ASSERT_TRUE(map.isValid());
-        for (auto& in : inputs) test::randomMover(rng, level, in.box, in.displacement);
+        for (auto& in : inputs) scenarios::randomMover(rng, level, in.box, in.displacement);
         for (std::size_t k = 0; k < kMovers; ++k) alone[k] = moveAndSlide(map, inputs[k]);
         moveAndSlideBatch(map, inputs.data(), byOne.data(), kMovers, &one);
         moveAndSlideBatch(map, inputs.data(), byTwo.data(), kMovers, &two);
@@ -79,7 +80,7 @@ TYPED_TEST(Batch, givesEveryMoverWhatResolveMoveGivesItAlone) {
 }
 
 TEST(Batch, emptyAndNullBatchesDoNothing) {
-    test::Level<float> level({"....", "####"});
+    scenarios::Level<float> level({"....", "####"});
     const PreparedMap<float> map = prepareMap(level.view());
     BatchPool pool(2);
     MoveResult<float> result{};
@@ -204,10 +205,10 @@ TYPED_TEST(Batch, runsOnAGameJobSystemBitForBit) {
     std::vector<MoveResult<T>> alone(kMovers), onJobs(kMovers);
     const int batches = 8;
     for (int b = 0; b < batches; ++b) {
-        const test::RandomScene<T> level = test::randomScene<T>(rng);
+        const scenarios::RandomScene<T> level = scenarios::randomScene<T>(rng);
         const PreparedMap<T> map = prepareMap(level.view());
         ASSERT_TRUE(map.isValid());
-        for (auto& in : inputs) test::randomMover(rng, level, in.box, in.displacement);
+        for (auto& in : inputs) scenarios::randomMover(rng, level, in.box, in.displacement);
         for (std::size_t k = 0; k < kMovers; ++k) alone[k] = moveAndSlide(map, inputs[k]);
         moveAndSlideBatch(map, inputs.data(), onJobs.data(), kMovers, tasks);
         for (std::size_t k = 0; k < kMovers; ++k)
@@ -232,9 +233,9 @@ TYPED_TEST(Batch, runsOnAGameJobSystemBitForBit) {
     EXPECT_EQ(jobs.runners.count(std::this_thread::get_id()), 0u);  // the game's threads ran it
     // A TaskSystem without callbacks runs the batch here.
     std::vector<MoveResult<T>> here(kMovers);
-    const test::RandomScene<T> level = test::randomScene<T>(rng);
+    const scenarios::RandomScene<T> level = scenarios::randomScene<T>(rng);
     const PreparedMap<T> map = prepareMap(level.view());
-    for (auto& in : inputs) test::randomMover(rng, level, in.box, in.displacement);
+    for (auto& in : inputs) scenarios::randomMover(rng, level, in.box, in.displacement);
     moveAndSlideBatch(map, inputs.data(), here.data(), kMovers, TaskSystem{});
     for (std::size_t k = 0; k < kMovers; ++k) ASSERT_TRUE(sameResult(moveAndSlide(map, inputs[k]), here[k]));
 }

@@ -4,9 +4,10 @@
 // TILESWEEP_PROPERTY_CASES sets the cases per property (default 3000); the seed is fixed.
 #include "tilesweep/mover.h"
 
-#include "mover_scenes.h"
+#include "property_cases.h"
 
 #include "tilesweep/resolve.h"
+#include "tilesweep/scenarios/mover_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -30,7 +31,7 @@ TYPED_TEST_SUITE(Mover, Scalars);
 // at y = 16, normal (0, -1): on the ground, blocked on y only.
 TYPED_TEST(Mover, landingSetsOnGround) {
     using T = TypeParam;
-    test::Level<T> level({"....", "....", "####"});
+    scenarios::Level<T> level({"....", "....", "####"});
     const PreparedMap<T> map = prepareMap(level.view());
     ASSERT_TRUE(map.isValid());
     const MoveResult<T> r = moveAndSlide(map, {{{4, 14}, {12, 16}}, {0, 5}});
@@ -48,7 +49,7 @@ TYPED_TEST(Mover, landingSetsOnGround) {
 // normal (-1, 0): a wall on the right.
 TYPED_TEST(Mover, wallSetsOnWallWithItsSide) {
     using T = TypeParam;
-    test::Level<T> level({"..#.", "....", "...."});
+    scenarios::Level<T> level({"..#.", "....", "...."});
     const PreparedMap<T> map = prepareMap(level.view());
     Contact<T> contacts[8];
     const MoveResult<T> r = moveAndSlide(map, {{{10, 2}, {20, 10}}, {8, 0}}, contacts, 8);
@@ -63,7 +64,7 @@ TYPED_TEST(Mover, wallSetsOnWallWithItsSide) {
 // Jumping up into the ceiling row 0 (bottom at 16) from y = 20 by -10: normal (0, 1).
 TYPED_TEST(Mover, ceilingSetsOnCeiling) {
     using T = TypeParam;
-    test::Level<T> level({"####", "....", "...."});
+    scenarios::Level<T> level({"####", "....", "...."});
     const PreparedMap<T> map = prepareMap(level.view());
     const MoveResult<T> r = moveAndSlide(map, {{{4, 20}, {8, 8}}, {0, -10}});
     EXPECT_EQ(r.position.y, T(16));
@@ -85,7 +86,7 @@ TEST(Mover, scalarProductTakesAnyArithmeticScalar) {
 
 TYPED_TEST(Mover, badInputIsRefusedNotResolved) {
     using T = TypeParam;
-    test::Level<T> level({"....", "####"});
+    scenarios::Level<T> level({"....", "####"});
     const PreparedMap<T> map = prepareMap(level.view());
     const T nan = std::numeric_limits<T>::quiet_NaN();
     EXPECT_EQ(moveAndSlide(map, {{{0, 0}, {4, 4}}, {nan, 0}}).status, MoveStatus::InvalidInput);
@@ -110,7 +111,7 @@ TYPED_TEST(Mover, badInputIsRefusedNotResolved) {
 TYPED_TEST(Mover, wideBoxGetsItsFlagsWithoutABuffer) {
     using T = TypeParam;
     std::vector<std::string> rows{std::string(120, '.'), std::string(120, '#')};
-    test::Level<T> level(rows);
+    scenarios::Level<T> level(rows);
     const PreparedMap<T> map = prepareMap(level.view());
     const MoveInput<T> in{{{8, 0}, {1600, 8}}, {0, 16}};
     const std::int32_t bound = maxContacts(in.box.size, level.view().tileSize);
@@ -140,7 +141,7 @@ TYPED_TEST(Mover, wideBoxGetsItsFlagsWithoutABuffer) {
 TYPED_TEST(Mover, clipVelocityZeroesWhatPushesIntoTheFacesHit) {
     using T = TypeParam;
     // Tile (1, 0) = [16, 32] x [0, 16] above; tile (3, 1) = [48, 64] x [16, 32] to the right.
-    test::Level<T> level({".#..", "...#", "...."});
+    scenarios::Level<T> level({".#..", "...#", "...."});
     const PreparedMap<T> map = prepareMap(level.view());
     // A 10x10 box at (20, 20) moving up 8: its top (20) hits the ceiling's bottom (16) at 1/2.
     const MoveResult<T> up = moveAndSlide(map, {{{20, 20}, {10, 10}}, {0, -8}});
@@ -171,10 +172,10 @@ TEST(Mover, maxContactsOfInvalidSizesIsZero) {
               std::numeric_limits<std::int32_t>::max());
 }
 
-// ---- Properties over random scenes (tests/mover_scenes.h) ----
+// ---- Properties over random scenes (tilesweep/scenarios/mover_scenes.h) ----
 
 template <class T>
-void expectSameAsResolveMove(const test::RandomScene<T>& scene, std::uint64_t caseIndex) {
+void expectSameAsResolveMove(const scenarios::RandomScene<T>& scene, std::uint64_t caseIndex) {
     const PreparedMap<T> map = prepareMap(scene.view());
     ASSERT_TRUE(map.isValid());
     std::vector<Contact<T>> expected(4096);
@@ -244,7 +245,7 @@ TYPED_TEST(Mover, matchesResolveMoveBitForBitAndNeverExceedsMaxContacts) {
     std::mt19937_64 rng(0x5eed12);
     const std::uint64_t cases = test::propertyCases(3000);
     for (std::uint64_t k = 0; k < cases && !::testing::Test::HasFailure(); ++k) {
-        const test::RandomScene<T> scene = test::randomScene<T>(rng);
+        const scenarios::RandomScene<T> scene = scenarios::randomScene<T>(rng);
         expectSameAsResolveMove(scene, k);
     }
 }

@@ -17,17 +17,19 @@
  * numbers agree. While the version is 0.x every minor release may break the ABI, so the shared
  * library's soname carries both (libtilesweep_c.so.0.MINOR); from 1.0 on it carries the major.
  *
- * Usage, C:
+ * Usage, C (tests/c_api/recipe_test.c runs it as written, and fails when the two differ):
  *
- *     ts_map_f* map;
- *     ts_map_desc_f desc = {{0, 0}, {16, 16}, columns, rows, cells, NULL};  (1 = solid; malloc)
- *     if (ts_map_create_f(&desc, &map) != TS_OK) ...;                 (copies the cells)
+ *     ts_map_f* map = NULL;  // cells: columns * rows bytes, row by row, 1 = solid
+ *     ts_map_desc_f desc = {{0, 0}, {16, 16}, columns, rows, cells, NULL};  // NULL: malloc
+ *     ts_error error = ts_map_create_f(&desc, &map);  // copies the cells
+ *     if (error != TS_OK) return fail(ts_error_message(error));
  *     ts_vec2_f velocity = {vx, vy};
  *     ts_mover_f mover = {{{x, y}, {w, h}}, {velocity.x * dt, velocity.y * dt}};
  *     ts_result_f r;
- *     ts_move_and_slide_f(map, &mover, &r, NULL, 0);                  (no contact buffer needed)
- *     x = r.position.x; y = r.position.y;
- *     velocity = ts_clip_velocity_f(velocity, &r);  (stops on floors, ceilings and walls)
+ *     ts_move_and_slide_f(map, &mover, &r, NULL, 0);  // no contact buffer needed for the flags
+ *     x = r.position.x;
+ *     y = r.position.y;
+ *     velocity = ts_clip_velocity_f(velocity, &r);  // stops on floors, ceilings and walls
  *     ts_map_destroy_f(map);
  */
 

@@ -7,9 +7,10 @@
 
 // The drawn families: plain std::mt19937_64 builders, one scene per seed, with real-valued
 // (not only lattice) boxes and moves. They are the audit's reference population, measured
-// against the exact reference with error figures in ulps. Every scene has integer tile sizes
-// and an origin that is a whole number of tiles, so that its map is representable in the scalar
-// type at every magnitude used.
+// against the exact reference with error figures in ulps. (The audit's high-speed column is the
+// property family's builder, high_speed_family.h: the same scenes, built once.) Every scene has integer tile
+// sizes and an origin that is a whole number of tiles, so that its map is representable in the scalar type at
+// every magnitude used.
 
 namespace tilesweep::scenarios {
 
@@ -20,7 +21,6 @@ enum class DrawnFamily : std::uint8_t {
     Tie,         ///< both axes enter at the same time (an exact corner hit), sometimes 1 ulp off
     Seam,        ///< landings across floor seams and long slides resting on a floor
     Tiny,        ///< displacements below one ulp of the position, free or against a face
-    HighSpeed,   ///< 1 to 100 tiles per frame through thin walls
 };
 
 /// The scene of `family` drawn from `seed`, its map's origin moved to `magnitude` (rounded down

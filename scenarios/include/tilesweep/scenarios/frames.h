@@ -46,6 +46,23 @@ inline const char* nameOf(FrameKind kind) noexcept {
     return "?";
 }
 
+/// One side-by-side scenario: the frames of `kind` at `speedArg`, twice the speed in tiles a frame
+/// (1 -> 0.5, 4 -> 2, 16 -> 8, 64 -> 32; 0 for the kinds without a speed).
+struct SideBySideScenario {
+    FrameKind kind;
+    int speedArg;
+};
+
+/// The scenarios the benchmarks time tilesweep and the baselines on side by side
+/// (BM_<Impl>_<Scenario>) and the twin agreement tool counts their disagreements on, in order.
+inline constexpr SideBySideScenario kSideBySideScenarios[] = {
+    {FrameKind::Random30, 1},       {FrameKind::Random30, 4},       {FrameKind::Random30, 16},
+    {FrameKind::Random30, 64},      {FrameKind::FloorAndWalls, 1},  {FrameKind::FloorAndWalls, 4},
+    {FrameKind::FloorAndWalls, 16}, {FrameKind::FloorAndWalls, 64}, {FrameKind::RestingOnFloor, 0},
+    {FrameKind::FreeFlight, 4},     {FrameKind::FarRandom30, 1},    {FrameKind::FarRandom30, 4},
+    {FrameKind::FarRandom30, 16},   {FrameKind::FarRandom30, 64},   {FrameKind::ZeroMove, 0},
+};
+
 /// A map and kFrameCount frames on it.
 template <class T>
 struct FrameScenario {

@@ -1,30 +1,23 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-// Random scenes for the game-loop and batch tests: small maps with full floors and walls mixed
-// in, boxes and moves on a quarter-tile lattice (so exact corner ties, grid-aligned edges and
-// contacts on many tiles at once are common) or at arbitrary values, in float or double.
+// The mover scenes: random scenes for the game-loop and batch tests (tests/mover_test.cpp,
+// tests/batch_test.cpp), small maps with full floors and walls mixed in, boxes and moves on a
+// quarter-tile lattice (so exact corner ties, grid-aligned edges and contacts on many tiles at
+// once are common) or at arbitrary values, in float or double; and Level, a map written as rows
+// of '#' and '.'. Plain std::mt19937_64, no RapidCheck: target tilesweep::mover_scenes needs
+// only the library.
 
 #include "tilesweep/math.h"
 #include "tilesweep/tile_map.h"
 
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <random>
 #include <string>
 #include <vector>
 
-namespace tilesweep::test {
-
-/// Cases per property: TILESWEEP_PROPERTY_CASES when set, else `fallback`.
-inline std::uint64_t propertyCases(std::uint64_t fallback) {
-    if (const char* env = std::getenv("TILESWEEP_PROPERTY_CASES")) {
-        const long long n = std::atoll(env);
-        if (n > 0) return static_cast<std::uint64_t>(n);
-    }
-    return fallback;
-}
+namespace tilesweep::scenarios {
 
 /// A map from rows of '#' and '.', owning its cells.
 template <class T>
@@ -157,4 +150,4 @@ RandomScene<T> randomScene(std::mt19937_64& rng) {
     return s;
 }
 
-}  // namespace tilesweep::test
+}  // namespace tilesweep::scenarios

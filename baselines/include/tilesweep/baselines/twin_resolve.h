@@ -30,12 +30,38 @@
 // next frame then lets it walk out. No validation: the input is assumed valid (tilesweep's
 // resolveMove checks it every frame; a NaN here just propagates). No allocation.
 //
-// The frame loop and the tile test are shared with bench/grid_resolve.h (the swept-bounds
+// Lean, as a careful game developer writes it (issue 19, "Honest baselines"): a coordinate
+// becomes a cell index with one multiplication by the tile size's reciprocal, computed once per
+// map (TileReciprocal; the two-argument overload computes it once per frame), and a floor or
+// ceiling by truncation and a one-step correction, with no libm call. The reciprocal rounds, so
+// where the tile size is not a power of two a coordinate within an ulp or so of a tile edge may
+// land in the neighbouring cell's index; the ranges keep the touching cells at both ends, and
+// the slab test decides. resolveMoveTwinLibm keeps the first twin (std::floor and std::ceil of a
+// quotient per cell) for one benchmark row, so that what the libm calls cost stays visible.
+//
+// The frame loop and the tile test are shared with grid_resolve.h (the swept-bounds
 // variant); only the broadphase differs.
 
-namespace tilesweep::bench {
+namespace tilesweep::baselines {
+
+/// 1 / tile size per axis: what the lean twin multiplies by instead of dividing per cell.
+template <class T>
+struct TileReciprocal {
+    T x;
+    T y;
+};
+
+/// The reciprocal of `map`'s tile size, once per map (or per frame).
+template <class T>
+[[nodiscard]] inline TileReciprocal<T> reciprocalOf(const TileMapView<T>& map) noexcept {
+    return {T(1) / map.tileSize.x, T(1) / map.tileSize.y};
+}
 
 namespace detail {
+
+/// How a coordinate becomes a cell index: the lean way (a multiplication by the reciprocal and
+/// a floor by truncation), or the first twin's (std::floor and std::ceil of a quotient).
+enum class CellIndexing { Lean, Libm };
 
 /// The times at which a box's projection on one axis overlaps a tile's: the open interval
 /// (entry, exit); all times when `ever` and the axis does not move; none when !ever.
@@ -56,7 +82,7 @@ template <class T>
 }
 
 /// One step's geometry, per axis (0 = x, 1 = y), computed once per step.
-template <class T>
+template <class T, CellIndexing I = CellIndexing::Lean>
 struct StepFrame {
     T lo[2];                ///< box min edge at the step's start
     T hi[2];                ///< box max edge at the step's start (lo + size, rounded)
@@ -64,23 +90,44 @@ struct StepFrame {
     T origin[2];            ///< map origin
     T tile[2];              ///< tile size
     std::int64_t cells[2];  ///< columns, rows
+    T inverseTile[2];       ///< 1 / tile, rounded (the lean indexing's)
 
     /// floor((v - origin) / tile), clamped to [-1, cells]: the cell holding v on axis a.
     [[nodiscard]] std::int64_t cellOf(int a, T v) const noexcept {
-        const T q = std::floor((v - origin[a]) / tile[a]);
-        if (!(q > T(-1))) return -1;
-        if (q >= static_cast<T>(cells[a])) return cells[a];
-        return static_cast<std::int64_t>(q);
+        if constexpr (I == CellIndexing::Libm) {
+            const T q = std::floor((v - origin[a]) / tile[a]);
+            if (!(q > T(-1))) return -1;
+            if (q >= static_cast<T>(cells[a])) return cells[a];
+            return static_cast<std::int64_t>(q);
+        } else {
+            const T q = (v - origin[a]) * inverseTile[a];
+            if (!(q > T(-1))) return -1;
+            if (q >= static_cast<T>(cells[a])) return cells[a];
+            // q in (-1, cells), so the conversion is defined; it truncates toward zero, one
+            // above the floor for a negative q that is not a whole number.
+            const auto k = static_cast<std::int64_t>(q);
+            return static_cast<T>(k) > q ? k - 1 : k;
+        }
     }
     /// ceil((v - origin) / tile) - 1, clamped likewise: the lowest cell that v lies in or
     /// touches from above. Used for the low end of a range whose bound is a rounded sum: the
     /// rounding can land such a bound on a tile edge (edges are representable) but not carry it
     /// over, so a range that keeps the touching cells at both ends loses no tile to it.
     [[nodiscard]] std::int64_t cellBefore(int a, T v) const noexcept {
-        const T q = std::ceil((v - origin[a]) / tile[a]) - T(1);
-        if (!(q > T(-1))) return -1;
-        if (q >= static_cast<T>(cells[a])) return cells[a];
-        return static_cast<std::int64_t>(q);
+        if constexpr (I == CellIndexing::Libm) {
+            const T q = std::ceil((v - origin[a]) / tile[a]) - T(1);
+            if (!(q > T(-1))) return -1;
+            if (q >= static_cast<T>(cells[a])) return cells[a];
+            return static_cast<std::int64_t>(q);
+        } else {
+            // ceil(q) - 1 > -1 exactly when q > 0, and ceil(q) - 1 >= cells when q > cells.
+            const T q = (v - origin[a]) * inverseTile[a];
+            if (!(q > T(0))) return -1;
+            if (q > static_cast<T>(cells[a])) return cells[a];
+            // q in (0, cells]: truncation is the floor, and the ceiling one more unless q is whole.
+            const auto k = static_cast<std::int64_t>(q);
+            return static_cast<T>(k) < q ? k : k - 1;
+        }
     }
     [[nodiscard]] T edge(int a, std::int64_t k) const noexcept {
         return origin[a] + static_cast<T>(k) * tile[a];
@@ -116,8 +163,8 @@ struct StepHits {
 };
 
 /// Tests solid tile (i, j) against the step and records a hit. The slab method; see the header.
-template <class T>
-inline void testTile(const TileMapView<T>& map, const StepFrame<T>& f, std::int64_t i, std::int64_t j,
+template <class T, CellIndexing I>
+inline void testTile(const TileMapView<T>& map, const StepFrame<T, I>& f, std::int64_t i, std::int64_t j,
                      StepHits<T>& hits) noexcept {
     const T x0 = f.edge(0, i), x1 = f.edge(0, i + 1);
     const T y0 = f.edge(1, j), y1 = f.edge(1, j + 1);
@@ -152,8 +199,8 @@ inline void testTile(const TileMapView<T>& map, const StepFrame<T>& f, std::int6
 }
 
 /// Solid cells the box overlaps (open) at the frame's start, by row then column.
-template <class T>
-inline std::int32_t listStartOverlaps(const TileMapView<T>& map, const StepFrame<T>& f, Cell* store,
+template <class T, CellIndexing I>
+inline std::int32_t listStartOverlaps(const TileMapView<T>& map, const StepFrame<T, I>& f, Cell* store,
                                       std::int32_t capacity) noexcept {
     const std::int64_t i0 = std::max<std::int64_t>(f.cellOf(0, f.lo[0]), 0);
     const std::int64_t i1 = std::min<std::int64_t>(f.cellOf(0, f.hi[0]), f.cells[0] - 1);
@@ -173,14 +220,17 @@ inline std::int32_t listStartOverlaps(const TileMapView<T>& map, const StepFrame
 }
 
 /// The frame loop (at most two steps), with the broadphase `findHits(map, frame, hits)`.
-template <class T, class FindHits>
+template <class T, CellIndexing I, class FindHits>
 [[nodiscard]] inline SweepResult<T> resolveFrame(const SweepInput<T>& in, const ResolveOutput<T>& out,
-                                                 FindHits findHits) noexcept {
+                                                 TileReciprocal<T> reciprocal, FindHits findHits) noexcept {
     const TileMapView<T>& map = in.map;
-    StepFrame<T> f{
-        {in.box.pos.x, in.box.pos.y},           {in.box.pos.x + in.box.size.x, in.box.pos.y + in.box.size.y},
-        {in.displacement.x, in.displacement.y}, {map.origin.x, map.origin.y},
-        {map.tileSize.x, map.tileSize.y},       {map.columns, map.rows}};
+    StepFrame<T, I> f{{in.box.pos.x, in.box.pos.y},
+                      {in.box.pos.x + in.box.size.x, in.box.pos.y + in.box.size.y},
+                      {in.displacement.x, in.displacement.y},
+                      {map.origin.x, map.origin.y},
+                      {map.tileSize.x, map.tileSize.y},
+                      {map.columns, map.rows},
+                      {reciprocal.x, reciprocal.y}};
     const T size[2] = {in.box.size.x, in.box.size.y};
     SweepResult<T> result;
     result.status = Status::Moved;
@@ -231,59 +281,80 @@ template <class T, class FindHits>
 }
 
 /// The twin's broadphase: cells in path order along the primary axis, with the early exit.
-template <class T>
-inline void findHitsInPathOrder(const TileMapView<T>& map, const StepFrame<T>& f,
-                                StepHits<T>& hits) noexcept {
-    // Primary: the axis whose motion crosses more cells, |r_x| / tile_x >= |r_y| / tile_y.
-    const int p = std::abs(f.r[0]) * f.tile[1] >= std::abs(f.r[1]) * f.tile[0] ? 0 : 1;
-    const int s = 1 - p;
-    const T rp = f.r[p];
-    const bool forward = rp > T(0);
-    // From the cell holding the trailing edge to the one holding the leading edge at the end.
-    std::int64_t k = forward ? f.cellBefore(p, f.lo[p]) : f.cellOf(p, f.hi[p]);
-    std::int64_t last = forward ? f.cellOf(p, f.hi[p] + rp) : f.cellBefore(p, f.lo[p] + rp);
-    const std::int64_t dir = forward ? 1 : -1;
-    if (forward) {
-        k = std::max<std::int64_t>(k, 0);
-        last = std::min<std::int64_t>(last, f.cells[p] - 1);
-    } else {
-        k = std::min<std::int64_t>(k, f.cells[p] - 1);
-        last = std::max<std::int64_t>(last, 0);
-    }
-    for (; forward ? k <= last : k >= last; k += dir) {
-        const T lo = f.edge(p, k);
-        const T hi = f.edge(p, k + 1);
-        // The box is inside this primary cell for t in (enter, leave), clamped to [0, 1].
-        T enter = forward ? (lo - f.hi[p]) / rp : (hi - f.lo[p]) / rp;
-        T leave = forward ? (hi - f.lo[p]) / rp : (lo - f.hi[p]) / rp;
-        enter = std::max(enter, T(0));
-        leave = std::min(leave, T(1));
-        if (enter >= T(1)) break;
-        if (hits.any && enter > hits.time) break;  // later than the earliest hit: done
-        // The secondary span over that window.
-        const T a = f.r[s] * enter;
-        const T b = f.r[s] * leave;
-        const std::int64_t j0 = std::max<std::int64_t>(f.cellBefore(s, f.lo[s] + std::min(a, b)), 0);
-        const std::int64_t j1 = std::min<std::int64_t>(f.cellOf(s, f.hi[s] + std::max(a, b)), f.cells[s] - 1);
-        for (std::int64_t j = j0; j <= j1; ++j) {
-            const std::int64_t ci = p == 0 ? k : j;
-            const std::int64_t cj = p == 0 ? j : k;
-            if (map.isSolid(ci, cj)) testTile(map, f, ci, cj, hits);
+struct FindHitsInPathOrder {
+    template <class T, CellIndexing I>
+    void operator()(const TileMapView<T>& map, const StepFrame<T, I>& f, StepHits<T>& hits) const noexcept {
+        // Primary: the axis whose motion crosses more cells, |r_x| / tile_x >= |r_y| / tile_y.
+        const int p = std::abs(f.r[0]) * f.tile[1] >= std::abs(f.r[1]) * f.tile[0] ? 0 : 1;
+        const int s = 1 - p;
+        const T rp = f.r[p];
+        const bool forward = rp > T(0);
+        // From the cell holding the trailing edge to the one holding the leading edge at the end.
+        std::int64_t k = forward ? f.cellBefore(p, f.lo[p]) : f.cellOf(p, f.hi[p]);
+        std::int64_t last = forward ? f.cellOf(p, f.hi[p] + rp) : f.cellBefore(p, f.lo[p] + rp);
+        const std::int64_t dir = forward ? 1 : -1;
+        if (forward) {
+            k = std::max<std::int64_t>(k, 0);
+            last = std::min<std::int64_t>(last, f.cells[p] - 1);
+        } else {
+            k = std::min<std::int64_t>(k, f.cells[p] - 1);
+            last = std::max<std::int64_t>(last, 0);
+        }
+        for (; forward ? k <= last : k >= last; k += dir) {
+            const T lo = f.edge(p, k);
+            const T hi = f.edge(p, k + 1);
+            // The box is inside this primary cell for t in (enter, leave), clamped to [0, 1].
+            T enter = forward ? (lo - f.hi[p]) / rp : (hi - f.lo[p]) / rp;
+            T leave = forward ? (hi - f.lo[p]) / rp : (lo - f.hi[p]) / rp;
+            enter = std::max(enter, T(0));
+            leave = std::min(leave, T(1));
+            if (enter >= T(1)) break;
+            if (hits.any && enter > hits.time) break;  // later than the earliest hit: done
+            // The secondary span over that window.
+            const T a = f.r[s] * enter;
+            const T b = f.r[s] * leave;
+            const std::int64_t j0 = std::max<std::int64_t>(f.cellBefore(s, f.lo[s] + std::min(a, b)), 0);
+            const std::int64_t j1 =
+                std::min<std::int64_t>(f.cellOf(s, f.hi[s] + std::max(a, b)), f.cells[s] - 1);
+            for (std::int64_t j = j0; j <= j1; ++j) {
+                const std::int64_t ci = p == 0 ? k : j;
+                const std::int64_t cj = p == 0 ? j : k;
+                if (map.isSolid(ci, cj)) testTile(map, f, ci, cj, hits);
+            }
         }
     }
-}
+};
 
 }  // namespace detail
 
-/// Resolves one frame the inexact way (see the header comment): same signature shape as
-/// tilesweep::resolveMove, so it can be swapped in. Contacts step by step, within a step by row
-/// then column; a count above capacity means truncated. Input assumed valid.
+/// Resolves one frame the inexact way (see the header comment), with the reciprocal of the
+/// map's tile size computed once per map by the caller (reciprocalOf). Contacts step by step,
+/// within a step by row then column; a count above capacity means truncated. Input assumed valid.
+template <class T>
+[[nodiscard]] inline SweepResult<T> resolveMoveTwin(const SweepInput<T>& input,
+                                                    const ResolveOutput<T>& output,
+                                                    TileReciprocal<T> reciprocal) noexcept {
+    return detail::resolveFrame<T, detail::CellIndexing::Lean>(input, output, reciprocal,
+                                                               detail::FindHitsInPathOrder{});
+}
+
+/// As above, the reciprocal computed for this frame: the same signature shape as
+/// tilesweep::resolveMove, so it can be swapped in.
 template <class T>
 [[nodiscard]] inline SweepResult<T> resolveMoveTwin(const SweepInput<T>& input,
                                                     const ResolveOutput<T>& output) noexcept {
-    return detail::resolveFrame(input, output,
-                                [](const TileMapView<T>& map, const detail::StepFrame<T>& f,
-                                   detail::StepHits<T>& hits) { detail::findHitsInPathOrder(map, f, hits); });
+    return resolveMoveTwin(input, output, reciprocalOf(input.map));
 }
 
-}  // namespace tilesweep::bench
+/// The first twin, kept for one benchmark row (BM_TwinLibm_*): the same frame, with every cell
+/// index a std::floor or std::ceil of a quotient by the tile size (a division and a libm call
+/// per cell on the x86-64 baseline). It decides as resolveMoveTwin does wherever the tile size
+/// is a power of two.
+template <class T>
+[[nodiscard]] inline SweepResult<T> resolveMoveTwinLibm(const SweepInput<T>& input,
+                                                        const ResolveOutput<T>& output) noexcept {
+    return detail::resolveFrame<T, detail::CellIndexing::Libm>(input, output, TileReciprocal<T>{T(0), T(0)},
+                                                               detail::FindHitsInPathOrder{});
+}
+
+}  // namespace tilesweep::baselines

@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: MIT
+// The metamorphic claims (claims.h): a scene changed in a way whose effect is known (every move
+// zero, every length times 8, mirrored, translated by whole tiles) changes the result just so.
+#include "claim_support.h"
+#include "claims.h"
+
+#include <cmath>
+#include <cstdint>
+
+namespace tilesweep::properties {
+
+using namespace claim_support;
+
+/// A frame whose move is zero changes nothing and touches nothing, and reports as start overlaps
+/// exactly the solid tiles the box overlaps (checked apart from the resolver). The scene's box
+/// rarely starts inside a tile, so the claim also places it a quarter tile into the first solid
+/// tile of the map and asks the same there; both scenes go to the resolver in one call.
+template <class T>
+std::string zeroMoveChangedNothing(const Scene<T>& scene, const std::vector<FrameResult<T>>& frames) {
+    std::vector<Cell> overlapping;
+    checks::listOverlaps(scene.map.view(), checks::computeEdges(scene.map.view()), scene.box.pos,
+                         scene.box.size, overlapping);
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+        if (!sameBits(frames[f].position.x, scene.box.pos.x) ||
+            !sameBits(frames[f].position.y, scene.box.pos.y))
+            return "frame " + std::to_string(f) + ": a zero move changed the position";
+        if (!frames[f].contacts.empty())
+            return "frame " + std::to_string(f) + ": a zero move reported a contact";
+        if (frames[f].startOverlaps.size() != overlapping.size() ||
+            !std::equal(overlapping.begin(), overlapping.end(), frames[f].startOverlaps.begin()))
+            return "frame " + std::to_string(f) + ": start overlaps differ from the tiles the box overlaps";
+    }
+    return {};
+}
+
+/// The scene with every move replaced by (0, 0).
+template <class T>
+Scene<T> stillScene(Scene<T> scene) {
+    for (auto& m : scene.moves) m = {0, 0};
+    return scene;
+}
+
+template <class T>
+std::string zeroMoveChangesNothing(const Scene<T>& scene) {
+    const Scene<T> still = stillScene(scene);
+    const auto first = std::find(scene.map.solid.begin(), scene.map.solid.end(), std::uint8_t{1});
+    Scene<T> inside = still;
+    bool hasInside = first != scene.map.solid.end();
+    if (hasInside) {
+        const auto index = static_cast<std::int32_t>(first - scene.map.solid.begin());
+        const T i = static_cast<T>(index % scene.map.columns);
+        const T j = static_cast<T>(index / scene.map.columns);
+        inside.box.pos = {scene.map.origin.x + (i + T(0.25)) * scene.map.tileSize.x,
+                          scene.map.origin.y + (j + T(0.25)) * scene.map.tileSize.y};
+        hasInside = std::isfinite(inside.box.pos.x) && std::isfinite(inside.box.pos.y);
+    }
+    if (!hasInside) return zeroMoveChangedNothing(still, resolveUnderTest(still));
+    const std::vector<std::vector<FrameResult<T>>> both = resolveUnderTest(still, inside);
+    if (std::string why = zeroMoveChangedNothing(still, both[0]); !why.empty()) return why;
+    if (std::string why = zeroMoveChangedNothing(inside, both[1]); !why.empty())
+        return "inside a solid tile: " + why;
+    return {};
+}
+
+/// Multiplying every length of the scene by 8 multiplies every position by 8 and leaves every
+/// decision and time unchanged, bit for bit (scaling by a power of two is exact, and so is
+/// every rounding after it, away from overflow and subnormals).
+template <class T>
+std::string scalingByPowerOfTwoScalesTheResult(const Scene<T>& scene) {
+    constexpr T kScale = 8;
+    Scene<T> big = scene;
+    const auto scale = [](Vec2<T>& v) { v = {v.x * kScale, v.y * kScale}; };
+    scale(big.map.origin);
+    scale(big.map.tileSize);
+    scale(big.box.pos);
+    scale(big.box.size);
+    for (auto& m : big.moves) scale(m);
+    // Away from overflow only: a scaled value that is no longer finite makes another scene.
+    bool finite = std::isfinite(big.map.origin.x) && std::isfinite(big.map.origin.y) &&
+                  std::isfinite(big.map.tileSize.x) && std::isfinite(big.map.tileSize.y) &&
+                  std::isfinite(big.box.pos.x) && std::isfinite(big.box.pos.y) &&
+                  std::isfinite(big.box.size.x) && std::isfinite(big.box.size.y);
+    for (const auto& m : big.moves) finite = finite && std::isfinite(m.x) && std::isfinite(m.y);
+    if (!finite || validateTileMap(big.map.view()) != MapError::None) return {};
+    std::vector<std::vector<FrameResult<T>>> both = resolveUnderTest(scene, big);
+    std::vector<FrameResult<T>>& expected = both[0];
+    for (auto& f : expected) f.position = {f.position.x * kScale, f.position.y * kScale};
+    return diffFrames(both[1], expected);
+}
+
+/// Mirroring the scene about x = 0 (or y = 0) mirrors every decision: the same tiles (mirrored),
+/// normals flipped on that axis, the same times, and the other axis's position unchanged.
+template <class T, Axis kAxis>
+std::string mirroringMirrorsTheResult(const Scene<T>& scene) {
+    const bool onX = kAxis == Axis::X;
+    const T pos = onX ? scene.box.pos.x : scene.box.pos.y;
+    const T size = onX ? scene.box.size.x : scene.box.size.y;
+    const T mirroredPos = -(pos + size);
+    if (oracle::toRational(mirroredPos) != -(oracle::toRational(pos) + oracle::toRational(size)))
+        return {};  // not exact: no claim
+    Scene<T> m = scene;
+    const std::int32_t count = onX ? scene.map.columns : scene.map.rows;
+    const T origin = onX ? scene.map.origin.x : scene.map.origin.y;
+    const T tile = onX ? scene.map.tileSize.x : scene.map.tileSize.y;
+    const T far = -(origin + static_cast<T>(count) * tile);  // an edge of the map: representable
+    if (onX) {
+        m.map.origin.x = far;
+        m.box.pos.x = mirroredPos;
+        for (auto& mv : m.moves) mv.x = -mv.x;
+    } else {
+        m.map.origin.y = far;
+        m.box.pos.y = mirroredPos;
+        for (auto& mv : m.moves) mv.y = -mv.y;
+    }
+    for (std::int32_t j = 0; j < scene.map.rows; ++j)
+        for (std::int32_t i = 0; i < scene.map.columns; ++i) {
+            const std::int32_t mi = onX ? scene.map.columns - 1 - i : i;
+            const std::int32_t mj = onX ? j : scene.map.rows - 1 - j;
+            m.map.solid[static_cast<std::size_t>(mj * scene.map.columns + mi)] =
+                scene.map.solid[static_cast<std::size_t>(j * scene.map.columns + i)];
+        }
+    std::vector<std::vector<FrameResult<T>>> both = resolveUnderTest(scene, m);
+    std::vector<FrameResult<T>>& expected = both[0];
+    for (auto& f : expected) {
+        for (auto& c : f.contacts) {
+            if (onX) {
+                c.tile.i = scene.map.columns - 1 - c.tile.i;
+                c.normal.x = static_cast<std::int8_t>(-c.normal.x);
+            } else {
+                c.tile.j = scene.map.rows - 1 - c.tile.j;
+                c.normal.y = static_cast<std::int8_t>(-c.normal.y);
+            }
+        }
+        for (auto& c : f.startOverlaps)
+            (onX ? c.i : c.j) = (onX ? scene.map.columns - 1 - c.i : scene.map.rows - 1 - c.j);
+    }
+    // The mirrored axis's position is rounded toward the mirrored start, which is a different
+    // rounding of a different sum: only the other axis is compared bit for bit. Frames after the
+    // first start from those roundings, so only the first frame is compared.
+    Compare what;
+    what.positionX = !onX;
+    what.positionY = onX;
+    what.orderWithinTime = false;
+    std::vector<FrameResult<T>>& got = both[1];
+    got.resize(1);
+    expected.resize(1);
+    return diffFrames(got, expected, what);
+}
+
+/// Moving the map and the box by three whole tiles on each axis keeps every decision and time
+/// (when the translated values are exact; otherwise the scenes differ and nothing is claimed).
+template <class T>
+std::string translatingByWholeTilesKeepsDecisions(const Scene<T>& scene) {
+    Scene<T> moved = scene;
+    const auto shift = [](T v, T by, T& out) {
+        out = v + by;
+        return oracle::toRational(out) == oracle::toRational(v) + oracle::toRational(by);
+    };
+    const T bx = 3 * scene.map.tileSize.x;
+    const T by = 3 * scene.map.tileSize.y;
+    if (!shift(scene.map.origin.x, bx, moved.map.origin.x) ||
+        !shift(scene.map.origin.y, by, moved.map.origin.y) || !shift(scene.box.pos.x, bx, moved.box.pos.x) ||
+        !shift(scene.box.pos.y, by, moved.box.pos.y))
+        return {};
+    if (validateTileMap(moved.map.view()) != MapError::None) return {};
+    Compare what;
+    what.positionX = what.positionY = false;
+    std::vector<std::vector<FrameResult<T>>> both = resolveUnderTest(moved, scene);
+    std::vector<FrameResult<T>>& got = both[0];
+    std::vector<FrameResult<T>>& expected = both[1];
+    got.resize(1);  // later frames start from rounded positions that may differ
+    expected.resize(1);
+    return diffFrames(got, expected, what);
+}
+
+template std::string zeroMoveChangesNothing<float>(const Scene<float>&);
+template std::string zeroMoveChangesNothing<double>(const Scene<double>&);
+template std::string scalingByPowerOfTwoScalesTheResult<float>(const Scene<float>&);
+template std::string scalingByPowerOfTwoScalesTheResult<double>(const Scene<double>&);
+template std::string translatingByWholeTilesKeepsDecisions<float>(const Scene<float>&);
+template std::string translatingByWholeTilesKeepsDecisions<double>(const Scene<double>&);
+template std::string mirroringMirrorsTheResult<float, Axis::X>(const Scene<float>&);
+template std::string mirroringMirrorsTheResult<float, Axis::Y>(const Scene<float>&);
+template std::string mirroringMirrorsTheResult<double, Axis::X>(const Scene<double>&);
+template std::string mirroringMirrorsTheResult<double, Axis::Y>(const Scene<double>&);
+
+}  // namespace tilesweep::properties

@@ -1,0 +1,225 @@
+// SPDX-License-Identifier: MIT
+// The coverage tags of a scene (scene_checks.h, classifyScene): what its exact resolution and the
+// resolver's decision path say it reaches, for RC_CLASSIFY and the coverage floors.
+#include "oracle/exact/exact_geometry.h"
+#include "oracle/exact/exact_resolve.h"
+#include "oracle/exact/exact_sweep.h"
+#include "oracle/exact/rational_convert.h"
+#include "scene_checks.h"
+
+#include "tilesweep/mover.h"
+#include "tilesweep/resolve.h"
+#include "tilesweep/scenarios/scene_pieces.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace tilesweep::properties {
+
+using oracle::Rational;
+
+namespace {
+
+/// Whether the contract's rounding rule rounded some axis down, where rounding toward the start
+/// would have carried the far edge over a grid line: the two roundings differ.
+template <class T>
+bool roundedDown(const oracle::ExactFrame& f) {
+    const FrameResult<T> rounded = oracle::roundFrame<T>(f);
+    const T startX = oracle::fromRational<T>(f.start.x, oracle::Rounding::NearestEven);
+    const T startY = oracle::fromRational<T>(f.start.y, oracle::Rounding::NearestEven);
+    return rounded.position.x != oracle::roundToward<T>(f.position.x, startX) ||
+           rounded.position.y != oracle::roundToward<T>(f.position.y, startY);
+}
+
+/// Whether an exact time lies exactly halfway between two neighbouring T values (the
+/// ties-to-even case of the frame times' rounding).
+template <class T>
+bool halfwayBetweenValues(const Rational& t) {
+    const T below = oracle::fromRational<T>(t, oracle::Rounding::TowardNegative);
+    const T above = oracle::fromRational<T>(t, oracle::Rounding::TowardPositive);
+    return below != above && (oracle::toRational(below) + oracle::toRational(above)) / 2 == t;
+}
+
+/// Whether, in the first step of some frame with both axes moving, a solid tile is first
+/// reached at exactly t = 1 (which the contract does not count as a hit).
+template <class T>
+bool reachesATileAtTheEnd(const Scene<T>& scene, const std::vector<oracle::ExactFrame>& frames) {
+    const oracle::ExactTileMap map = oracle::toExact(scene.map);
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+        const oracle::ExactVec2 d = oracle::toExact(scene.moves[f]);
+        if (d.x == 0 || d.y == 0) continue;
+        for (std::int32_t j = 0; j < map.rows; ++j)
+            for (std::int32_t i = 0; i < map.columns; ++i) {
+                if (!map.isSolid(i, j)) continue;
+                const oracle::ExactSweepOutput sweep =
+                    oracle::sweepTileExact({{frames[f].start, frames[f].size}, d, map.tileRect(i, j)});
+                if (!sweep.overlap.empty && sweep.overlap.low.isFinite() && sweep.overlap.low.value == 1)
+                    return true;
+            }
+    }
+    return false;
+}
+
+/// The bits between the finest set bit and the largest magnitude among a scene's inputs: what
+/// sets the width of the resolver's integers (above about 60 it needs more than 128 bits for
+/// products; above about 92, more than 192).
+template <class T>
+int latticeSpan(const Scene<T>& scene) {
+    int lowest = std::numeric_limits<int>::max();
+    int highest = std::numeric_limits<int>::min();
+    const auto note = [&](T v) {
+        if (v == 0) return;
+        int e = 0;
+        const T fraction = std::frexp(v, &e);
+        auto m = static_cast<std::int64_t>(std::ldexp(fraction, std::numeric_limits<T>::digits));
+        int low = e - std::numeric_limits<T>::digits;
+        while (m % 2 == 0) {
+            m /= 2;
+            ++low;
+        }
+        lowest = std::min(lowest, low);
+        highest = std::max(highest, e);
+    };
+    scenarios::forEachSceneValue(scene, note);
+    return highest >= lowest ? highest - lowest : 0;
+}
+
+/// The least frexp exponent of a scene's nonzero inputs (a large number when all are zero).
+template <class T>
+int smallestInputExponent(const Scene<T>& scene) {
+    int lowest = std::numeric_limits<int>::max();
+    const auto note = [&lowest](T v) {
+        if (v == 0 || !std::isfinite(v)) return;
+        int e = 0;
+        (void)std::frexp(v, &e);
+        lowest = std::min(lowest, e);
+    };
+    scenarios::forEachSceneValue(scene, note);
+    return lowest;
+}
+
+/// The most significant bits any input of the scene needs (its significand without trailing zeros).
+template <class T>
+int widestSignificand(const Scene<T>& scene) {
+    int widest = 0;
+    const auto note = [&widest](T v) {
+        if (v == 0 || !std::isfinite(v)) return;
+        int e = 0;
+        auto m = static_cast<std::int64_t>(
+            std::ldexp(std::frexp(std::fabs(v), &e), std::numeric_limits<T>::digits));
+        int bits = std::numeric_limits<T>::digits;
+        while (m % 2 == 0) {
+            m /= 2;
+            --bits;
+        }
+        widest = std::max(widest, bits);
+    };
+    scenarios::forEachSceneValue(scene, note);
+    return widest;
+}
+
+/// The path that decided the scene's frames (tilesweep/frame_stats.h): "exact" when any frame fell
+/// back to the lattice, else "filtered" when any predicate needed the exact refinement, else "fast".
+template <class T>
+const char* decisionPathOf(const Scene<T>& scene) {
+    DecisionPath worst = DecisionPath::Fast;
+    Vec2<T> start = scene.box.pos;
+    std::vector<Contact<T>> contacts(64);
+    std::vector<Cell> overlaps(64);
+    for (const Vec2<T>& move : scene.moves) {
+        FrameStats stats;
+        const SweepResult<T> r = resolveMove<T>({scene.map.view(), {start, scene.box.size}, move},
+                                                {contacts.data(), 64, overlaps.data(), 64, &stats});
+        const DecisionPath path = stats.path;
+        if (static_cast<int>(path) > static_cast<int>(worst)) worst = path;
+        start = r.position;
+    }
+    return worst == DecisionPath::Fast ? "fast" : (worst == DecisionPath::Filtered ? "filtered" : "exact");
+}
+
+}  // namespace
+
+template <class T>
+std::vector<std::string> classifyScene(const Scene<T>& scene) {
+    std::vector<std::string> tags;
+    const auto frames = oracle::resolveSceneExact(scene);
+    bool hit = false;
+    bool tie = false;
+    bool touch0 = false;
+    bool twoStep = false;
+    bool seam = false;
+    bool startOverlap = false;
+    bool down = false;
+    bool timeTie = false;
+    for (const auto& f : frames) {
+        hit = hit || !f.contacts.empty();
+        startOverlap = startOverlap || !f.startOverlaps.empty();
+        down = down || roundedDown<T>(f);
+        for (std::size_t k = 0; k < f.contacts.size(); ++k) {
+            const auto& c = f.contacts[k];
+            tie = tie || c.tie;
+            touch0 = touch0 || c.time == 0;
+            twoStep = twoStep || c.step == 2;
+            timeTie = timeTie || halfwayBetweenValues<T>(c.time);
+            if (k > 0 && f.contacts[k - 1].step == c.step && f.contacts[k - 1].normal == c.normal)
+                seam = true;
+        }
+    }
+    tags.push_back(hit ? "hit" : "miss");
+    if (down) tags.push_back("rounded-down");
+    if (tie) tags.push_back("tie");
+    if (timeTie) tags.push_back("time-tie");
+    if (reachesATileAtTheEnd(scene, frames)) tags.push_back("reaches-at-end");
+    if (touch0) tags.push_back("touch-at-0");
+    if (twoStep) tags.push_back("two-step");
+    if (seam) tags.push_back("seam");
+    if (startOverlap) tags.push_back("start-overlap");
+    if (std::find(scene.map.solid.begin(), scene.map.solid.end(), std::uint8_t{1}) == scene.map.solid.end())
+        tags.push_back("empty-map");
+    const T huge = std::ldexp(T(1), 40);
+    if (std::any_of(scene.moves.begin(), scene.moves.end(),
+                    [huge](Vec2<T> m) { return std::fabs(m.x) >= huge || std::fabs(m.y) >= huge; }))
+        tags.push_back("huge-move");
+    const int span = latticeSpan(scene);
+    if (span > 60) tags.push_back("lattice-wide");
+    if (span > 92) tags.push_back("lattice-192");
+    if (std::fabs(scene.map.origin.x) >= T(1048576) || std::fabs(scene.map.origin.y) >= T(1048576))
+        tags.push_back("far-origin");
+    const std::string path = decisionPathOf(scene);
+    tags.push_back("path:" + path);
+    if (path != "fast") tags.push_back("fallback");
+    // A near tie its refinement settled: no exact tie, yet the filter could not decide alone.
+    if (path == "filtered" && !tie && hit) tags.push_back("near-tie-refined");
+    // Code only double frames reach: a refinement on inputs of more than 27 significant bits,
+    // where TwoProduct's split leaves both low halves nonzero (productError's aLow * bLow term)
+    // and contact times are exact pairs rounded by roundTimeToDouble's remainder test.
+    if (std::is_same<T, double>::value && path == "filtered" && widestSignificand(scene) > 27)
+        tags.push_back("full-precision-refined");
+    // The tiny end of the range: some nonzero input below 2^-500 (double) or 2^-100 (float),
+    // where a product of two inputs would underflow a double (or come near it).
+    if (smallestInputExponent(scene) < (std::is_same<T, float>::value ? -100 : -500)) tags.push_back("tiny");
+    // Capacity boundaries (mover.h): the contact bound at the inline limit, or past it (the wide
+    // path), and frames with many contacts (an exact count the buffers are sized to).
+    const std::int32_t bound = maxContacts(scene.box.size, scene.map.tileSize);
+    if (bound == kInlineContacts) tags.push_back("bound-inline-limit");
+    if (bound > kInlineContacts && bound <= kInlineContacts + 2) tags.push_back("bound-wide");
+    std::size_t most = 0;
+    for (const auto& f : frames) most = std::max(most, f.contacts.size());
+    if (most >= 16) tags.push_back("many-contacts");
+    // The C error claim's unrepresentable-edge causes need tile * 2^(digits + 2) finite.
+    constexpr int digits = std::numeric_limits<T>::digits;
+    if (std::isfinite(std::ldexp(scene.map.tileSize.x, digits + 2)) &&
+        std::isfinite(std::ldexp(scene.map.tileSize.y, digits + 2)))
+        tags.push_back("edge-causes-built");
+    return tags;
+}
+
+template std::vector<std::string> classifyScene<float>(const Scene<float>&);
+template std::vector<std::string> classifyScene<double>(const Scene<double>&);
+
+}  // namespace tilesweep::properties

@@ -1,0 +1,154 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+// The parameterised pieces every family is built from (families.h): a grid of cells, tile sizes,
+// origins near and far, lengths and displacements on the tile/8 grid, a scene from them, the
+// cells under a box cleared, one-ulp nudges, the axes swapped. RapidCheck generators, so a
+// failing scene shrinks on clean values; every function inline (RapidCheck's example
+// Generators.h is an ODR trap otherwise).
+
+#include "tilesweep/scenarios/family.h"
+#include "tilesweep/scene/scene.h"
+
+#include <rapidcheck.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+namespace tilesweep::scenarios {
+
+/// Calls `f(v)` for every number of `scene` that is an input: the map's origin and tile size, the
+/// box's position and size, then every move, x before y.
+template <class T, class F>
+void forEachSceneValue(const Scene<T>& scene, F&& f) {
+    for (const Vec2<T>& v : {scene.map.origin, scene.map.tileSize, scene.box.pos, scene.box.size}) {
+        f(v.x);
+        f(v.y);
+    }
+    for (const Vec2<T>& m : scene.moves) {
+        f(m.x);
+        f(m.y);
+    }
+}
+
+}  // namespace tilesweep::scenarios
+
+namespace tilesweep::scenarios::detail {
+
+template <class T>
+struct Grid {
+    int columns = 0;
+    int rows = 0;
+    std::vector<std::uint8_t> solid;
+    void set(int i, int j, bool v) {
+        if (i >= 0 && j >= 0 && i < columns && j < rows)
+            solid[static_cast<std::size_t>(j * columns + i)] = v ? 1 : 0;
+    }
+    bool get(int i, int j) const {
+        return i >= 0 && j >= 0 && i < columns && j < rows &&
+               solid[static_cast<std::size_t>(j * columns + i)] != 0;
+    }
+};
+
+/// Tile sizes: powers of two and integers such as 12 or 24.
+inline rc::Gen<int> genTileSize() { return rc::gen::element(16, 8, 32, 12, 24, 16, 4); }
+
+/// A map origin: zero mostly, a few tiles off, or far away (up to 2^23 in float, 2^40 in
+/// double) where the ulp of a coordinate is large. Always a multiple of the tile size, so every
+/// edge is an integer and representable.
+template <class T>
+rc::Gen<double> genOrigin(int tile) {
+    const double far = std::is_same<T, float>::value ? 8388608.0 : 1099511627776.0;
+    return rc::gen::weightedOneOf<double>(
+        {{6, rc::gen::just(0.0)},
+         {2, rc::gen::map(rc::gen::inRange(-8, 9), [tile](int k) { return double(k * tile); })},
+         {2, rc::gen::map(rc::gen::inRange(-2, 3), [far, tile](int k) {
+              return k * far + (k < 0 ? -8.0 : 8.0) * tile;  // stays a multiple of tile
+          })}});
+}
+
+/// A length on the grid tile/8, from a fraction of a tile to `maxTiles` tiles; sometimes a
+/// non-dyadic decimal such as 12.3 (rounded once to T).
+template <class T>
+rc::Gen<T> genLength(int tile, int maxEighths) {
+    return rc::gen::weightedOneOf<T>(
+        {{8, rc::gen::map(rc::gen::inRange(1, maxEighths + 1),
+                          [tile](int n) { return static_cast<T>(n * tile / 8.0); })},
+         {2, rc::gen::map(rc::gen::inRange(1, maxEighths * tile / 8 * 10 + 1),
+                          [](int n) { return static_cast<T>(n / 10.0); })}});
+}
+
+/// A displacement component: zero, below one ulp of `at`, on the tile/8 grid up to 100 tiles,
+/// or a decimal; either sign.
+template <class T>
+rc::Gen<T> genDisplacement(int tile, T at) {
+    const T ulp = std::nextafter(std::fabs(at), std::numeric_limits<T>::infinity()) - std::fabs(at);
+    return rc::gen::weightedOneOf<T>(
+        {{2, rc::gen::just(T(0))},
+         {1, rc::gen::map(rc::gen::inRange(-3, 4), [ulp](int n) { return static_cast<T>(n) * ulp / 4; })},
+         {6,
+          rc::gen::map(rc::gen::inRange(-64, 65), [tile](int n) { return static_cast<T>(n * tile / 8.0); })},
+         {2, rc::gen::map(rc::gen::inRange(-800, 801),
+                          [tile](int n) { return static_cast<T>(n * tile / 8.0); })},
+         {2, rc::gen::map(rc::gen::inRange(-3000, 3001), [](int n) { return static_cast<T>(n / 10.0); })}});
+}
+
+template <class T>
+Scene<T> makeScene(const Grid<T>& g, double ox, double oy, double tile, Box<T> box,
+                   std::vector<Vec2<T>> moves) {
+    Scene<T> s;
+    s.map.origin = {static_cast<T>(ox), static_cast<T>(oy)};
+    s.map.tileSize = {static_cast<T>(tile), static_cast<T>(tile)};
+    s.map.columns = g.columns;
+    s.map.rows = g.rows;
+    s.map.solid = g.solid;
+    s.box = box;
+    s.moves = std::move(moves);
+    return s;
+}
+
+/// Clears the cells the box overlaps (or touches) at its start, so it starts free.
+template <class T>
+void clearUnder(Grid<T>& g, double ox, double oy, double tile, Box<T> box) {
+    const double x0 = (static_cast<double>(box.pos.x) - ox) / tile;
+    const double y0 = (static_cast<double>(box.pos.y) - oy) / tile;
+    const double x1 = x0 + static_cast<double>(box.size.x) / tile;
+    const double y1 = y0 + static_cast<double>(box.size.y) / tile;
+    // Cell indices clamped to just outside the grid first: a box far beyond the map (the extreme
+    // family) would overflow an int.
+    const auto cell = [](double v, int cells) {
+        return static_cast<int>(std::max(-2.0, std::min(v, cells + 1.0)));
+    };
+    for (int j = cell(std::floor(y0) - 1, g.rows); j <= cell(std::floor(y1), g.rows); ++j)
+        for (int i = cell(std::floor(x0) - 1, g.columns); i <= cell(std::floor(x1), g.columns); ++i)
+            if (i + 1 > x0 && i < x1 && j + 1 > y0 && j < y1) g.set(i, j, false);
+}
+
+template <class T>
+T offGrid(T v, int direction) {
+    return std::nextafter(
+        v, direction > 0 ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity());
+}
+
+/// Swaps the axes of a scene: the same scene on y.
+template <class T>
+Scene<T> transposed(const Scene<T>& scene) {
+    Scene<T> t = scene;
+    std::swap(t.map.origin.x, t.map.origin.y);
+    std::swap(t.map.tileSize.x, t.map.tileSize.y);
+    std::swap(t.box.pos.x, t.box.pos.y);
+    std::swap(t.box.size.x, t.box.size.y);
+    for (Vec2<T>& m : t.moves) std::swap(m.x, m.y);
+    std::swap(t.map.columns, t.map.rows);
+    for (int j = 0; j < scene.map.rows; ++j)
+        for (int i = 0; i < scene.map.columns; ++i)
+            t.map.solid[static_cast<std::size_t>(i * t.map.columns + j)] =
+                scene.map.solid[static_cast<std::size_t>(j * scene.map.columns + i)];
+    return t;
+}
+
+}  // namespace tilesweep::scenarios::detail

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Instructions per frame for tilesweep, the lean twin and the lean grid on every side-by-side
+# scenario of the benchmarks, counted by callgrind (bench/frame_instructions.cpp): a measure
+# that the machine's load does not change. Prints a Markdown table, with the ratio of tilesweep
+# to the fewer of the two baselines.
+#
+#   bash scripts/instructions.sh [FRAMES [FILTER]]     # FRAMES per scenario (default 16384)
+#
+# Needs valgrind (installed when missing) and the release preset's bench binaries.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+TILESWEEP_EXTRA_PACKAGES=valgrind source "$root/scripts/setup.sh"
+frames=${1:-16384}
+filter=${2:-}
+build=${TILESWEEP_BUILD_DIR:-$root/build/release}
+(cd "$root" && cmake --preset release >/dev/null && cmake --build "$build" --target tilesweep_frame_instructions >/dev/null)
+dumps=$(mktemp -d)
+trap 'rm -rf "$dumps"' EXIT
+valgrind --tool=callgrind --callgrind-out-file="$dumps/out.%p" \
+    "$build/bench/tilesweep_frame_instructions" "$frames" "$filter" >/dev/null 2>"$dumps/valgrind.log"
+python3 - "$dumps" <<'PY'
+import glob, os, re, sys
+rows = {}
+for path in glob.glob(os.path.join(sys.argv[1], "out.*")):
+    name = total = None
+    for line in open(path):
+        if line.startswith("desc: Trigger: Client Request: "):
+            name = line[len("desc: Trigger: Client Request: "):].strip()
+        elif line.startswith(("summary:", "totals:")):
+            total = int(line.split()[1])
+    if name and total is not None:
+        impl, scenario, frames = name.split(" ")
+        rows.setdefault(scenario, {})[impl] = total / int(frames)
+print("| scenario | tilesweep | lean twin | lean grid | tilesweep / fewer |")
+print("|---|---:|---:|---:|---:|")
+for scenario in sorted(rows):
+    r = rows[scenario]
+    best = min(r.get("Twin", float("inf")), r.get("Grid", float("inf")))
+    print(f"| {scenario} | {r.get('Tilesweep', 0):.0f} | {r.get('Twin', 0):.0f} | {r.get('Grid', 0):.0f} | {r.get('Tilesweep', 0) / best:.2f} |")
+PY

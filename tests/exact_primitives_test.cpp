@@ -1,0 +1,260 @@
+// SPDX-License-Identifier: MIT
+// The exact double primitives of the fast path (src/exact_double.h, the time rounding of
+// src/time_rounding.h) against the oracle's exact rationals, on inputs built to sit
+// where a filter cannot decide: products that round to the same double, pairs whose products
+// differ by far less than the filter's bound, and quotients next to a rounding midpoint. These
+// are the cases that double frames reach rarely (issue 20, class 1); each test counts how many
+// of its draws took the exact refinement and asserts a floor, so none of them is vacuous.
+#include "exact_double.h"
+#include "oracle/exact/rational.h"
+#include "oracle/exact/rational_convert.h"
+#include "time_rounding.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <random>
+
+namespace tilesweep::detail {
+namespace {
+
+using oracle::Rational;
+
+Rational exactly(double d) { return oracle::toRational(d); }
+
+int signOf(const Rational& r) { return r < 0 ? -1 : (r > 0 ? 1 : 0); }
+
+/// A random double with a full 53-bit significand, either sign, and a binary exponent in
+/// [low, high].
+double randomDouble(std::mt19937_64& rng, int low, int high) {
+    const double significand = 1.0 + std::ldexp(static_cast<double>(rng() >> 12), -52);  // [1, 2)
+    const int exponent = std::uniform_int_distribution<int>(low, high)(rng);
+    const double v = std::ldexp(significand, exponent);
+    return (rng() & 1) ? -v : v;
+}
+
+/// A positive double with at most `bits` significant bits and a binary exponent in [low, high].
+double shortDouble(std::mt19937_64& rng, int bits, int low, int high) {
+    const std::uint64_t top = std::uint64_t{1} << (bits - 1);
+    const std::uint64_t significand = top | (rng() & (top - 1));
+    const int exponent = std::uniform_int_distribution<int>(low, high)(rng);
+    return std::ldexp(static_cast<double>(significand), exponent - (bits - 1));
+}
+
+double nextUp(double v) { return std::nextafter(v, INFINITY); }
+double nextDown(double v) { return std::nextafter(v, -INFINITY); }
+
+bool hasEvenSignificand(double v) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    return (bits & 1) == 0;
+}
+
+/// The double nearest x among the candidates, ties to the even significand: the correct
+/// rounding of x when the candidates surround it.
+double nearestOf(const Rational& x, std::initializer_list<double> candidates) {
+    double best = 0;
+    Rational bestDistance = -1;
+    for (const double c : candidates) {
+        const Rational distance = abs(x - exactly(c));
+        if (bestDistance < 0 || distance < bestDistance ||
+            (distance == bestDistance && hasEvenSignificand(c) && !hasEvenSignificand(best))) {
+            best = c;
+            bestDistance = distance;
+        }
+    }
+    return best;
+}
+
+TEST(ExactPrimitives, productErrorIsTheExactRoundingErrorOfAProduct) {
+    std::mt19937_64 rng(2026120201);
+    int lowTermsUsed = 0;  // draws where the split halves' low product is not zero
+    for (int k = 0; k < 20000; ++k) {
+        const double a = randomDouble(rng, -300, 300);
+        const double b = randomDouble(rng, -300, 300);
+        const double p = a * b;
+        const double e = productError(a, b, p);
+        ASSERT_EQ(exactly(e), exactly(a) * exactly(b) - exactly(p)) << std::hexfloat << a << " * " << b;
+        const double ca = 134217729.0 * a;
+        const double cb = 134217729.0 * b;
+        lowTermsUsed += ((a - (ca - (ca - a))) * (b - (cb - (cb - b))) != 0) ? 1 : 0;
+    }
+    EXPECT_GT(lowTermsUsed, 15000) << "the draws should exercise every term of TwoProduct";
+}
+
+TEST(ExactPrimitives, comparesProductsThatRoundToTheSameDoubleExactly) {
+    std::mt19937_64 rng(2026120202);
+    int ties = 0;  // draws where fl(a*b) == fl(c*d), so the rounding errors decide
+    for (int k = 0; k < 20000; ++k) {
+        const double a = randomDouble(rng, -40, 40);
+        const double b = std::fabs(randomDouble(rng, -40, 40));
+        const double c = randomDouble(rng, -40, 40);
+        double d = std::fabs(a * b / c);
+        for (int step = std::uniform_int_distribution<int>(-2, 2)(rng); step != 0; step += step > 0 ? -1 : 1)
+            d = step > 0 ? nextUp(d) : nextDown(d);
+        const double cc = (a < 0) == (c < 0) ? c : -c;  // the same sign as a, so the products are close
+        bool refined = false;
+        const int order = compareProducts(a, b, cc, d, refined);
+        const int exact = signOf(exactly(a) * exactly(b) - exactly(cc) * exactly(d));
+        ASSERT_EQ(order, exact) << std::hexfloat << a << " * " << b << " vs " << cc << " * " << d;
+        ties += refined ? 1 : 0;
+    }
+    EXPECT_GT(ties, 2000) << "too few products rounded to the same double to test the refinement";
+}
+
+/// A normalized pair hi + lo (hi = fl(hi + lo)) near `near`, with a random low part.
+ExactPair randomPair(std::mt19937_64& rng, double near) {
+    const double lo =
+        std::ldexp(randomDouble(rng, 0, 0), std::ilogb(near) - 54 - static_cast<int>(rng() % 20));
+    return twoSum(near, lo);
+}
+
+TEST(ExactPrimitives, comparesPairProductsInsideTheFilterBandExactly) {
+    std::mt19937_64 rng(2026120203);
+    int refinedCount = 0;
+    int bothSides = 0;
+    for (int k = 0; k < 20000; ++k) {
+        // A*s against B*t with t = s * 2^j and B = A / 2^j nudged in its low part: the two
+        // products differ by a few units in the 100th bit, far inside the filter's band.
+        const double s = std::fabs(randomDouble(rng, -20, 20));
+        const int j = std::uniform_int_distribution<int>(-8, 8)(rng);
+        const double t = std::ldexp(s, j);
+        const ExactPair a = randomPair(rng, std::fabs(randomDouble(rng, -20, 20)));
+        ExactPair b = {std::ldexp(a.hi, -j), std::ldexp(a.lo, -j)};
+        const int nudge = std::uniform_int_distribution<int>(-2, 2)(rng);
+        if (nudge != 0 && b.lo != 0) {
+            const double lo = nudge > 0 ? nextUp(b.lo) : nextDown(b.lo);
+            b = twoSum(b.hi, lo);
+        }
+        if (k % 8 == 0) b = twoSum(b.hi, b.lo + std::ldexp(b.hi, -60));  // still inside the band
+        if (k % 8 == 4) b = twoSum(b.hi, std::ldexp(b.hi, -45));         // outside: the filter decides
+        bool refined = false;
+        const int order = compareProducts(a, s, b, t, refined);
+        const Rational exact =
+            (exactly(a.hi) + exactly(a.lo)) * exactly(s) - (exactly(b.hi) + exactly(b.lo)) * exactly(t);
+        ASSERT_EQ(order, signOf(exact)) << std::hexfloat << "A = " << a.hi << " + " << a.lo << ", s = " << s
+                                        << "; B = " << b.hi << " + " << b.lo << ", t = " << t;
+        refinedCount += refined ? 1 : 0;
+        bothSides += (refined && order != 0) ? 1 : 0;
+    }
+    EXPECT_GT(refinedCount, 5000) << "too few comparisons reached the exact refinement";
+    EXPECT_GT(bothSides, 2000) << "too few refined comparisons had a nonzero answer";
+}
+
+TEST(ExactPrimitives, signOfSumIsTheSignOfTheExactSum) {
+    std::mt19937_64 rng(2026120204);
+    for (int k = 0; k < 20000; ++k) {
+        // Terms that nearly cancel: x, -x + tiny, and small ones of mixed magnitudes.
+        double terms[6];
+        const double x = randomDouble(rng, -30, 30);
+        terms[0] = x;
+        terms[1] = -x;
+        for (int i = 2; i < 6; ++i)
+            terms[i] = std::ldexp(randomDouble(rng, 0, 0), std::ilogb(x) - 53 * (i - 1) / 2);
+        if (k % 3 == 0) terms[5] = -(terms[2] + terms[3]);  // sometimes a zero tail
+        Rational sum = 0;
+        for (const double term : terms) sum += exactly(term);
+        ASSERT_EQ(signOfSum(terms, 6), signOf(sum)) << "draw " << k;
+    }
+}
+
+/// Draws a time num / den next to the rounding midpoint just above (or just below) a double q
+/// in [2^-12, 1), with num an exact pair. Half the draws take a short den (20 bits) and offsets
+/// from the midpoint of 2^-30 of q's ulp; the other half a full den (53 bits) and offsets of a
+/// few units in the last place of q*den's low half, which put R = num - q*den within the
+/// filter's bound of the midpoint without being on it. Returns false when num is not a pair.
+bool drawTimeNearDoubleMidpoint(std::mt19937_64& rng, TimeRatio<ExactPair, double>& time, Rational& exact,
+                                bool& onMidpoint) {
+    const double q = std::ldexp(1.0 + std::ldexp(static_cast<double>(rng() >> 12), -52),
+                                -1 - static_cast<int>(rng() % 12));
+    const bool fullDen = (rng() & 1) != 0;
+    const double den = fullDen ? std::fabs(randomDouble(rng, -4, 20)) : shortDouble(rng, 20, -4, 20);
+    const bool above = (rng() & 1) != 0;
+    const double ulp = above ? nextUp(q) - q : q - nextDown(q);
+    const Rational midpoint = exactly(q) + (above ? 1 : -1) * exactly(ulp) / 2;
+    // A third of the draws on the midpoint itself.
+    const int offset = rng() % 3 == 0 ? 0 : std::uniform_int_distribution<int>(-3, 3)(rng);
+    const Rational unit = fullDen ? exactly(ulp) * exactly(nextUp(den) - den) / 4
+                                  : exactly(ulp) * exactly(den) / Rational(0x1p30);
+    const Rational num = midpoint * exactly(den) + offset * unit;
+    onMidpoint = offset == 0;
+    // hi: the double nearest num (from the double estimate and its neighbours), lo = num - hi.
+    const double estimate = q * den;
+    const double hi = nearestOf(num, {nextDown(nextDown(estimate)), nextDown(estimate), estimate,
+                                      nextUp(estimate), nextUp(nextUp(estimate))});
+    const Rational rest = num - exactly(hi);
+    const double lo = static_cast<double>(rest);
+    if (exactly(lo) != rest) return false;  // lo needs more than 53 bits: not a pair
+    if (abs(rest) * 2 >= exactly(nextUp(std::fabs(hi)) - std::fabs(hi))) return false;
+    if (num > exactly(den)) return false;  // times lie in [0, 1]
+    time = {{hi, lo}, den};
+    exact = num / exactly(den);
+    return true;
+}
+
+TEST(ExactPrimitives, roundsPairTimesNextToADoubleMidpointCorrectly) {
+    std::mt19937_64 rng(2026120205);
+    int drawn = 0;
+    int refinedCount = 0;
+    int refinedOffMidpoint = 0;  // inside the band but not on the midpoint: the filter's hard case
+    for (int k = 0; k < 40000 && drawn < 20000; ++k) {
+        TimeRatio<ExactPair, double> time{};
+        Rational exact;
+        bool onMidpoint = false;
+        if (!drawTimeNearDoubleMidpoint(rng, time, exact, onMidpoint)) continue;
+        ++drawn;
+        bool refined = false;
+        double out = 0;
+        // The quotient starts within two ulps of the answer and moves one at a time, so the
+        // rounding always settles in its four steps: a false here is a lost fast answer.
+        ASSERT_TRUE(roundTimeToDouble(time, refined, out))
+            << std::hexfloat << "(" << time.num.hi << " + " << time.num.lo << ") / " << time.den;
+        const double guess = time.num.hi / time.den;
+        const double expected = nearestOf(
+            exact, {nextDown(nextDown(guess)), nextDown(guess), guess, nextUp(guess), nextUp(nextUp(guess))});
+        ASSERT_EQ(out, expected) << std::hexfloat << "(" << time.num.hi << " + " << time.num.lo << ") / "
+                                 << time.den;
+        refinedCount += refined ? 1 : 0;
+        refinedOffMidpoint += (refined && !onMidpoint) ? 1 : 0;
+    }
+    EXPECT_GT(drawn, 10000) << "too few valid draws";
+    EXPECT_GT(refinedOffMidpoint, 500) << "too few times inside the filter's band off the midpoint";
+    EXPECT_GT(refinedCount, drawn / 5) << "too few times reached the exact refinement";
+}
+
+TEST(ExactPrimitives, roundsDoubleTimesNextToAFloatMidpointCorrectly) {
+    std::mt19937_64 rng(2026120206);
+    int refinedCount = 0;
+    for (int k = 0; k < 20000; ++k) {
+        // num = m * den + a small offset, m a float rounding midpoint in [2^-12, 1): 25 bits.
+        const auto f = static_cast<float>(std::ldexp(1.0 + std::ldexp(static_cast<double>(rng() >> 41), -23),
+                                                     -1 - static_cast<int>(rng() % 12)));
+        const double m = static_cast<double>(f) +
+                         (static_cast<double>(std::nextafter(f, 2.0f)) - static_cast<double>(f)) / 2;
+        const double den = shortDouble(rng, 20, -4, 20);
+        const double base = m * den;  // exact: 25 + 20 bits
+        const int offset = std::uniform_int_distribution<int>(-2, 2)(rng);
+        const double num = offset == 0 ? base : (offset > 0 ? nextUp(base) : nextDown(base));
+        if (num > den) continue;
+        bool refined = false;
+        float out = 0;
+        ASSERT_TRUE(roundTimeToFloat({num, den}, refined, out));
+        const Rational exact = exactly(num) / exactly(den);
+        const float below = f;
+        const float aboveF = std::nextafter(f, 2.0f);
+        const Rational toBelow = abs(exact - exactly(below));
+        const Rational toAbove = abs(exact - exactly(aboveF));
+        std::uint32_t bits = 0;
+        std::memcpy(&bits, &below, sizeof bits);
+        const float expected =
+            toBelow < toAbove ? below : (toAbove < toBelow ? aboveF : ((bits & 1) == 0 ? below : aboveF));
+        ASSERT_EQ(out, expected) << std::hexfloat << num << " / " << den;
+        refinedCount += refined ? 1 : 0;
+    }
+    EXPECT_GT(refinedCount, 3000) << "too few times landed on a float midpoint";
+}
+
+}  // namespace
+}  // namespace tilesweep::detail
