@@ -244,8 +244,8 @@ TEST(ExactPrimitives, roundsDoubleTimesNextToAFloatMidpointCorrectly) {
         const Rational exact = exactly(num) / exactly(den);
         const float below = f;
         const float aboveF = std::nextafter(f, 2.0f);
-        const Rational toBelow = abs(exact - exactly(below));
-        const Rational toAbove = abs(exact - exactly(aboveF));
+        const Rational toBelow = abs(exact - exactly(static_cast<double>(below)));
+        const Rational toAbove = abs(exact - exactly(static_cast<double>(aboveF)));
         std::uint32_t bits = 0;
         std::memcpy(&bits, &below, sizeof bits);
         const float expected =
