@@ -21,7 +21,7 @@ namespace {
 template <class T>
 std::vector<tilesweep::FrameResult<T>> runTwin(const tilesweep::Scene<T>& scene) {
     return tilesweep::baselines::runFrames(
-        scene, [](const tilesweep::SweepInput<T>& in, const tilesweep::ResolveOutput<T>& out) {
+        scene, [](const tilesweep::ResolveInput<T>& in, const tilesweep::ResolveOutput<T>& out) {
             return tilesweep::baselines::resolveMoveTwin<T>(in, out);
         });
 }

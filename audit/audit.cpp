@@ -32,11 +32,11 @@ using baselines::runFrames;
 template <class T>
 DecisionPath decisionPathOf(const Scene<T>& scene) {
     DecisionPath worst = DecisionPath::Fast;
-    runFrames(scene, [&worst](const SweepInput<T>& in, const ResolveOutput<T>& out) {
+    runFrames(scene, [&worst](const ResolveInput<T>& in, const ResolveOutput<T>& out) {
         FrameStats stats;
         ResolveOutput<T> counted = out;
         counted.stats = &stats;
-        const SweepResult<T> r = resolveMove(in, counted);
+        const ResolveResult<T> r = resolveMove(in, counted);
         worst = std::max(worst, stats.path);
         return r;
     });

@@ -35,11 +35,11 @@ template <class T>
 std::vector<FrameResult<T>> runImplementation(const Implementation& impl, const Scene<T>& scene) {
     switch (impl.kind) {
         case ImplementationKind::Twin:
-            return runFrames(scene, [](const SweepInput<T>& in, const ResolveOutput<T>& out) {
+            return runFrames(scene, [](const ResolveInput<T>& in, const ResolveOutput<T>& out) {
                 return baselines::resolveMoveTwin(in, out);
             });
         case ImplementationKind::Grid:
-            return runFrames(scene, [](const SweepInput<T>& in, const ResolveOutput<T>& out) {
+            return runFrames(scene, [](const ResolveInput<T>& in, const ResolveOutput<T>& out) {
                 return baselines::resolveMoveGrid(in, out);
             });
         case ImplementationKind::Core:

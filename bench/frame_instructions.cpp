@@ -11,6 +11,7 @@
 //
 // Outside valgrind the client requests do nothing, and the program just runs the frames.
 #include "frame_scenarios.h"
+
 #include "tilesweep/baselines/grid_resolve.h"
 #include "tilesweep/baselines/twin_resolve.h"
 #include "tilesweep/resolve.h"
@@ -58,8 +59,8 @@ template <class T, Impl I>
     double sum = 0;
     std::size_t k = 0;
     for (std::size_t n = 0; n < frames; ++n) {
-        const tilesweep::SweepInput<T> in{view, s.boxes[k], s.moves[k]};
-        tilesweep::SweepResult<T> r{};
+        const tilesweep::ResolveInput<T> in{view, s.boxes[k], s.moves[k]};
+        tilesweep::ResolveResult<T> r{};
         if constexpr (I == Impl::Tilesweep) {
             r = tilesweep::resolveMove<T>(in, out);
         } else if constexpr (I == Impl::Twin) {
@@ -83,7 +84,8 @@ void count(const FrameScenario<T>& s, const std::string& label, std::size_t fram
 }
 
 template <class T>
-void countScenario(FrameKind kind, int speedArg, const char* scalar, std::size_t frames, const std::string& filter) {
+void countScenario(FrameKind kind, int speedArg, const char* scalar, std::size_t frames,
+                   const std::string& filter) {
     std::string label = std::string(tilesweep::bench::nameOf(kind)) + "<" + scalar + ">";
     if (speedArg > 0) label += "/" + std::to_string(speedArg);
     if (label.find(filter) == std::string::npos) return;

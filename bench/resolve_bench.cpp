@@ -115,8 +115,8 @@ void BM_BruteForce_EveryTile(benchmark::State& state) {
     for (auto _ : state) {
         int hits = 0;
         for (const auto& [lo, hi] : tiles)
-            hits += tilesweep::sweepBox<float>({s.boxes[k], s.moves[k], lo, hi}).state ==
-                    tilesweep::BoxSweepState::Blocks;
+            hits += tilesweep::sweepBox<float>({s.boxes[k], s.moves[k], lo, hi}).status ==
+                    tilesweep::BoxSweepStatus::Blocks;
         benchmark::DoNotOptimize(hits);
         k = (k + 1) % s.boxes.size();
     }
@@ -274,7 +274,7 @@ void frameLoop(benchmark::State& state, tilesweep::bench::FrameKind kind, int sp
     const tilesweep::baselines::TileReciprocal<T> reciprocal = tilesweep::baselines::reciprocalOf(view);
     std::size_t k = 0;
     for (auto _ : state) {
-        const tilesweep::SweepInput<T> in{view, s.boxes[k], s.moves[k]};
+        const tilesweep::ResolveInput<T> in{view, s.boxes[k], s.moves[k]};
         if constexpr (I == Impl::Tilesweep) {
             benchmark::DoNotOptimize(tilesweep::resolveMove<T>(in, out));
         } else if constexpr (I == Impl::Twin) {

@@ -35,9 +35,9 @@ namespace {
 using tilesweep::Box;
 using tilesweep::Cell;
 using tilesweep::Contact;
+using tilesweep::ResolveInput;
 using tilesweep::ResolveOutput;
-using tilesweep::SweepInput;
-using tilesweep::SweepResult;
+using tilesweep::ResolveResult;
 using tilesweep::TileMapView;
 using tilesweep::Vec2;
 namespace tb = tilesweep::bench;
@@ -47,13 +47,13 @@ constexpr std::int32_t kCapacity = 64;
 /// One frame's full output.
 template <class T>
 struct FrameOutput {
-    SweepResult<T> result;
+    ResolveResult<T> result;
     Contact<T> contacts[kCapacity];
     Cell overlaps[kCapacity];
 };
 
 template <class T, class Resolve>
-void runFrame(const SweepInput<T>& in, FrameOutput<T>& f, Resolve resolve) {
+void runFrame(const ResolveInput<T>& in, FrameOutput<T>& f, Resolve resolve) {
     f.result = resolve(in, ResolveOutput<T>{f.contacts, kCapacity, f.overlaps, kCapacity});
 }
 
@@ -135,14 +135,14 @@ Counts countScenario(tb::FrameKind kind, int speedArg) {
     static FrameOutput<T> exact, twin, grid;
     Counts c;
     for (std::size_t k = 0; k < s.boxes.size(); ++k) {
-        const SweepInput<T> in{view, s.boxes[k], s.moves[k]};
-        runFrame(in, exact, [](const SweepInput<T>& i, const ResolveOutput<T>& o) {
+        const ResolveInput<T> in{view, s.boxes[k], s.moves[k]};
+        runFrame(in, exact, [](const ResolveInput<T>& i, const ResolveOutput<T>& o) {
             return tilesweep::resolveMove(i, o);
         });
-        runFrame(in, twin, [](const SweepInput<T>& i, const ResolveOutput<T>& o) {
+        runFrame(in, twin, [](const ResolveInput<T>& i, const ResolveOutput<T>& o) {
             return tilesweep::baselines::resolveMoveTwin(i, o);
         });
-        runFrame(in, grid, [](const SweepInput<T>& i, const ResolveOutput<T>& o) {
+        runFrame(in, grid, [](const ResolveInput<T>& i, const ResolveOutput<T>& o) {
             return tilesweep::baselines::resolveMoveGrid(i, o);
         });
         ++c.frames;
@@ -194,12 +194,12 @@ struct LibmCounts {
 
 /// One frame through both; returns the lean twin's result.
 template <class T>
-SweepResult<T> compareWithLibm(const SweepInput<T>& in, LibmCounts& c) {
+ResolveResult<T> compareWithLibm(const ResolveInput<T>& in, LibmCounts& c) {
     static FrameOutput<T> lean, libm;
-    runFrame(in, lean, [](const SweepInput<T>& i, const ResolveOutput<T>& o) {
+    runFrame(in, lean, [](const ResolveInput<T>& i, const ResolveOutput<T>& o) {
         return tilesweep::baselines::resolveMoveTwin(i, o);
     });
-    runFrame(in, libm, [](const SweepInput<T>& i, const ResolveOutput<T>& o) {
+    runFrame(in, libm, [](const ResolveInput<T>& i, const ResolveOutput<T>& o) {
         return tilesweep::baselines::resolveMoveTwinLibm(i, o);
     });
     ++c.frames;

@@ -153,7 +153,7 @@ struct FrameRecord {
     TileMapView<T> map;
     Box<T> start{};
     Vec2<T> displacement{};
-    SweepResult<T> result{};
+    ResolveResult<T> result{};
     const Contact<T>* contacts = nullptr;
     const Cell* startOverlaps = nullptr;
 };
@@ -162,12 +162,12 @@ struct FrameRecord {
 /// with a unit normal against the motion and a frame time in [0, 1]. Empty when it holds.
 template <class T>
 [[nodiscard]] std::string checkWellFormed(const FrameRecord<T>& frame) {
-    const SweepResult<T>& r = frame.result;
+    const ResolveResult<T>& r = frame.result;
     const Vec2<T> d = frame.displacement;
-    if (r.status == Status::InvalidInput) return "valid input refused as InvalidInput";
+    if (r.status == ResolveStatus::InvalidInput) return "valid input refused as InvalidInput";
     if (!std::isfinite(r.position.x) || !std::isfinite(r.position.y)) return "non-finite final position";
     if (r.contactCount < 0 || r.startOverlapCount < 0) return "negative list count";
-    if ((r.status == Status::Blocked) != (r.contactCount > 0))
+    if ((r.status == ResolveStatus::Blocked) != (r.contactCount > 0))
         return "status Blocked does not match the contact count";
     for (std::int32_t k = 0; k < r.contactCount; ++k) {
         const Contact<T>& c = frame.contacts[k];
@@ -283,7 +283,7 @@ template <class T>
 [[nodiscard]] SafetyViolation checkFrameSafety(const FrameRecord<T>& frame, const MapEdges<T>& edges,
                                                SafetyScratch& scratch) {
     if (std::string why = checkWellFormed(frame); !why.empty()) return {SafetyRule::WellFormed, why};
-    const SweepResult<T>& r = frame.result;
+    const ResolveResult<T>& r = frame.result;
     if (std::optional<Cell> entered = findNewOverlap(frame.map, edges, frame.start, r.position, scratch))
         return {SafetyRule::EndsInsideNewTile,
                 "ends inside solid tile " + describeCell(*entered) + " it did not start in"};

@@ -134,7 +134,7 @@ std::string hexfloat(T value) {
 }
 
 template <class T>
-std::string describeInput(const SweepInput<T>& in, const std::vector<std::uint8_t>& solid) {
+std::string describeInput(const ResolveInput<T>& in, const std::vector<std::uint8_t>& solid) {
     std::string text = std::string(sizeof(T) == 4 ? "float" : "double") + " map " +
                        std::to_string(in.map.columns) + "x" + std::to_string(in.map.rows) + " origin (" +
                        hexfloat(in.map.origin.x) + ", " + hexfloat(in.map.origin.y) + ") tile (" +
@@ -180,21 +180,22 @@ void fuzzResolver(ByteReader& in) {
     TileMapView<T> map{{}, {}, columns, rows, solid.empty() ? nullptr : solid.data()};
     map.origin = decodeVec2<T>(in);
     map.tileSize = decodeVec2<T>(in);
-    SweepInput<T> input{map, {}, {}};
+    ResolveInput<T> input{map, {}, {}};
     input.box.pos = decodeVec2<T>(in);
     input.box.size = decodeVec2<T>(in);
     input.displacement = decodeVec2<T>(in);
     const std::uint8_t capacities = in.byte();
 
     Lists<T> small(capacities & 7, (capacities >> 4) & 7);
-    const SweepResult<T> first = resolveMove(input, small.output());
+    const ResolveResult<T> first = resolveMove(input, small.output());
     const Vec2<T> start = input.box.pos;
 
     if (!isValid(input)) {
         const bool startFinite = std::isfinite(start.x) && std::isfinite(start.y);
         const Vec2<T> expected = startFinite ? start : Vec2<T>{0, 0};
-        if (first.status != Status::InvalidInput || first.contactCount != 0 || first.startOverlapCount != 0 ||
-            !fuzz::sameBits(first.position.x, expected.x) || !fuzz::sameBits(first.position.y, expected.y))
+        if (first.status != ResolveStatus::InvalidInput || first.contactCount != 0 ||
+            first.startOverlapCount != 0 || !fuzz::sameBits(first.position.x, expected.x) ||
+            !fuzz::sameBits(first.position.y, expected.y))
             fuzz::failCheck(kTarget, "invalid input not refused with the start position and no lists",
                             describeInput(input, solid));
         return;
@@ -204,12 +205,12 @@ void fuzzResolver(ByteReader& in) {
     // A map whose edges are not all representable is outside the resolver's contract (callers
     // run validateTileMap first): it must not crash or produce a NaN, and that is all.
     if (validateTileMap(map) != MapError::None) return;
-    if (first.status == Status::InvalidInput)
+    if (first.status == ResolveStatus::InvalidInput)
         fuzz::failCheck(kTarget, "valid input refused", describeInput(input, solid));
 
     // With room for every list entry, the result must be the same; then check it.
     Lists<T> full(first.contactCount, first.startOverlapCount);
-    const SweepResult<T> r = resolveMove(input, full.output());
+    const ResolveResult<T> r = resolveMove(input, full.output());
     if (r.status != first.status || r.contactCount != first.contactCount ||
         r.startOverlapCount != first.startOverlapCount || !fuzz::sameBits(r.position.x, first.position.x) ||
         !fuzz::sameBits(r.position.y, first.position.y))

@@ -90,8 +90,8 @@ void checkFrames(const Scene<T>& scene, std::string_view line) {
     Box<T> box = scene.box;
     for (std::size_t k = 0; k < frames.size(); ++k) {
         const FrameResult<T>& f = frames[k];
-        SweepResult<T> result;
-        result.status = f.contacts.empty() ? Status::Moved : Status::Blocked;
+        ResolveResult<T> result;
+        result.status = f.contacts.empty() ? ResolveStatus::Moved : ResolveStatus::Blocked;
         result.position = f.position;
         result.contactCount = static_cast<std::int32_t>(f.contacts.size());
         result.startOverlapCount = static_cast<std::int32_t>(f.startOverlaps.size());
@@ -122,7 +122,7 @@ void fuzzSceneReader(std::string_view line) {
         validateTileMap(scene.map.view()) != MapError::None)
         fuzz::failCheck(kTarget, "parsed scene without moves, or with an invalid map", excerpt(line));
     for (const Vec2<T> move : scene.moves)
-        if (!isValid(SweepInput<T>{scene.map.view(), scene.box, move}))
+        if (!isValid(ResolveInput<T>{scene.map.view(), scene.box, move}))
             fuzz::failCheck(kTarget, "parsed scene the resolver refuses", excerpt(line));
 
     std::string text;

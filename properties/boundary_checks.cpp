@@ -103,8 +103,8 @@ Flags flagsOf(const Contact<T>* contacts, std::int32_t count) {
 }
 
 template <class T>
-std::string compareMove(const MoveResult<T>& got, const SweepResult<T>& want, const Flags& flags) {
-    const MoveStatus status = want.status == Status::Blocked ? MoveStatus::Blocked : MoveStatus::Moved;
+std::string compareMove(const MoveResult<T>& got, const ResolveResult<T>& want, const Flags& flags) {
+    const MoveStatus status = want.status == ResolveStatus::Blocked ? MoveStatus::Blocked : MoveStatus::Moved;
     if (got.status != status)
         return "status " + std::to_string(int(got.status)) + " != " + std::to_string(int(status));
     if (!sameBits(got.position.x, want.position.x) || !sameBits(got.position.y, want.position.y))
@@ -130,7 +130,7 @@ std::string compareStored(const Contact<T>* got, const Contact<T>* want, std::in
 template <class T>
 std::string checkFrame(const Scene<T>& scene, const PreparedMap<T>& prepared,
                        const typename CApi<T>::Map* cmap, const Box<T>& box, Vec2<T> move,
-                       const SweepResult<T>& want, const std::vector<Contact<T>>& wanted) {
+                       const ResolveResult<T>& want, const std::vector<Contact<T>>& wanted) {
     const std::int32_t n = want.contactCount;
     const std::int32_t bound = maxContacts(box.size, scene.map.tileSize);
     const Flags flags = flagsOf(wanted.data(), n);
@@ -140,7 +140,7 @@ std::string checkFrame(const Scene<T>& scene, const PreparedMap<T>& prepared,
     {
         std::vector<Contact<T>> exact(static_cast<std::size_t>(n) + 1);
         Cell overlaps[64];
-        const SweepResult<T> got =
+        const ResolveResult<T> got =
             resolveMove<T>({scene.map.view(), box, move}, {exact.data(), n, overlaps, 64});
         if (got.status != want.status || got.contactCount != n ||
             !sameBits(got.position.x, want.position.x) || !sameBits(got.position.y, want.position.y))
@@ -250,9 +250,9 @@ std::string storesContactsAtExactCapacity(const Scene<T>& scene) {
     Cell overlaps[64];
     for (std::size_t f = 0; f < scene.moves.size(); ++f) {
         const Vec2<T> move = scene.moves[f];
-        const SweepResult<T> want =
+        const ResolveResult<T> want =
             resolveMove<T>({scene.map.view(), box, move}, {plenty.data(), kLargestBufferTried, overlaps, 64});
-        if (want.status == Status::InvalidInput || want.contactCount > kLargestBufferTried) return {};
+        if (want.status == ResolveStatus::InvalidInput || want.contactCount > kLargestBufferTried) return {};
         const std::vector<Contact<T>> wanted(plenty.begin(), plenty.begin() + want.contactCount);
         if (std::string why = checkFrame(scene, prepared, cmap.get(), box, move, want, wanted); !why.empty())
             return "frame " + std::to_string(f) + ": " + why;

@@ -118,8 +118,8 @@ CheckedFrames<T> checkedFrames(const Scene<T>& scene) {
 template <class T>
 checks::FrameRecord<T> recordOf(const Scene<T>& scene, const CheckedFrames<T>& c, std::size_t f) {
     const FrameResult<T>& r = c.frames[f];
-    SweepResult<T> result;
-    result.status = r.contacts.empty() ? Status::Moved : Status::Blocked;
+    ResolveResult<T> result;
+    result.status = r.contacts.empty() ? ResolveStatus::Moved : ResolveStatus::Blocked;
     result.position = r.position;
     result.contactCount = static_cast<std::int32_t>(r.contacts.size());
     result.startOverlapCount = static_cast<std::int32_t>(r.startOverlaps.size());

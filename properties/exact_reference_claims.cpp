@@ -48,16 +48,16 @@ std::string sweepBoxMatchesTheReference(const Scene<T>& scene) {
             const T y1 = scene.map.origin.y + static_cast<T>(j + 1) * scene.map.tileSize.y;
             const bool xExposed = !map.isSolid(i - sx, j);
             const bool yExposed = !map.isSolid(i, j - sy);
-            const BoxSweepOutput<T> got = sweepBox<T>({scene.box, d, {x0, y0}, {x1, y1}, xExposed, yExposed});
+            const BoxSweepResult<T> got = sweepBox<T>({scene.box, d, {x0, y0}, {x1, y1}, xExposed, yExposed});
             const oracle::ExactSweepOutput want = oracle::sweepTileExact(
                 {oracle::toExact(scene.box), oracle::toExact(d), map.tileRect(i, j), xExposed, yExposed});
             const std::string at = "tile " + cellText({i, j}) + ": ";
-            const BoxSweepState state = want.state == oracle::ExactSweepState::Blocks ? BoxSweepState::Blocks
-                                        : want.state == oracle::ExactSweepState::Misses
-                                            ? BoxSweepState::Misses
-                                            : BoxSweepState::StartsOverlapping;
-            if (got.state != state) return at + "sweepBox state differs from the reference";
-            if (state != BoxSweepState::Blocks) continue;
+            const BoxSweepStatus state =
+                want.state == oracle::ExactSweepState::Blocks   ? BoxSweepStatus::Blocks
+                : want.state == oracle::ExactSweepState::Misses ? BoxSweepStatus::Misses
+                                                                : BoxSweepStatus::StartsOverlapping;
+            if (got.status != state) return at + "sweepBox state differs from the reference";
+            if (state != BoxSweepStatus::Blocks) continue;
             if (got.axis != want.axis) return at + "contact axis differs";
             const T time = oracle::fromRational<T>(want.time, oracle::Rounding::NearestEven);
             if (!sameBits(got.time, time)) return at + "time " + hex(got.time) + " != " + hex(time);

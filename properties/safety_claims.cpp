@@ -105,10 +105,10 @@ std::string badInputIsRejected(const Scene<T>& scene) {
             }
             Contact<T> contacts[8];
             Cell overlaps[8];
-            const SweepResult<T> r =
+            const ResolveResult<T> r =
                 resolveMove<T>({s.map.view(), s.box, s.moves.back()}, {contacts, 8, overlaps, 8});
             const std::string at = std::string(fields[field]) + " = " + hex(bad) + ": ";
-            if (r.status != Status::InvalidInput) return at + "not refused as InvalidInput";
+            if (r.status != ResolveStatus::InvalidInput) return at + "not refused as InvalidInput";
             if (r.contactCount != 0 || std::isnan(r.position.x) || std::isnan(r.position.y))
                 return at + "a refused frame reported contacts or NaN";
             // The scene reader, on the same field written as the format would carry it.

@@ -133,8 +133,8 @@ const char* decisionPathOf(const Scene<T>& scene) {
     std::vector<Cell> overlaps(64);
     for (const Vec2<T>& move : scene.moves) {
         FrameStats stats;
-        const SweepResult<T> r = resolveMove<T>({scene.map.view(), {start, scene.box.size}, move},
-                                                {contacts.data(), 64, overlaps.data(), 64, &stats});
+        const ResolveResult<T> r = resolveMove<T>({scene.map.view(), {start, scene.box.size}, move},
+                                                  {contacts.data(), 64, overlaps.data(), 64, &stats});
         const DecisionPath path = stats.path;
         if (static_cast<int>(path) > static_cast<int>(worst)) worst = path;
         start = r.position;

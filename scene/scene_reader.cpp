@@ -233,7 +233,7 @@ template <class T>
 template <class T>
 void checkResolvable(const Scene<T>& scene) {
     for (std::size_t k = 0; k < scene.moves.size(); ++k) {
-        if (!isValid(SweepInput<T>{scene.map.view(), scene.box, scene.moves[k]}))
+        if (!isValid(ResolveInput<T>{scene.map.view(), scene.box, scene.moves[k]}))
             fail("scene",
                  "the resolver refuses the input of frame " + std::to_string(k) + " (tilesweep::isValid)");
     }

@@ -28,14 +28,14 @@ std::vector<FrameResult<T>> runScene(const Scene<T>& scene) {
     std::vector<Cell> startOverlaps(kInitialCapacity);
 
     for (std::size_t k = 0; k < scene.moves.size(); ++k) {
-        const SweepInput<T> input{map, box, scene.moves[k]};
-        SweepResult<T> result;
+        const ResolveInput<T> input{map, box, scene.moves[k]};
+        ResolveResult<T> result;
         for (;;) {
             const ResolveOutput<T> output{contacts.data(), static_cast<std::int32_t>(contacts.size()),
                                           startOverlaps.data(),
                                           static_cast<std::int32_t>(startOverlaps.size())};
             result = resolveMove(input, output);
-            if (result.status == Status::InvalidInput || result.contactCount < 0 ||
+            if (result.status == ResolveStatus::InvalidInput || result.contactCount < 0 ||
                 result.startOverlapCount < 0)
                 throw std::invalid_argument("runScene: the resolver refused frame " + std::to_string(k) +
                                             " as invalid input");

@@ -185,8 +185,8 @@ private:
 
     void step(Walker<T>& walker) {
         const Vec2<T> d = control(walker);
-        const SweepInput<T> input{level_.map, walker.box, d};
-        const SweepResult<T> r = resolveMove(input, {contacts_, kListCapacity, overlaps_, kListCapacity});
+        const ResolveInput<T> input{level_.map, walker.box, d};
+        const ResolveResult<T> r = resolveMove(input, {contacts_, kListCapacity, overlaps_, kListCapacity});
         ++counters_.frames;
 
         std::string violation;
@@ -233,7 +233,7 @@ private:
         }
     }
 
-    void report(const std::string& violation, const Walker<T>& walker, Vec2<T> d, const SweepResult<T>& r) {
+    void report(const std::string& violation, const Walker<T>& walker, Vec2<T> d, const ResolveResult<T>& r) {
         if (++counters_.violations > kMaxReportedViolations) return;
         std::fprintf(stderr,
                      "soak: VIOLATION at tick %llu: %s\n  map origin (%a, %a) tile %a; box (%a, %a, %a, %a) "

@@ -23,13 +23,13 @@ namespace {
 
 /// The state and contact axis of a verdict (the time is the caller's); true when it blocks.
 template <class T>
-bool recordVerdict(detail::TileVerdict verdict, const BoxSweepInput<T>& in, BoxSweepOutput<T>& out) noexcept {
+bool recordVerdict(detail::TileVerdict verdict, const BoxSweepInput<T>& in, BoxSweepResult<T>& out) noexcept {
     switch (verdict) {
         case detail::TileVerdict::Misses:
-            out.state = BoxSweepState::Misses;
+            out.status = BoxSweepStatus::Misses;
             return false;
         case detail::TileVerdict::StartsOverlapping:
-            out.state = BoxSweepState::StartsOverlapping;
+            out.status = BoxSweepStatus::StartsOverlapping;
             return false;
         case detail::TileVerdict::BlocksOnX:
             out.axis = Axis::X;
@@ -41,18 +41,18 @@ bool recordVerdict(detail::TileVerdict verdict, const BoxSweepInput<T>& in, BoxS
             out.axis = detail::settleTie(in.xFaceExposed, in.yFaceExposed);
             break;
     }
-    out.state = BoxSweepState::Blocks;
+    out.status = BoxSweepStatus::Blocks;
     return true;
 }
 
 template <class T, class Num>
-BoxSweepOutput<T> sweepOnLattice(const BoxSweepInput<T>& in, const detail::Dyadic* d, int exponent) noexcept {
+BoxSweepResult<T> sweepOnLattice(const BoxSweepInput<T>& in, const detail::Dyadic* d, int exponent) noexcept {
     const auto lat = [exponent](detail::Dyadic v) { return detail::toLattice<Num>(v, exponent); };
     const auto mx = detail::makeAxisMotion(lat(d[0]), lat(d[2]), lat(d[4]));
     const auto my = detail::makeAxisMotion(lat(d[1]), lat(d[3]), lat(d[5]));
     bool refined = false;  // integers need no refinement
     const auto test = detail::testTile(mx, my, lat(d[6]), lat(d[8]), lat(d[7]), lat(d[9]), refined);
-    BoxSweepOutput<T> out;
+    BoxSweepResult<T> out;
     if (!recordVerdict(test.verdict, in, out)) return out;
     out.time = detail::roundRatioToNearest<T>(test.time.num, test.time.den);
     return out;
@@ -61,7 +61,7 @@ BoxSweepOutput<T> sweepOnLattice(const BoxSweepInput<T>& in, const detail::Dyadi
 /// The pair on exact doubles (fast_axis.h), admitted by admitFloatPair (range_admission.h): the
 /// verdict by the one tile test (axis_sweep.h), the time rounded by roundTimeToFloat; false when
 /// the time needs the lattice's rounding.
-bool sweepFast(const BoxSweepInput<float>& in, BoxSweepOutput<float>& out) noexcept {
+bool sweepFast(const BoxSweepInput<float>& in, BoxSweepResult<float>& out) noexcept {
     const auto axis = [](float pos, float size, float disp) {
         const auto d = static_cast<double>(disp);
         const auto p = static_cast<double>(pos);
@@ -82,13 +82,13 @@ bool sweepFast(const BoxSweepInput<float>& in, BoxSweepOutput<float>& out) noexc
 }  // namespace
 
 template <class T>
-BoxSweepOutput<T> sweepBox(const BoxSweepInput<T>& in) noexcept {
+BoxSweepResult<T> sweepBox(const BoxSweepInput<T>& in) noexcept {
     if (!isFinite(in.box.pos) || !isFinite(in.box.size) || !(in.box.size.x > 0 && in.box.size.y > 0) ||
         !isFinite(in.displacement) || !isFinite(in.tileMin) || !isFinite(in.tileMax) ||
         !(in.tileMin.x < in.tileMax.x && in.tileMin.y < in.tileMax.y))
         return {};
     if constexpr (std::is_same<T, float>::value) {
-        BoxSweepOutput<T> out;
+        BoxSweepResult<T> out;
         if (detail::admitFloatPair(in) && sweepFast(in, out)) return out;
     }
     const T values[10] = {in.box.pos.x,      in.box.pos.y, in.box.size.x, in.box.size.y, in.displacement.x,
@@ -103,7 +103,7 @@ BoxSweepOutput<T> sweepBox(const BoxSweepInput<T>& in) noexcept {
     });
 }
 
-template BoxSweepOutput<float> sweepBox<float>(const BoxSweepInput<float>&) noexcept;
-template BoxSweepOutput<double> sweepBox<double>(const BoxSweepInput<double>&) noexcept;
+template BoxSweepResult<float> sweepBox<float>(const BoxSweepInput<float>&) noexcept;
+template BoxSweepResult<double> sweepBox<double>(const BoxSweepInput<double>&) noexcept;
 
 }  // namespace tilesweep

@@ -65,7 +65,7 @@ public:
         double slope;   ///< secondary motion per unit of primary distance
     };
 
-    explicit FastFrame(const SweepInput<T>& in) noexcept : map_(in.map) {
+    explicit FastFrame(const ResolveInput<T>& in) noexcept : map_(in.map) {
         axis_[0] = makeAxis(in.box.pos.x, in.box.size.x, in.displacement.x, in.map.origin.x,
                             in.map.tileSize.x, in.map.columns);
         axis_[1] = makeAxis(in.box.pos.y, in.box.size.y, in.displacement.y, in.map.origin.y,

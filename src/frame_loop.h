@@ -67,7 +67,7 @@ public:
 
     /// Solves the frame into `result`; false when the arithmetic could not decide something
     /// (the caller then solves the frame on the lattice).
-    bool run(const ResolveOutput<T>& out, SweepResult<T>& result) noexcept {
+    bool run(const ResolveOutput<T>& out, ResolveResult<T>& result) noexcept {
         // A short move: the solid cells of the swept bounds, listed once, serve the start
         // overlaps and both steps (collectNear); otherwise the walk.
         const bool nearOnly = collectNear(std::max<std::int32_t>(out.contactCapacity, 0));
@@ -75,7 +75,7 @@ public:
                                             : listStartOverlaps(out.startOverlaps, out.startOverlapCapacity);
         result.position = {m_.start(0), m_.start(1)};
         if (m_.axis(0).dir == 0 && m_.axis(1).dir == 0) {
-            result.status = Status::Moved;
+            result.status = ResolveStatus::Moved;
             return true;
         }
         Coord finalPos[2] = {m_.endOf(0), m_.endOf(1)};
@@ -114,7 +114,7 @@ public:
             }
         }
         result.contactCount = total;
-        result.status = total > 0 ? Status::Blocked : Status::Moved;
+        result.status = total > 0 ? ResolveStatus::Blocked : ResolveStatus::Moved;
         return roundFinal(m_, finalPos[0], 0, result.position.x) &&
                roundFinal(m_, finalPos[1], 1, result.position.y);
     }

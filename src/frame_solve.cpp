@@ -19,8 +19,8 @@ namespace {
 /// meets a case it hands to the lattice. `refined` is set when some predicate needed its exact
 /// refinement (DecisionPath::Filtered).
 template <class T>
-[[gnu::always_inline]] inline bool solveFast(const SweepInput<T>& input, const ResolveOutput<T>& output,
-                                             SweepResult<T>& result, bool& refined) noexcept {
+[[gnu::always_inline]] inline bool solveFast(const ResolveInput<T>& input, const ResolveOutput<T>& output,
+                                             ResolveResult<T>& result, bool& refined) noexcept {
     FastFrame<T> frame(input);
     const bool solved = FrameLoop<FastFrame<T>>(frame).run(output, result);
     refined = frame.refined();
@@ -30,8 +30,8 @@ template <class T>
 /// Solves a valid frame exactly: scaled onto its lattice, with integers wide enough for it. Out
 /// of line (gnu::noinline): the fast path, inlined into resolveMovingFrame, pays for none of it.
 template <class T>
-[[gnu::noinline]] SweepResult<T> solveOnLattice(const SweepInput<T>& in,
-                                                const ResolveOutput<T>& out) noexcept {
+[[gnu::noinline]] ResolveResult<T> solveOnLattice(const ResolveInput<T>& in,
+                                                  const ResolveOutput<T>& out) noexcept {
     const T values[10] = {in.box.pos.x,      in.box.pos.y,      in.box.size.x,   in.box.size.y,
                           in.displacement.x, in.displacement.y, in.map.origin.x, in.map.origin.y,
                           in.map.tileSize.x, in.map.tileSize.y};
@@ -48,7 +48,7 @@ template <class T>
         top = std::max(top, std::max(exponentAbove(d[6 + a]), exponentAbove(d[8 + a]) + cellBits[a]) + 1);
     return onLattice(d, 10, top, [&](auto tag, int exponent) {
         LatticeFrame<T, decltype(tag)> frame(in, d, exponent);
-        SweepResult<T> result;
+        ResolveResult<T> result;
         (void)FrameLoop<LatticeFrame<T, decltype(tag)>>(frame).run(out, result);  // never undecided
         return result;
     });
@@ -60,8 +60,8 @@ template <class T>
 #if defined(__GNUC__)
 __attribute__((noinline))
 #endif
-SweepResult<T>
-resolveMovingFrame(const SweepInput<T>& input, const ResolveOutput<T>& output) noexcept {
+ResolveResult<T>
+resolveMovingFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output) noexcept {
     // The fast path, when the range test admits the frame: float frames on exact doubles,
     // double frames on exact pairs under a certified filter. The range test implies the frame
     // is valid, so isValid only runs for the frames it turns away.
@@ -72,15 +72,15 @@ resolveMovingFrame(const SweepInput<T>& input, const ResolveOutput<T>& output) n
         admitted = admitDoubleFrame(input);
     }
     if (admitted) {
-        SweepResult<T> result;
+        ResolveResult<T> result;
         bool refined = false;
         if (solveFast(input, output, result, refined)) {
             recordPath(output, refined ? DecisionPath::Filtered : DecisionPath::Fast);
             return result;
         }
     } else if (!isValid(input)) {
-        SweepResult<T> invalid;
-        invalid.status = Status::InvalidInput;
+        ResolveResult<T> invalid;
+        invalid.status = ResolveStatus::InvalidInput;
         invalid.position = input.box.pos;
         if (!std::isfinite(invalid.position.x) || !std::isfinite(invalid.position.y))
             invalid.position = {0, 0};
@@ -91,9 +91,9 @@ resolveMovingFrame(const SweepInput<T>& input, const ResolveOutput<T>& output) n
     return solveOnLattice(input, output);
 }
 
-template SweepResult<float> resolveMovingFrame<float>(const SweepInput<float>&,
-                                                      const ResolveOutput<float>&) noexcept;
-template SweepResult<double> resolveMovingFrame<double>(const SweepInput<double>&,
-                                                        const ResolveOutput<double>&) noexcept;
+template ResolveResult<float> resolveMovingFrame<float>(const ResolveInput<float>&,
+                                                        const ResolveOutput<float>&) noexcept;
+template ResolveResult<double> resolveMovingFrame<double>(const ResolveInput<double>&,
+                                                          const ResolveOutput<double>&) noexcept;
 
 }  // namespace tilesweep::detail

@@ -18,12 +18,12 @@ inline void recordPath(const ResolveOutput<T>& output, DecisionPath path) noexce
 
 /// resolveMove for every frame but the zero moves resolveZeroMove settles (resolve.cpp).
 template <class T>
-[[nodiscard]] SweepResult<T> resolveMovingFrame(const SweepInput<T>& input,
-                                                const ResolveOutput<T>& output) noexcept;
+[[nodiscard]] ResolveResult<T> resolveMovingFrame(const ResolveInput<T>& input,
+                                                  const ResolveOutput<T>& output) noexcept;
 
-extern template SweepResult<float> resolveMovingFrame<float>(const SweepInput<float>&,
-                                                             const ResolveOutput<float>&) noexcept;
-extern template SweepResult<double> resolveMovingFrame<double>(const SweepInput<double>&,
-                                                               const ResolveOutput<double>&) noexcept;
+extern template ResolveResult<float> resolveMovingFrame<float>(const ResolveInput<float>&,
+                                                               const ResolveOutput<float>&) noexcept;
+extern template ResolveResult<double> resolveMovingFrame<double>(const ResolveInput<double>&,
+                                                                 const ResolveOutput<double>&) noexcept;
 
 }  // namespace tilesweep::detail

@@ -78,7 +78,7 @@ public:
 
     /// `d` holds the inputs' dyadic forms: box position x, y, size x, y, displacement x, y, map
     /// origin x, y, tile size x, y (solveOnLattice).
-    LatticeFrame(const SweepInput<T>& input, const Dyadic* d, int latticeExponent) noexcept
+    LatticeFrame(const ResolveInput<T>& input, const Dyadic* d, int latticeExponent) noexcept
         : map_(input.map), exponent_(latticeExponent) {
         grid_[0] = {lattice(d[6]), lattice(d[8]), input.map.columns};
         grid_[1] = {lattice(d[7]), lattice(d[9]), input.map.rows};

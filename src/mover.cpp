@@ -71,11 +71,11 @@ MoveResult<T> moveAndSlideOf(const PreparedMap<T>& map, const MoveInput<T>& inpu
     Contact<T> local[kInlineContacts];
     Contact<T>* buffer = direct ? contacts : local;
     const std::int32_t bufferCapacity = direct ? capacity : kInlineContacts;
-    const SweepResult<T> s = resolveMove(SweepInput<T>{map.view(), input.box, input.displacement},
-                                         ResolveOutput<T>{buffer, bufferCapacity});
-    if (s.status == Status::InvalidInput) return refuse(input, MoveStatus::InvalidInput);
+    const ResolveResult<T> s = resolveMove(ResolveInput<T>{map.view(), input.box, input.displacement},
+                                           ResolveOutput<T>{buffer, bufferCapacity});
+    if (s.status == ResolveStatus::InvalidInput) return refuse(input, MoveStatus::InvalidInput);
     r.position = s.position;
-    r.status = s.status == Status::Blocked ? MoveStatus::Blocked : MoveStatus::Moved;
+    r.status = s.status == ResolveStatus::Blocked ? MoveStatus::Blocked : MoveStatus::Moved;
     r.contactCount = s.contactCount;
     r.startOverlapCount = s.startOverlapCount;
     // Every contact of an axis has the normal against that axis's motion (a frame moves one way

@@ -74,7 +74,7 @@ struct FloatFields {
 /// Whether the fast path holds every value of this float frame exactly (see the top of this
 /// file): all nonzero inputs normal, the frame valid, C + 2 - G <= 53, and no coordinate near
 /// the top of float's range.
-[[nodiscard]] inline bool admitFloatFrame(const SweepInput<float>& in) noexcept {
+[[nodiscard]] inline bool admitFloatFrame(const ResolveInput<float>& in) noexcept {
     const float values[10] = {in.box.pos.x,      in.box.pos.y,      in.box.size.x,   in.box.size.y,
                               in.displacement.x, in.displacement.y, in.map.origin.x, in.map.origin.y,
                               in.map.tileSize.x, in.map.tileSize.y};
@@ -127,7 +127,7 @@ struct FloatFields {
 /// rounded quotient is off by less than one cell; and a span of at most 104 bits between the largest
 /// coordinate and the lowest set bit of the box and grid inputs, so that the far box edge's distances to tile
 /// edges come out as exact pairs (farEdgeMinus).
-[[nodiscard]] inline bool admitDoubleFrame(const SweepInput<double>& in) noexcept {
+[[nodiscard]] inline bool admitDoubleFrame(const ResolveInput<double>& in) noexcept {
     const double values[10] = {in.box.pos.x,      in.box.pos.y,      in.box.size.x,   in.box.size.y,
                                in.displacement.x, in.displacement.y, in.map.origin.x, in.map.origin.y,
                                in.map.tileSize.x, in.map.tileSize.y};

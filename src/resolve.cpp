@@ -12,10 +12,10 @@
 namespace tilesweep {
 
 template <class T>
-SweepResult<T> resolveMove(const SweepInput<T>& input, const ResolveOutput<T>& output) noexcept {
+ResolveResult<T> resolveMove(const ResolveInput<T>& input, const ResolveOutput<T>& output) noexcept {
     // A zero move: the start overlaps alone, from the cells under the box (zero_move.h).
     if (input.displacement.x == 0 && input.displacement.y == 0) {
-        SweepResult<T> result;
+        ResolveResult<T> result;
         if (detail::resolveZeroMove(input, output, result)) {
             detail::recordPath(output, DecisionPath::Fast);
             return result;
@@ -24,16 +24,17 @@ SweepResult<T> resolveMove(const SweepInput<T>& input, const ResolveOutput<T>& o
     return detail::resolveMovingFrame(input, output);
 }
 
-template SweepResult<float> resolveMove<float>(const SweepInput<float>&,
-                                               const ResolveOutput<float>&) noexcept;
-template SweepResult<double> resolveMove<double>(const SweepInput<double>&,
-                                                 const ResolveOutput<double>&) noexcept;
+template ResolveResult<float> resolveMove<float>(const ResolveInput<float>&,
+                                                 const ResolveOutput<float>&) noexcept;
+template ResolveResult<double> resolveMove<double>(const ResolveInput<double>&,
+                                                   const ResolveOutput<double>&) noexcept;
 
-SweepResult<float> resolveMove(const SweepInput<float>& input, const ResolveOutput<float>& output) noexcept {
+ResolveResult<float> resolveMove(const ResolveInput<float>& input,
+                                 const ResolveOutput<float>& output) noexcept {
     return resolveMove<float>(input, output);
 }
-SweepResult<double> resolveMove(const SweepInput<double>& input,
-                                const ResolveOutput<double>& output) noexcept {
+ResolveResult<double> resolveMove(const ResolveInput<double>& input,
+                                  const ResolveOutput<double>& output) noexcept {
     return resolveMove<double>(input, output);
 }
 

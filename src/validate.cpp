@@ -11,11 +11,11 @@
 namespace tilesweep {
 
 template <class T>
-bool isValid(const SweepInput<T>& input) noexcept {
+bool isValid(const ResolveInput<T>& input) noexcept {
     return detail::isValidInput(input);
 }
 
-template bool isValid<float>(const SweepInput<float>&) noexcept;
-template bool isValid<double>(const SweepInput<double>&) noexcept;
+template bool isValid<float>(const ResolveInput<float>&) noexcept;
+template bool isValid<double>(const ResolveInput<double>&) noexcept;
 
 }  // namespace tilesweep

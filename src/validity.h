@@ -29,7 +29,7 @@ template <class T>
 /// cells present. (The fast path's range tests imply finiteness: a NaN or an infinity has an
 /// exponent field of all ones.)
 template <class T>
-[[nodiscard]] inline bool hasValidShape(const SweepInput<T>& in) noexcept {
+[[nodiscard]] inline bool hasValidShape(const ResolveInput<T>& in) noexcept {
     const TileMapView<T>& map = in.map;
     const std::int64_t cells = static_cast<std::int64_t>(map.columns) * map.rows;
     return in.box.size.x > 0 && in.box.size.y > 0 && map.tileSize.x > 0 && map.tileSize.y > 0 &&
@@ -39,7 +39,7 @@ template <class T>
 /// Whether every number of the input is finite, without a libm call: v - v is +0 for a finite v
 /// and NaN for an infinity or a NaN, so the sum of them all is zero iff all are finite.
 template <class T>
-[[nodiscard]] inline bool hasFiniteValues(const SweepInput<T>& in) noexcept {
+[[nodiscard]] inline bool hasFiniteValues(const ResolveInput<T>& in) noexcept {
     const T x = in.box.pos.x, y = in.box.pos.y, w = in.box.size.x, h = in.box.size.y;
     const T dx = in.displacement.x, dy = in.displacement.y;
     const T ox = in.map.origin.x, oy = in.map.origin.y, tx = in.map.tileSize.x, ty = in.map.tileSize.y;
@@ -50,7 +50,7 @@ template <class T>
 
 /// isValid (resolve.h): finite values, box size > 0, map header sane.
 template <class T>
-[[nodiscard]] inline bool isValidInput(const SweepInput<T>& in) noexcept {
+[[nodiscard]] inline bool isValidInput(const ResolveInput<T>& in) noexcept {
     return hasFiniteValues(in) && hasValidShape(in);
 }
 

@@ -107,8 +107,8 @@ zeroMoveCells(double x, double w, double o, double t, std::int64_t cells, std::i
 /// The zero-move frame (see the top of this file); false when it must take the ordinary path
 /// (invalid input, or a box edge too close to a grid line). Only for a displacement of zeros.
 template <class T>
-[[nodiscard]] inline bool resolveZeroMove(const SweepInput<T>& in, const ResolveOutput<T>& out,
-                                          SweepResult<T>& result) noexcept {
+[[nodiscard]] inline bool resolveZeroMove(const ResolveInput<T>& in, const ResolveOutput<T>& out,
+                                          ResolveResult<T>& result) noexcept {
     if (!isValidInput(in)) return false;
     const TileMapView<T>& map = in.map;
     std::int64_t i0 = 0;
@@ -132,7 +132,7 @@ template <class T>
             ++count;
         }
     }
-    result.status = Status::Moved;
+    result.status = ResolveStatus::Moved;
     result.position = in.box.pos;
     result.contactCount = 0;
     result.startOverlapCount = count;

@@ -69,8 +69,8 @@ TYPED_TEST(Batch, givesEveryMoverWhatResolveMoveGivesItAlone) {
                         sameResult(alone[k], byThree[k]) && sameResult(alone[k], inline_[k]))
                 << "map " << m << " mover " << k;
             // And the core resolver, with a buffer large enough for any of these frames.
-            const SweepResult<T> s = resolveMove<T>({level.view(), inputs[k].box, inputs[k].displacement},
-                                                    {contacts.data(), 4096, nullptr, 0});
+            const ResolveResult<T> s = resolveMove<T>({level.view(), inputs[k].box, inputs[k].displacement},
+                                                      {contacts.data(), 4096, nullptr, 0});
             ASSERT_EQ(std::memcmp(&s.position, &byTwo[k].position, sizeof s.position), 0)
                 << "map " << m << " mover " << k;
             ASSERT_EQ(s.contactCount, byTwo[k].contactCount);

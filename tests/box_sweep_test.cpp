@@ -19,7 +19,7 @@ TYPED_TEST_SUITE(BoxSweep, Scalars);
 TYPED_TEST(BoxSweep, headOnHitEntersAtLaterAxis) {
     using T = TypeParam;
     const auto out = sweepBox<T>({{{0, 36}, {8, 8}}, {40, 0}, {32, 32}, {48, 48}});
-    EXPECT_EQ(out.state, BoxSweepState::Blocks);
+    EXPECT_EQ(out.status, BoxSweepStatus::Blocks);
     EXPECT_EQ(out.axis, Axis::X);
     EXPECT_EQ(out.time, static_cast<T>(0.6L));
 }
@@ -28,24 +28,24 @@ TYPED_TEST(BoxSweep, headOnHitEntersAtLaterAxis) {
 TYPED_TEST(BoxSweep, touchingAtEndOfMoveIsNotAHit) {
     using T = TypeParam;
     const auto out = sweepBox<T>({{{0, 36}, {8, 8}}, {24, 0}, {32, 32}, {48, 48}});
-    EXPECT_EQ(out.state, BoxSweepState::Misses);
+    EXPECT_EQ(out.status, BoxSweepStatus::Misses);
 }
 
 // Touching at t = 0 and moving in: blocks at time 0 (resting contact).
 TYPED_TEST(BoxSweep, touchingAtStartAndMovingInBlocksAtZero) {
     using T = TypeParam;
     const auto out = sweepBox<T>({{{24, 36}, {8, 8}}, {5, 0}, {32, 32}, {48, 48}});
-    EXPECT_EQ(out.state, BoxSweepState::Blocks);
+    EXPECT_EQ(out.status, BoxSweepStatus::Blocks);
     EXPECT_EQ(out.time, T(0));
     const auto away = sweepBox<T>({{{24, 36}, {8, 8}}, {-5, 0}, {32, 32}, {48, 48}});
-    EXPECT_EQ(away.state, BoxSweepState::Misses);
+    EXPECT_EQ(away.status, BoxSweepStatus::Misses);
 }
 
 // Static y axis that only touches the tile (box y in [24, 32]): never overlaps, never blocks.
 TYPED_TEST(BoxSweep, slidingAlongFaceNeverBlocks) {
     using T = TypeParam;
     const auto out = sweepBox<T>({{{0, 24}, {8, 8}}, {100, 0}, {32, 32}, {48, 48}});
-    EXPECT_EQ(out.state, BoxSweepState::Misses);
+    EXPECT_EQ(out.status, BoxSweepStatus::Misses);
 }
 
 // Box [24, 32]^2 moving (16, 16) touches the tile's corner point at t = 0 and moves into it:
@@ -63,7 +63,7 @@ TYPED_TEST(BoxSweep, exactTieFollowsExposedFace) {
     in.xFaceExposed = false;
     in.yFaceExposed = true;
     const auto out = sweepBox<T>(in);
-    EXPECT_EQ(out.state, BoxSweepState::Blocks);
+    EXPECT_EQ(out.status, BoxSweepStatus::Blocks);
     EXPECT_EQ(out.axis, Axis::Y);
     EXPECT_EQ(out.time, T(0));
 }
@@ -71,7 +71,7 @@ TYPED_TEST(BoxSweep, exactTieFollowsExposedFace) {
 TYPED_TEST(BoxSweep, startOverlapNeverBlocks) {
     using T = TypeParam;
     const auto out = sweepBox<T>({{{30, 30}, {8, 8}}, {10, 10}, {32, 32}, {48, 48}});
-    EXPECT_EQ(out.state, BoxSweepState::StartsOverlapping);
+    EXPECT_EQ(out.status, BoxSweepStatus::StartsOverlapping);
 }
 
 // A denormal displacement on one axis still moves that axis: box [0, 8] at x, tile from 8:
@@ -80,22 +80,22 @@ TYPED_TEST(BoxSweep, subnormalDisplacementIsExact) {
     using T = TypeParam;
     const T tiny = std::numeric_limits<T>::denorm_min();
     const auto out = sweepBox<T>({{{0, 36}, {8, 8}}, {tiny, 0}, {8, 32}, {48, 48}});
-    EXPECT_EQ(out.state, BoxSweepState::Blocks);
+    EXPECT_EQ(out.status, BoxSweepStatus::Blocks);
     EXPECT_EQ(out.axis, Axis::X);
     EXPECT_EQ(out.time, T(0));
     // One denormal short of touching: entry time 1 exactly -> no block.
     const auto short1 = sweepBox<T>({{{-tiny, 36}, {8, 8}}, {tiny, 0}, {8, 32}, {48, 48}});
-    EXPECT_EQ(short1.state, BoxSweepState::Misses);
+    EXPECT_EQ(short1.status, BoxSweepStatus::Misses);
 }
 
 TYPED_TEST(BoxSweep, invalidInputNeverGivesNaN) {
     using T = TypeParam;
     const T nan = std::numeric_limits<T>::quiet_NaN();
     const auto out = sweepBox<T>({{{0, 36}, {8, 8}}, {nan, 0}, {32, 32}, {48, 48}});
-    EXPECT_EQ(out.state, BoxSweepState::InvalidInput);
+    EXPECT_EQ(out.status, BoxSweepStatus::InvalidInput);
     EXPECT_FALSE(std::isnan(out.time));
     const auto inverted = sweepBox<T>({{{0, 36}, {8, 8}}, {1, 0}, {48, 32}, {32, 48}});
-    EXPECT_EQ(inverted.state, BoxSweepState::InvalidInput);
+    EXPECT_EQ(inverted.status, BoxSweepStatus::InvalidInput);
 }
 
 }  // namespace

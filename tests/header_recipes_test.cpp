@@ -38,7 +38,7 @@ void resolveRecipe(Box<float>& player, Vec2<float> velocity, std::vector<Cell>& 
     tilesweep::Cell overlaps[16];
     tilesweep::ResolveOutput<float> out{contacts, 16, overlaps, 16};
     auto result = tilesweep::resolveMove({map, player, velocity * dt}, out);
-    if (result.status != tilesweep::Status::InvalidInput) player.pos = result.position;
+    if (result.status != tilesweep::ResolveStatus::InvalidInput) player.pos = result.position;
     bool onGround = result.blockedY && velocity.y > 0;       // y grows downward
     for (int k = 0; k < result.contactCount && k < 16; ++k)  // beyond 16: some, unspecified
         hits.push_back(contacts[k].tile);

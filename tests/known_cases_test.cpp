@@ -30,7 +30,7 @@ struct Level {
 
 template <class T>
 struct Frame {
-    SweepResult<T> result;
+    ResolveResult<T> result;
     std::vector<Contact<T>> contacts;
     std::vector<Cell> overlaps;
 };
@@ -66,7 +66,7 @@ TYPED_TEST(Resolve, fastBoxStopsAtThinWall) {
     using T = TypeParam;
     Level<T> level({"..........", ".....#....", ".........."});
     const Frame<T> f = resolve<T>(level, {{4, 18}, {10, 10}}, {200, 0});
-    EXPECT_EQ(f.result.status, Status::Blocked);
+    EXPECT_EQ(f.result.status, ResolveStatus::Blocked);
     EXPECT_EQ(f.result.position.x, T(70));
     EXPECT_EQ(f.result.position.y, T(18));
     ASSERT_EQ(f.contacts.size(), 1u);
@@ -90,7 +90,7 @@ TYPED_TEST(Resolve, rejectsCornerMissInsideSweptBounds) {
     using T = TypeParam;
     Level<T> level({"......", "..#...", "......", "......"});
     const Frame<T> f = resolve<T>(level, {{2, 40}, {8, 8}}, {60, -9});
-    EXPECT_EQ(f.result.status, Status::Moved);
+    EXPECT_EQ(f.result.status, ResolveStatus::Moved);
     EXPECT_TRUE(f.contacts.empty());
     EXPECT_EQ(f.result.position.x, T(62));
     EXPECT_EQ(f.result.position.y, T(31));
@@ -251,7 +251,7 @@ TYPED_TEST(Resolve, zeroDisplacementChangesNothing) {
     using T = TypeParam;
     Level<T> level({"..", "##"});
     const Frame<T> f = resolve<T>(level, {{3, 4}, {5, 12}}, {0, 0});
-    EXPECT_EQ(f.result.status, Status::Moved);
+    EXPECT_EQ(f.result.status, ResolveStatus::Moved);
     EXPECT_TRUE(f.contacts.empty());
     EXPECT_TRUE(f.overlaps.empty());
     EXPECT_EQ(f.result.position.x, T(3));
@@ -391,12 +391,12 @@ TYPED_TEST(Resolve, rejectsInvalidInput) {
                                                          {{{1, -inf}, {4, 4}}, {1, 1}}};
     for (const auto& [box, move] : bad) {
         const Frame<T> f = resolve<T>(level, box, move);
-        EXPECT_EQ(f.result.status, Status::InvalidInput);
+        EXPECT_EQ(f.result.status, ResolveStatus::InvalidInput);
         EXPECT_EQ(f.result.contactCount, 0);
         EXPECT_FALSE(std::isnan(f.result.position.x) || std::isnan(f.result.position.y));
     }
     Level<T> badTile({".."}, {0, 0}, {0, 16});
-    EXPECT_EQ(resolve<T>(badTile, good, {1, 1}).result.status, Status::InvalidInput);
+    EXPECT_EQ(resolve<T>(badTile, good, {1, 1}).result.status, ResolveStatus::InvalidInput);
 }
 
 // Map edges: 0.1 as a float is 13421773 * 2^-27; 2 * 0.1f is exact, 3 * 0.1f needs 26 bits.

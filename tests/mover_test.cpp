@@ -179,7 +179,7 @@ void expectSameAsResolveMove(const scenarios::RandomScene<T>& scene, std::uint64
     const PreparedMap<T> map = prepareMap(scene.view());
     ASSERT_TRUE(map.isValid());
     std::vector<Contact<T>> expected(4096);
-    const SweepResult<T> s =
+    const ResolveResult<T> s =
         resolveMove<T>({scene.view(), scene.box, scene.move}, {expected.data(), 4096, nullptr, 0});
     const std::int32_t bound = maxContacts(scene.box.size, scene.view().tileSize);
     const std::string where = "case " + std::to_string(caseIndex) + ": " + scene.describe();
@@ -192,7 +192,7 @@ void expectSameAsResolveMove(const scenarios::RandomScene<T>& scene, std::uint64
     EXPECT_EQ(std::memcmp(&r.position, &s.position, sizeof r.position), 0)
         << where << " moveAndSlide " << r.position.x << "," << r.position.y << " resolveMove " << s.position.x
         << "," << s.position.y;
-    EXPECT_EQ(r.status == MoveStatus::Blocked, s.status == Status::Blocked) << where;
+    EXPECT_EQ(r.status == MoveStatus::Blocked, s.status == ResolveStatus::Blocked) << where;
     ASSERT_EQ(r.contactCount, s.contactCount) << where;
     EXPECT_EQ(r.startOverlapCount, s.startOverlapCount) << where;
     bool ground = false, ceiling = false, wall = false;

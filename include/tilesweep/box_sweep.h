@@ -14,7 +14,7 @@
 namespace tilesweep {
 
 /// What a box does against one tile over one move.
-enum class BoxSweepState : std::uint8_t {
+enum class BoxSweepStatus : std::uint8_t {
     Misses,             ///< I does not meet (0, 1): no contact
     Blocks,             ///< first contact at `time`, on `axis`
     StartsOverlapping,  ///< the box overlaps the tile at t = 0; it never blocks
@@ -34,8 +34,8 @@ struct BoxSweepInput {
 
 /// The result of one sweep.
 template <class T>
-struct BoxSweepOutput {
-    BoxSweepState state = BoxSweepState::InvalidInput;
+struct BoxSweepResult {
+    BoxSweepStatus status = BoxSweepStatus::InvalidInput;  ///< (named `state` before 0.3)
     Axis axis = Axis::Y;  ///< contact axis, when Blocks: the later entry; on an exact tie the
                           ///< exposed face if exactly one is, otherwise y
     T time = 0;           ///< time of impact, when Blocks: the exact one, in [0, 1), rounded to
@@ -44,9 +44,15 @@ struct BoxSweepOutput {
 
 /// Sweeps one box against one tile. Exact decisions; never NaN in the output.
 template <class T>
-[[nodiscard]] BoxSweepOutput<T> sweepBox(const BoxSweepInput<T>& input) noexcept;
+[[nodiscard]] BoxSweepResult<T> sweepBox(const BoxSweepInput<T>& input) noexcept;
 
-extern template BoxSweepOutput<float> sweepBox<float>(const BoxSweepInput<float>&) noexcept;
-extern template BoxSweepOutput<double> sweepBox<double>(const BoxSweepInput<double>&) noexcept;
+// The names before the one scheme of resolve.h, kept for one release. The result's field `state`
+// is now `status`: a field cannot be aliased, so code that reads it changes with the rename.
+using BoxSweepState [[deprecated("use tilesweep::BoxSweepStatus")]] = BoxSweepStatus;
+template <class T>
+using BoxSweepOutput [[deprecated("use tilesweep::BoxSweepResult")]] = BoxSweepResult<T>;
+
+extern template BoxSweepResult<float> sweepBox<float>(const BoxSweepInput<float>&) noexcept;
+extern template BoxSweepResult<double> sweepBox<double>(const BoxSweepInput<double>&) noexcept;
 
 }  // namespace tilesweep

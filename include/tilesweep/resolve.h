@@ -28,7 +28,7 @@
 //     tilesweep::Cell overlaps[16];
 //     tilesweep::ResolveOutput<float> out{contacts, 16, overlaps, 16};
 //     auto result = tilesweep::resolveMove({map, player, velocity * dt}, out);
-//     if (result.status != tilesweep::Status::InvalidInput) player.pos = result.position;
+//     if (result.status != tilesweep::ResolveStatus::InvalidInput) player.pos = result.position;
 //     bool onGround = result.blockedY && velocity.y > 0;       // y grows downward
 //     for (int k = 0; k < result.contactCount && k < 16; ++k)  // beyond 16: some, unspecified
 //         hits.push_back(contacts[k].tile);
@@ -38,7 +38,7 @@
 namespace tilesweep {
 
 /// Outcome of a resolve. `Blocked` means at least one contact was recorded.
-enum class Status : std::uint8_t { Moved, Blocked, InvalidInput };
+enum class ResolveStatus : std::uint8_t { Moved, Blocked, InvalidInput };
 
 /// One tile hit during a frame.
 template <class T>
@@ -51,7 +51,7 @@ struct Contact {
 
 /// What one frame moves: the box from its position by `displacement` through `map`.
 template <class T>
-struct SweepInput {
+struct ResolveInput {
     TileMapView<T> map;    ///< the grid; assumed to have passed validateTileMap
     Box<T> box;            ///< the box at the start of the frame; size > 0, all finite
     Vec2<T> displacement;  ///< the motion over the whole frame, finite; zero is valid
@@ -69,8 +69,8 @@ struct ResolveOutput {
 
 /// The result of one frame.
 template <class T>
-struct SweepResult {
-    Status status = Status::InvalidInput;
+struct ResolveResult {
+    ResolveStatus status = ResolveStatus::InvalidInput;
     Vec2<T> position{};                  ///< final box position; the start position on InvalidInput
     std::int32_t contactCount = 0;       ///< contacts in the frame; more than capacity means truncated
     std::int32_t startOverlapCount = 0;  ///< solid cells the box overlapped at the start, likewise
@@ -83,27 +83,36 @@ struct SweepResult {
 /// True when the input can be resolved: finite values, box size > 0, map header sane
 /// (finite origin, tile sizes > 0, non-negative dimensions, cells present).
 template <class T>
-[[nodiscard]] bool isValid(const SweepInput<T>& input) noexcept;
+[[nodiscard]] bool isValid(const ResolveInput<T>& input) noexcept;
 
 /// Resolves one frame. Contacts are listed step by step in the order they happen, and within
 /// a step by row, then column; start overlaps by row, then column. On invalid input returns
-/// Status::InvalidInput with the start position (zero motion) and no lists.
+/// ResolveStatus::InvalidInput with the start position (zero motion) and no lists.
 template <class T>
-[[nodiscard]] SweepResult<T> resolveMove(const SweepInput<T>& input, const ResolveOutput<T>& output) noexcept;
+[[nodiscard]] ResolveResult<T> resolveMove(const ResolveInput<T>& input,
+                                           const ResolveOutput<T>& output) noexcept;
 
 /// resolveMove<float> without the template argument, so that a braced input works:
 /// resolveMove({map, box, displacement}, output).
-[[nodiscard]] SweepResult<float> resolveMove(const SweepInput<float>& input,
-                                             const ResolveOutput<float>& output) noexcept;
+[[nodiscard]] ResolveResult<float> resolveMove(const ResolveInput<float>& input,
+                                               const ResolveOutput<float>& output) noexcept;
 /// resolveMove<double> without the template argument.
-[[nodiscard]] SweepResult<double> resolveMove(const SweepInput<double>& input,
-                                              const ResolveOutput<double>& output) noexcept;
+[[nodiscard]] ResolveResult<double> resolveMove(const ResolveInput<double>& input,
+                                                const ResolveOutput<double>& output) noexcept;
 
-extern template bool isValid<float>(const SweepInput<float>&) noexcept;
-extern template bool isValid<double>(const SweepInput<double>&) noexcept;
-extern template SweepResult<float> resolveMove<float>(const SweepInput<float>&,
-                                                      const ResolveOutput<float>&) noexcept;
-extern template SweepResult<double> resolveMove<double>(const SweepInput<double>&,
-                                                        const ResolveOutput<double>&) noexcept;
+// The names before this scheme (<Op>Input, <Op>Result, <Op>Status for resolveMove, moveAndSlide
+// and sweepBox alike), kept for one release; a use gets a deprecation warning.
+using Status [[deprecated("use tilesweep::ResolveStatus")]] = ResolveStatus;
+template <class T>
+using SweepInput [[deprecated("use tilesweep::ResolveInput")]] = ResolveInput<T>;
+template <class T>
+using SweepResult [[deprecated("use tilesweep::ResolveResult")]] = ResolveResult<T>;
+
+extern template bool isValid<float>(const ResolveInput<float>&) noexcept;
+extern template bool isValid<double>(const ResolveInput<double>&) noexcept;
+extern template ResolveResult<float> resolveMove<float>(const ResolveInput<float>&,
+                                                        const ResolveOutput<float>&) noexcept;
+extern template ResolveResult<double> resolveMove<double>(const ResolveInput<double>&,
+                                                          const ResolveOutput<double>&) noexcept;
 
 }  // namespace tilesweep

@@ -39,17 +39,17 @@ struct FindHitsInSweptBounds {
 /// Resolves one frame with the swept-bounds broadphase, with the reciprocal of the map's tile
 /// size computed once per map by the caller; otherwise as resolveMoveTwin (lean).
 template <class T>
-[[nodiscard]] inline SweepResult<T> resolveMoveGrid(const SweepInput<T>& input,
-                                                    const ResolveOutput<T>& output,
-                                                    TileReciprocal<T> reciprocal) noexcept {
+[[nodiscard]] inline ResolveResult<T> resolveMoveGrid(const ResolveInput<T>& input,
+                                                      const ResolveOutput<T>& output,
+                                                      TileReciprocal<T> reciprocal) noexcept {
     return detail::resolveFrame<T, detail::CellIndexing::Lean>(input, output, reciprocal,
                                                                detail::FindHitsInSweptBounds{});
 }
 
 /// As above, the reciprocal computed for this frame (resolveMove's signature shape).
 template <class T>
-[[nodiscard]] inline SweepResult<T> resolveMoveGrid(const SweepInput<T>& input,
-                                                    const ResolveOutput<T>& output) noexcept {
+[[nodiscard]] inline ResolveResult<T> resolveMoveGrid(const ResolveInput<T>& input,
+                                                      const ResolveOutput<T>& output) noexcept {
     return resolveMoveGrid(input, output, reciprocalOf(input.map));
 }
 

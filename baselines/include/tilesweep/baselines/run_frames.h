@@ -25,8 +25,8 @@ std::vector<FrameResult<T>> runFrames(const Scene<T>& scene, Resolve resolve) {
     std::vector<Contact<T>> contacts(16);
     std::vector<Cell> overlaps(16);
     for (const Vec2<T>& move : scene.moves) {
-        const SweepInput<T> input{scene.map.view(), {start, scene.box.size}, move};
-        SweepResult<T> r{};
+        const ResolveInput<T> input{scene.map.view(), {start, scene.box.size}, move};
+        ResolveResult<T> r{};
         for (;;) {
             r = resolve(input, ResolveOutput<T>{contacts.data(), static_cast<std::int32_t>(contacts.size()),
                                                 overlaps.data(), static_cast<std::int32_t>(overlaps.size())});

@@ -221,8 +221,8 @@ inline std::int32_t listStartOverlaps(const TileMapView<T>& map, const StepFrame
 
 /// The frame loop (at most two steps), with the broadphase `findHits(map, frame, hits)`.
 template <class T, CellIndexing I, class FindHits>
-[[nodiscard]] inline SweepResult<T> resolveFrame(const SweepInput<T>& in, const ResolveOutput<T>& out,
-                                                 TileReciprocal<T> reciprocal, FindHits findHits) noexcept {
+[[nodiscard]] inline ResolveResult<T> resolveFrame(const ResolveInput<T>& in, const ResolveOutput<T>& out,
+                                                   TileReciprocal<T> reciprocal, FindHits findHits) noexcept {
     const TileMapView<T>& map = in.map;
     StepFrame<T, I> f{{in.box.pos.x, in.box.pos.y},
                       {in.box.pos.x + in.box.size.x, in.box.pos.y + in.box.size.y},
@@ -232,8 +232,8 @@ template <class T, CellIndexing I, class FindHits>
                       {map.columns, map.rows},
                       {reciprocal.x, reciprocal.y}};
     const T size[2] = {in.box.size.x, in.box.size.y};
-    SweepResult<T> result;
-    result.status = Status::Moved;
+    ResolveResult<T> result;
+    result.status = ResolveStatus::Moved;
     result.startOverlapCount = listStartOverlaps(map, f, out.startOverlaps, out.startOverlapCapacity);
     std::int32_t used = 0;
     std::int32_t total = 0;
@@ -276,7 +276,7 @@ template <class T, CellIndexing I, class FindHits>
     // A second step that was not resolved (two contacts already) leaves its motion unapplied.
     result.position = {f.lo[0], f.lo[1]};
     result.contactCount = total;
-    if (total > 0) result.status = Status::Blocked;
+    if (total > 0) result.status = ResolveStatus::Blocked;
     return result;
 }
 
@@ -331,9 +331,9 @@ struct FindHitsInPathOrder {
 /// map's tile size computed once per map by the caller (reciprocalOf). Contacts step by step,
 /// within a step by row then column; a count above capacity means truncated. Input assumed valid.
 template <class T>
-[[nodiscard]] inline SweepResult<T> resolveMoveTwin(const SweepInput<T>& input,
-                                                    const ResolveOutput<T>& output,
-                                                    TileReciprocal<T> reciprocal) noexcept {
+[[nodiscard]] inline ResolveResult<T> resolveMoveTwin(const ResolveInput<T>& input,
+                                                      const ResolveOutput<T>& output,
+                                                      TileReciprocal<T> reciprocal) noexcept {
     return detail::resolveFrame<T, detail::CellIndexing::Lean>(input, output, reciprocal,
                                                                detail::FindHitsInPathOrder{});
 }
@@ -341,8 +341,8 @@ template <class T>
 /// As above, the reciprocal computed for this frame: the same signature shape as
 /// tilesweep::resolveMove, so it can be swapped in.
 template <class T>
-[[nodiscard]] inline SweepResult<T> resolveMoveTwin(const SweepInput<T>& input,
-                                                    const ResolveOutput<T>& output) noexcept {
+[[nodiscard]] inline ResolveResult<T> resolveMoveTwin(const ResolveInput<T>& input,
+                                                      const ResolveOutput<T>& output) noexcept {
     return resolveMoveTwin(input, output, reciprocalOf(input.map));
 }
 
@@ -351,8 +351,8 @@ template <class T>
 /// per cell on the x86-64 baseline). It decides as resolveMoveTwin does wherever the tile size
 /// is a power of two.
 template <class T>
-[[nodiscard]] inline SweepResult<T> resolveMoveTwinLibm(const SweepInput<T>& input,
-                                                        const ResolveOutput<T>& output) noexcept {
+[[nodiscard]] inline ResolveResult<T> resolveMoveTwinLibm(const ResolveInput<T>& input,
+                                                          const ResolveOutput<T>& output) noexcept {
     return detail::resolveFrame<T, detail::CellIndexing::Libm>(input, output, TileReciprocal<T>{T(0), T(0)},
                                                                detail::FindHitsInPathOrder{});
 }
