@@ -24,7 +24,8 @@ TEST(DeprecatedNames, codeWrittenWithTheOldNamesStillResolves) {
     const tilesweep::SweepResult<float> r = tilesweep::resolveMove(input, tilesweep::ResolveOutput<float>{});
     EXPECT_EQ(r.status, tilesweep::Status::Blocked);
     EXPECT_EQ(r.position.y, 6.0f);
-    const tilesweep::BoxSweepOutput<float> s = tilesweep::sweepBox<float>({{{2, 2}, {10, 10}}, {0, 8}, {0, 16}, {16, 32}});
+    const tilesweep::BoxSweepOutput<float> s =
+        tilesweep::sweepBox<float>({{{2, 2}, {10, 10}}, {0, 8}, {0, 16}, {16, 32}});
     EXPECT_EQ(s.status, tilesweep::BoxSweepState::Blocks);
 }
 
