@@ -35,7 +35,7 @@ struct BoxSweepInput {
 /// The result of one sweep.
 template <class T>
 struct BoxSweepResult {
-    BoxSweepStatus status = BoxSweepStatus::InvalidInput;  ///< (named `state` before 0.3)
+    BoxSweepStatus status = BoxSweepStatus::InvalidInput;  ///< (named `state` before the one scheme)
     Axis axis = Axis::Y;  ///< contact axis, when Blocks: the later entry; on an exact tie the
                           ///< exposed face if exactly one is, otherwise y
     T time = 0;           ///< time of impact, when Blocks: the exact one, in [0, 1), rounded to

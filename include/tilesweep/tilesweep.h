@@ -22,7 +22,7 @@
  *     ts_map_f* map = NULL;  // cells: columns * rows bytes, row by row, 1 = solid
  *     ts_map_desc_f desc = {{0, 0}, {16, 16}, columns, rows, cells, NULL};  // NULL: malloc
  *     ts_error error = ts_map_create_f(&desc, &map);  // copies the cells
- *     if (error != TS_OK) return fail(ts_error_message(error));
+ *     if (error != TS_OK) return fail(ts_error_message((int)error));
  *     ts_vec2_f velocity = {vx, vy};
  *     ts_mover_f mover = {{{x, y}, {w, h}}, {velocity.x * dt, velocity.y * dt}};
  *     ts_result_f r;
