@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // ulpAbove (src/exact_double.h) on every kind of finite double: zero, subnormals, the normals
 // whose ulp is subnormal, and the rest: always the spacing of doubles just above |v|.
-#include "src/exact_double.h"
+#include "exact_double.h"
 
 #include <gtest/gtest.h>
 
