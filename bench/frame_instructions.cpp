@@ -11,10 +11,7 @@
 //
 // Outside valgrind the client requests do nothing, and the program just runs the frames.
 #include "frame_scenarios.h"
-
-#include "tilesweep/baselines/grid_resolve.h"
-#include "tilesweep/baselines/twin_resolve.h"
-#include "tilesweep/resolve.h"
+#include "side_by_side.h"
 
 #if __has_include(<valgrind/callgrind.h>)
 #include <valgrind/callgrind.h>
@@ -33,7 +30,7 @@ namespace {
 using tilesweep::bench::FrameKind;
 using tilesweep::bench::FrameScenario;
 
-enum class Impl { Tilesweep, Twin, Grid };
+using tilesweep::bench::Impl;
 
 const char* nameOf(Impl impl) {
     switch (impl) {
@@ -43,6 +40,8 @@ const char* nameOf(Impl impl) {
             return "Twin";
         case Impl::Grid:
             return "Grid";
+        case Impl::TwinLibm:
+            return "TwinLibm";
     }
     return "?";
 }
@@ -60,14 +59,7 @@ template <class T, Impl I>
     std::size_t k = 0;
     for (std::size_t n = 0; n < frames; ++n) {
         const tilesweep::ResolveInput<T> in{view, s.boxes[k], s.moves[k]};
-        tilesweep::ResolveResult<T> r{};
-        if constexpr (I == Impl::Tilesweep) {
-            r = tilesweep::resolveMove<T>(in, out);
-        } else if constexpr (I == Impl::Twin) {
-            r = tilesweep::baselines::resolveMoveTwin<T>(in, out, reciprocal);
-        } else {
-            r = tilesweep::baselines::resolveMoveGrid<T>(in, out, reciprocal);
-        }
+        const tilesweep::ResolveResult<T> r = tilesweep::bench::resolveWith<T, I>(in, out, reciprocal);
         sum += static_cast<double>(r.position.x) + static_cast<double>(r.position.y);
         k = (k + 1) & (tilesweep::bench::kFrameCount - 1);
     }

@@ -25,6 +25,7 @@
 #include "oracle/exact/exact_resolve.h"
 #include "oracle/seed/seed_resolve.h"
 #include "oracle/substep/substep_float.h"
+#include "side_by_side.h"
 
 #include "tilesweep/baselines/grid_resolve.h"
 #include "tilesweep/baselines/twin_resolve.h"
@@ -248,7 +249,7 @@ BENCHMARK(BM_Box2D_TimeOfImpact_Pairs);
 // free flight is the cheapest useful frame (no hit: the walk's cost alone); far from the origin
 // tilesweep's lattice needs wider integers; a zero move measures the fixed cost per call.
 
-enum class Impl { Tilesweep, Twin, Grid, TwinLibm };
+using tilesweep::bench::Impl;
 
 template <class T>
 const tilesweep::bench::FrameScenario<T>& frameScenario(tilesweep::bench::FrameKind kind, int speedArg) {
@@ -275,15 +276,7 @@ void frameLoop(benchmark::State& state, tilesweep::bench::FrameKind kind, int sp
     std::size_t k = 0;
     for (auto _ : state) {
         const tilesweep::ResolveInput<T> in{view, s.boxes[k], s.moves[k]};
-        if constexpr (I == Impl::Tilesweep) {
-            benchmark::DoNotOptimize(tilesweep::resolveMove<T>(in, out));
-        } else if constexpr (I == Impl::Twin) {
-            benchmark::DoNotOptimize(tilesweep::baselines::resolveMoveTwin<T>(in, out, reciprocal));
-        } else if constexpr (I == Impl::Grid) {
-            benchmark::DoNotOptimize(tilesweep::baselines::resolveMoveGrid<T>(in, out, reciprocal));
-        } else {
-            benchmark::DoNotOptimize(tilesweep::baselines::resolveMoveTwinLibm<T>(in, out));
-        }
+        benchmark::DoNotOptimize(tilesweep::bench::resolveWith<T, I>(in, out, reciprocal));
         benchmark::ClobberMemory();
         k = (k + 1) & (tilesweep::bench::kFrameCount - 1);
     }
