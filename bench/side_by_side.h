@@ -15,8 +15,9 @@ enum class Impl { Tilesweep, Twin, Grid, TwinLibm };
 
 /// One frame through `I`; `reciprocal` is the map's, prepared once as a game keeps it.
 template <class T, Impl I>
-[[gnu::always_inline]] inline ResolveResult<T> resolveWith(const ResolveInput<T>& in, const ResolveOutput<T>& out,
-                                                          const baselines::TileReciprocal<T>& reciprocal) noexcept {
+[[gnu::always_inline]] inline ResolveResult<T> resolveWith(
+    const ResolveInput<T>& in, const ResolveOutput<T>& out,
+    const baselines::TileReciprocal<T>& reciprocal) noexcept {
     if constexpr (I == Impl::Tilesweep) {
         return resolveMove<T>(in, out);
     } else if constexpr (I == Impl::Twin) {
