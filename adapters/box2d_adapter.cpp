@@ -158,7 +158,8 @@ std::vector<FrameResult<float>> runBox2D(const Scene<float>& scene) {
                 const bool onX = std::fabs(h.normal.x) > std::fabs(h.normal.y);
                 const Normal n{static_cast<std::int8_t>(onX ? (h.normal.x > 0 ? 1 : -1) : 0),
                                static_cast<std::int8_t>(onX ? 0 : (h.normal.y > 0 ? 1 : -1))};
-                frame.contacts.push_back({h.tile, n, frameTime});
+                frame.contacts.push_back(
+                    {h.tile, n, frameTime, {}});  // no position: the protocol carries none
             }
             // Slide: the rest of the motion without its component into the first hit's normal.
             r = (1 - best) * r;

@@ -84,7 +84,8 @@ std::vector<FrameResult<T>> tiePrefersX(const Scene<T>& scene) {
         });
         for (const std::size_t k : order) {
             const Contact<T>& c = t.contacts[k];
-            f.contacts.push_back({{c.tile.j, c.tile.i}, {c.normal.y, c.normal.x}, c.time});
+            f.contacts.push_back(
+                {{c.tile.j, c.tile.i}, {c.normal.y, c.normal.x}, c.time, {c.position.y, c.position.x}});
         }
         for (const Cell c : t.startOverlaps) f.startOverlaps.push_back({c.j, c.i});
         std::sort(f.startOverlaps.begin(), f.startOverlaps.end(),

@@ -210,7 +210,7 @@ void copyContacts(const tilesweep::Contact<T>* from, std::int32_t count,
                   typename Types<T>::ContactC* to) noexcept {
     for (std::int32_t k = 0; k < count; ++k) {
         const tilesweep::Contact<T>& c = from[k];
-        to[k] = {c.tile.i, c.tile.j, c.normal.x, c.normal.y, c.time};
+        to[k] = {c.tile.i, c.tile.j, c.normal.x, c.normal.y, c.time, {c.position.x, c.position.y}};
     }
 }
 

@@ -15,7 +15,8 @@
 //     a tile edge (FastAxis::cellOf); cell ranges (start overlaps, swept bounds, the walk's
 //     secondary range) are estimated and widened by a certified bound (proof_constants.h),
 //     which can only add cells for the exact tile test to reject (cell_range.h);
-//   - a contact time is rounded by roundTimeToFloat (time_rounding.h);
+//   - a contact time is rounded by roundTimeToFloat (time_rounding.h), and a contact's
+//     coordinate on the axis it slides on by roundPositionAtTime (contact_position.h);
 //   - final positions are exact doubles, rounded to float with the direction the contract asks.
 //
 // Double frames (admitDoubleFrame): every coordinate the solver forms is a double or an exact
@@ -24,12 +25,14 @@
 //   - a pair against a double compares exactly by monotonic rounding of its high part;
 //   - a time against a time is decided by a semi-static filter with a certified bound
 //     (compareProducts on pairs), refined exactly by expansion arithmetic inside it (Filtered);
-//   - a contact time is rounded by roundTimeToDouble (time_rounding.h);
+//   - a contact time is rounded by roundTimeToDouble (time_rounding.h), a contact's coordinate
+//     on the axis it slides on by roundPositionAtTime (contact_position.h);
 //   - a final position pair is rounded by the direction of its low part, and the amended rule's
 //     grid-line test is filtered; when the filter cannot decide, the frame goes to the lattice.
 
 #include "axis_sweep.h"
 #include "cell_range.h"
+#include "contact_position.h"
 #include "exact_double.h"
 #include "fast_axis.h"
 #include "fault_injection.h"
@@ -176,6 +179,16 @@ public:
         } else {
             return roundTimeToDouble(t, refined_, out);
         }
+    }
+
+    /// The box's coordinate on `a` at time t, start + t * displacement, rounded to nearest
+    /// (contact_position.h); the start itself at t = 0. False when the lattice must settle it.
+    bool positionAt(int a, const Time& t, T& out) noexcept {
+        if (highPartOf(t.num) == 0) {
+            out = start_[a];
+            return true;
+        }
+        return roundPositionAtTime<T>(axis_[a].low, axis_[a].disp, t.num, t.den, refined_, out);
     }
 
     // The final rounding (final_rounding.h). A zero reads +0 (exact + 0.0), as the lattice's

@@ -38,7 +38,8 @@
 //   walk    primaryAxis(), prepareWalk(p), secondaryCells(walk, entry, exit)
 //   box     start(a), nearEdge(a), farEdge(a), endOf(a), touchLow(a, e), touchHigh(a, e)
 //   tile    testTile(i, j) (axis_sweep.h's test on its numbers)
-//   result  roundTime(time, out), and for roundFinal (final_rounding.h): false = undecided.
+//   result  roundTime(time, out), positionAt(a, time, out) (the box's coordinate on `a` at that
+//           time, rounded to nearest), and for roundFinal (final_rounding.h): false = undecided.
 
 #include "axis_sweep.h"
 #include "cell_range.h"
@@ -91,6 +92,7 @@ public:
             sweepOneAxis(a, m_.nearEdge(1 - a), m_.farEdge(1 - a), m_.zeroTime(), nearOnly, first);
         }
         std::int32_t total = 0;
+        bool slides = false;  // step 1 hit one axis and the box moves on along the other
         if (first.any) {
             if (!finishStep(first)) return false;
             total = first.count;
@@ -100,6 +102,7 @@ public:
                 if (first.axisHit[a]) finalPos[a] = m_.touchLow(a, first.touch[a]);
             const int free = first.axisHit[0] ? 1 : 0;
             if (first.axisHit[0] != first.axisHit[1] && m_.axis(free).dir != 0) {
+                slides = true;
                 const int held = 1 - free;
                 const std::int32_t used = std::min(first.count, first.capacity);
                 Hits second{out.contacts + used, first.capacity - used};
@@ -116,7 +119,7 @@ public:
         result.contactCount = total;
         result.status = total > 0 ? ResolveStatus::Blocked : ResolveStatus::Moved;
         return roundFinal(m_, finalPos[0], 0, result.position.x) &&
-               roundFinal(m_, finalPos[1], 1, result.position.y);
+               roundFinal(m_, finalPos[1], 1, result.position.y) && placeContacts(out, first, slides, result);
     }
 
 private:
@@ -148,7 +151,7 @@ private:
         hits.time = t;
         hits.axisHit[a] = true;
         hits.touch[a] = touchEdge;
-        if (hits.count < hits.capacity) hits.store[hits.count] = {cell, normalOn(a), T(0)};
+        if (hits.count < hits.capacity) hits.store[hits.count] = {cell, normalOn(a), T(0), {}};
         ++hits.count;
     }
 
@@ -163,6 +166,27 @@ private:
             std::sort(hits.store, hits.store + stored, [](const Contact<T>& a, const Contact<T>& b) {
                 return a.tile.j != b.tile.j ? a.tile.j < b.tile.j : a.tile.i < b.tile.i;
             });
+        return true;
+    }
+
+    /// Writes the position of every stored contact (Contact::position): the final position,
+    /// except on the free axis of step-1 contacts the box slides on from: there the box was at
+    /// start + s * displacement at the contact time s, rounded to nearest (the arithmetic's
+    /// positionAt). On every other axis the box does not move after the contact, so its
+    /// coordinate then is the final one. Costs nothing when no contact is stored; false when the
+    /// arithmetic could not settle the free coordinate.
+    bool placeContacts(const ResolveOutput<T>& out, const Hits& first, bool slides,
+                       const ResolveResult<T>& result) noexcept {
+        const std::int32_t stored =
+            std::min(result.contactCount, std::max<std::int32_t>(out.contactCapacity, 0));
+        for (std::int32_t k = 0; k < stored; ++k) out.contacts[k].position = result.position;
+        const std::int32_t storedFirst = std::min(first.count, first.capacity);
+        if (!slides || storedFirst == 0) return true;
+        const int free = first.axisHit[0] ? 1 : 0;
+        T at = 0;
+        if (!m_.positionAt(free, first.time, at)) return false;
+        for (std::int32_t k = 0; k < storedFirst; ++k)
+            (free == 0 ? first.store[k].position.x : first.store[k].position.y) = at;
         return true;
     }
 

@@ -172,9 +172,10 @@ template <class Num>
     }
 }
 
-/// Rounds num / den to T, to nearest (ties to even), for 0 <= num and 0 < den.
+/// Rounds (num / den) * 2^exponent to T, to nearest (ties to even), for 0 <= num and 0 < den:
+/// a frame time (exponent 0), or a lattice coordinate num / den (exponent the lattice's).
 template <class T, class Num>
-[[nodiscard]] inline T roundRatioToNearest(const Num& num, const Num& den) noexcept {
+[[nodiscard]] inline T roundRatioToNearest(const Num& num, const Num& den, int exponent = 0) noexcept {
     constexpr int p = std::numeric_limits<T>::digits;
     const int nTop = num.highestBit();
     if (nTop < 0) return T(0);
@@ -187,10 +188,12 @@ template <class T, class Num>
     const Num divisor = shift >= 0 ? den : den.shiftedLeft(-shift);
     std::uint64_t quotient = 0;
     if constexpr (std::is_same<Num, Int128>::value) {
-        // The scaled numerator is below 2^(span + 60) < 2^127: one native division.
+        // The scaled numerator is below 2^(span + 60), and a coordinate's unscaled numerator (a
+        // sum of two products) below 2^(2*span + 2): both below 2^127 (bitsNeeded). One division.
         quotient = static_cast<std::uint64_t>(remainder.v / divisor.v);
         remainder = {remainder.v % divisor.v};
-        return roundMagnitude<T>(quotient, -shift, !remainder.isZero(), MagnitudeRounding::NearestEven);
+        return roundMagnitude<T>(quotient, exponent - shift, !remainder.isZero(),
+                                 MagnitudeRounding::NearestEven);
     }
     // Restoring division: the quotient has at most p + 4 bits.
     for (int b = p + 4; b >= 0; --b) {
@@ -200,7 +203,7 @@ template <class T, class Num>
             quotient |= std::uint64_t{1} << b;
         }
     }
-    return roundMagnitude<T>(quotient, -shift, !remainder.isZero(), MagnitudeRounding::NearestEven);
+    return roundMagnitude<T>(quotient, exponent - shift, !remainder.isZero(), MagnitudeRounding::NearestEven);
 }
 
 }  // namespace tilesweep::detail

@@ -3,7 +3,8 @@
 
 // The lattice arithmetic of the frame loop (frame_loop.h): a frame scaled onto an integer
 // lattice (lattice.h) and solved there exactly, then the final position and the frame times
-// rounded back to T: positions by the contract's rule (final_rounding.h), times to nearest.
+// rounded back to T: positions by the contract's rule (final_rounding.h), times and a contact's
+// coordinate on the axis it slides on (positionAt) to nearest.
 // It never answers "undecided": it is the fallback of the fast path (fast_frame.h) and the
 // solver of every frame the fast path does not admit.
 
@@ -154,6 +155,21 @@ public:
 
     bool roundTime(const Time& t, T& out) const noexcept {
         out = roundRatioToNearest<T>(t.num, t.den);
+        return true;
+    }
+
+    /// The box's coordinate on `a` at time t, (low * den + num * disp) / den on the lattice,
+    /// rounded to nearest, ties to even (a negative value that rounds to zero gives -0, as IEEE
+    /// rounding does); the start itself at t = 0.
+    bool positionAt(int a, const Time& t, T& out) const noexcept {
+        if (t.num.isZero()) {
+            out = start_[a];
+            return true;
+        }
+        const Motion& m = motion_[a];
+        const Num exact = m.low * t.den + t.num * m.disp;
+        const T magnitude = roundRatioToNearest<T>(exact.magnitude(), t.den, exponent_);
+        out = exact.isNegative() ? -magnitude : magnitude;
         return true;
     }
 

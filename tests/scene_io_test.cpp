@@ -553,8 +553,8 @@ template <class T>
 std::vector<FrameResult<T>> sampleFrames() {
     FrameResult<T> first;
     first.position = {T(0.1), -T(0)};
-    first.contacts = {Contact<T>{Cell{3, 2}, Normal{0, -1}, T(1) / T(3)},
-                      Contact<T>{Cell{-1, 40000}, Normal{1, 0}, T(0)}};
+    first.contacts = {Contact<T>{Cell{3, 2}, Normal{0, -1}, T(1) / T(3), {}},
+                      Contact<T>{Cell{-1, 40000}, Normal{1, 0}, T(0), {}}};
     first.startOverlaps = {Cell{1, 2}, Cell{0, -7}};
     FrameResult<T> second;
     second.position = {T(16), T(36)};
@@ -636,7 +636,7 @@ std::vector<FrameResult<T>> extremeFrames() {
     for (T x : values) {
         FrameResult<T> frame;
         frame.position = {x, -x};
-        frame.contacts = {Contact<T>{Cell{0, 0}, Normal{0, 1}, x < 1 && x > 0 ? x : T(0.5)}};
+        frame.contacts = {Contact<T>{Cell{0, 0}, Normal{0, 1}, x < 1 && x > 0 ? x : T(0.5), {}}};
         frames.push_back(frame);
     }
     return frames;

@@ -47,6 +47,14 @@ struct Contact {
     Normal normal;  ///< points out of the tile face that was hit, against the motion
     T time;         ///< fraction of the whole frame elapsed at the hit: the exact one, in [0, 1),
                     ///< rounded to nearest (so 1 for a hit within half an ulp of the frame end)
+    /// The box's position (its min corner, as Box::pos) at the hit, where the time alone cannot
+    /// place it once the path bends. On the normal's axis the box stops at the hit, so that
+    /// coordinate is the result's position there (rounded by the contract's rule). On the other
+    /// axis: when the box slides on along it after the hit (a first-step hit on one axis only,
+    /// the other still moving), start + s * displacement at the exact hit time s, rounded to
+    /// nearest, ties to even (the start itself when s = 0); otherwise (a second-step hit, a
+    /// corner hit on both axes, an axis that does not move) the result's position there too.
+    Vec2<T> position;
 };
 
 /// What one frame moves: the box from its position by `displacement` through `map`.

@@ -38,7 +38,7 @@
 
 /* The version of this header; CMakeLists.txt reads the project version from these lines. */
 #define TILESWEEP_VERSION_MAJOR 0
-#define TILESWEEP_VERSION_MINOR 2
+#define TILESWEEP_VERSION_MINOR 3
 #define TILESWEEP_VERSION_PATCH 0
 /* major * 10000 + minor * 100 + patch, as ts_get_version() returns it. */
 #define TILESWEEP_VERSION \
@@ -187,16 +187,23 @@ typedef struct ts_result_d {
     ts_vec2_d clipped_displacement;
 } ts_result_d;
 
-/** One tile hit: cell (i, j), the normal leaving its face, the fraction of the frame elapsed. */
+/** One tile hit: cell (i, j), the normal leaving its face, the fraction of the frame elapsed
+ *  (the exact one rounded to nearest), and where the box was then (0.3). */
 typedef struct ts_contact_f {
     int32_t i, j;
     int8_t nx, ny;
     float time;
+    /** The box's position (pos, its min corner) at the hit. On the normal's axis: the result's
+     *  position there (the box stops at the hit). On the other axis, when the box slides on along
+     *  it after a first-step hit: start + time * displacement, exact, rounded to nearest; otherwise
+     *  the result's position there too. */
+    ts_vec2_f position;
 } ts_contact_f;
 typedef struct ts_contact_d {
     int32_t i, j;
     int8_t nx, ny;
     double time;
+    ts_vec2_d position;
 } ts_contact_d;
 
 /** The version of the library loaded: major * 10000 + minor * 100 + patch (TILESWEEP_VERSION). */

@@ -116,11 +116,20 @@ ExactFrame resolveFrame(const ExactTileMap& map, const std::vector<SolidTile>& t
                 normal.y = static_cast<std::int8_t>(-signOf(r.y));
                 zeroY = true;
             }
-            frame.contacts.push_back({b.cell, normal, frameTime, step, b.sweep.tie});
+            frame.contacts.push_back({b.cell, normal, frameTime, step, b.sweep.tie, {}});
         }
         p = {p.x + s * r.x, p.y + s * r.y};
         const Rational rest = 1 - s;
         r = {zeroX ? Rational(0) : Rational(rest * r.x), zeroY ? Rational(0) : Rational(rest * r.y)};
+        // Where this step's contacts happened, and on which axes the box moves on from there
+        // (there is no step after the last one).
+        const bool lastStep = step == kMaxSteps;
+        for (ExactContact& c : frame.contacts) {
+            if (c.step != step) continue;
+            c.position = p;
+            c.movesOnX = !lastStep && r.x != 0;
+            c.movesOnY = !lastStep && r.y != 0;
+        }
         elapsed = frameTime;
         remaining *= rest;
     }
@@ -165,8 +174,17 @@ FrameResult<T> roundFrame(const ExactFrame& frame) {
         roundFinalCoordinate<T>(frame.position.y, startY, frame.size.y, frame.gridOrigin.y,
                                 frame.tileSize.y)};
     result.contacts.reserve(frame.contacts.size());
+    // A contact's coordinate on an axis it slides on: to nearest, or the start's own bits (a -0
+    // start stays -0) when it is the start.
+    const auto atContact = [](const Rational& exact, const Rational& start, T startBits) {
+        return exact == start ? startBits : fromRational<T>(exact, Rounding::NearestEven);
+    };
     for (const ExactContact& c : frame.contacts) {
-        result.contacts.push_back({c.tile, c.normal, fromRational<T>(c.time, Rounding::NearestEven)});
+        const Vec2<T> position{
+            c.movesOnX ? atContact(c.position.x, frame.start.x, startX) : result.position.x,
+            c.movesOnY ? atContact(c.position.y, frame.start.y, startY) : result.position.y};
+        result.contacts.push_back(
+            {c.tile, c.normal, fromRational<T>(c.time, Rounding::NearestEven), position});
     }
     result.startOverlaps = frame.startOverlaps;
     return result;

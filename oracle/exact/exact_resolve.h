@@ -37,6 +37,9 @@ struct ExactContact {
     Rational time;          ///< fraction of the whole frame elapsed at the hit, in [0, 1)
     std::int32_t step = 1;  ///< 1 or 2: the step of the frame loop that recorded it
     bool tie = false;       ///< the two axes entered at the same time (the tie rule chose the axis)
+    ExactVec2 position;     ///< the box's position at the hit, exactly
+    bool movesOnX = false;  ///< the box still moves on x after the hit (a slide along it)
+    bool movesOnY = false;  ///< likewise on y
 };
 
 /// One frame, exactly.
@@ -65,7 +68,10 @@ template <class T>
 /// frame's start (the representable value nearest the exact one between start and it), or
 /// toward minus infinity where that would carry the box's far edge over a grid line the exact
 /// far edge had not passed (roundFinalCoordinate); frame times rounded to nearest, ties to even.
-/// Decisions (tiles, normals, order) are unchanged.
+/// A contact's position (Contact::position, resolve.h): on an axis the box still moves on after
+/// the hit, its exact coordinate at the hit rounded to nearest, ties to even (the start itself
+/// when that is the start); on any other axis the box does not move again in the frame, and it
+/// is the frame's rounded position there. Decisions (tiles, normals, order) are unchanged.
 template <class T>
 [[nodiscard]] FrameResult<T> roundFrame(const ExactFrame& frame);
 

@@ -82,7 +82,7 @@ FrameResult<T> resolveFrameSeed(const TileMap<T>& map, const Box<T>& box, Vec2<T
             current = {current.x - back * velocity.x, current.y - back * velocity.y};
             const Normal normal =
                 timeX < timeY ? Normal{0, againstSign(velocity.y)} : Normal{againstSign(velocity.x), 0};
-            result.contacts.push_back({{i, j}, normal, time});
+            result.contacts.push_back({{i, j}, normal, time, {}});  // the seed places no contact
         }
     }
     result.position = current;

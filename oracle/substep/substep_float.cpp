@@ -90,7 +90,7 @@ std::vector<SubstepFrame<T>> resolveSceneSubstepFloat(const Scene<T>& scene, std
                     const Normal normal =
                         guessNormal(!overlapsX(before, tile), !overlapsY(before, tile), signOf(d.x),
                                     signOf(d.y), std::fabs(d.x) > std::fabs(d.y));
-                    out.frame.contacts.push_back({c, normal, static_cast<T>(k) / n});
+                    out.frame.contacts.push_back({c, normal, static_cast<T>(k) / n, {}});  // no position
                 }
             }
             if (!out.frame.contacts.empty()) {

@@ -104,8 +104,11 @@ std::vector<SubstepFrame<T>> resolveSceneSubstep(const Scene<T>& scene, std::int
                 const ExactRect tile = map.tileRect(cell.i, cell.j);
                 const bool separatedX = !(stopped.min.x < tile.max.x && stopped.max.x > tile.min.x);
                 const bool separatedY = !(stopped.min.y < tile.max.y && stopped.max.y > tile.min.y);
-                out.frame.contacts.push_back(
-                    {cell, guessNormal(separatedX, separatedY, signOf(d.x), signOf(d.y), xDominant), time});
+                out.frame.contacts.push_back(  // no position: the substeps judge decisions only
+                    {cell,
+                     guessNormal(separatedX, separatedY, signOf(d.x), signOf(d.y), xDominant),
+                     time,
+                     {}});
             }
         }
         out.frame.position = {

@@ -157,7 +157,7 @@ struct StepHits {
         time = t;
         if (!axisHit[axis]) face[axis] = touch;
         axisHit[axis] = true;
-        if (count < capacity) store[count] = {cell, normal, t};
+        if (count < capacity) store[count] = {cell, normal, t, {}};  // the twin places no contact
         ++count;
     }
 };
