@@ -45,6 +45,10 @@ template <class T>
 template <class T>
 [[nodiscard]] std::string matchesExactReferenceBitForBit(const Scene<T>& scene);
 
+/// Every contact's position equals the exact reference's, bit for bit (tilesweep's resolver).
+template <class T>
+[[nodiscard]] std::string placesContactsLikeTheExactReference(const Scene<T>& scene);
+
 /// The exact reference itself misses no contact the substep oracle sees.
 template <class T>
 [[nodiscard]] std::string exactReferenceAgreesWithSubsteps(const Scene<T>& scene);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The claims against the exact reference (claims.h): the resolver bit for bit, sweepBox tile by
-// tile, and the reference itself against the exact substep oracle.
+// The claims against the exact reference (claims.h): the resolver bit for bit, its contact
+// positions too, sweepBox tile by tile, and the reference itself against the exact substep oracle.
 #include "claim_support.h"
 #include "claims.h"
 #include "oracle/exact/exact_resolve.h"
@@ -9,6 +9,8 @@
 #include "tilesweep/box_sweep.h"
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 namespace tilesweep::properties {
 
@@ -18,6 +20,26 @@ using namespace claim_support;
 template <class T>
 std::string matchesExactReferenceBitForBit(const Scene<T>& scene) {
     return diffFrames(resolveUnderTest(scene), oracle::resolveSceneExactRounded(scene));
+}
+
+/// Every contact's position (Contact::position) equals the exact reference's, bit for bit, on
+/// top of everything matchesExactReferenceBitForBit compares. tilesweep's own resolver, always:
+/// the resolve protocol carries no contact position (an internal claim).
+template <class T>
+std::string placesContactsLikeTheExactReference(const Scene<T>& scene) {
+    const std::vector<FrameResult<T>> got = runScene(scene);
+    const std::vector<FrameResult<T>> want = oracle::resolveSceneExactRounded(scene);
+    if (std::string decisions = diffFrames(got, want); !decisions.empty()) return decisions;
+    for (std::size_t f = 0; f < got.size(); ++f)
+        for (std::size_t k = 0; k < got[f].contacts.size(); ++k) {
+            const Vec2<T> a = got[f].contacts[k].position;
+            const Vec2<T> b = want[f].contacts[k].position;
+            const std::string at =
+                "frame " + std::to_string(f) + ": contact " + std::to_string(k) + " position ";
+            if (!sameBits(a.x, b.x)) return at + "x " + hex(a.x) + " != " + hex(b.x);
+            if (!sameBits(a.y, b.y)) return at + "y " + hex(a.y) + " != " + hex(b.y);
+        }
+    return {};
 }
 
 /// The same held against the exact reference instead of the resolver: an independent check of
@@ -67,6 +89,8 @@ std::string sweepBoxMatchesTheReference(const Scene<T>& scene) {
 
 template std::string matchesExactReferenceBitForBit<float>(const Scene<float>&);
 template std::string matchesExactReferenceBitForBit<double>(const Scene<double>&);
+template std::string placesContactsLikeTheExactReference<float>(const Scene<float>&);
+template std::string placesContactsLikeTheExactReference<double>(const Scene<double>&);
 template std::string exactReferenceAgreesWithSubsteps<float>(const Scene<float>&);
 template std::string exactReferenceAgreesWithSubsteps<double>(const Scene<double>&);
 template std::string sweepBoxMatchesTheReference<float>(const Scene<float>&);

@@ -26,6 +26,7 @@ const std::vector<Claim<T>>& allClaims() {
         {"obeysTheSafetyRules", &obeysTheSafetyRules<T>, S::Safety},
         {"substepOracleFindsNoMissedContact", &substepOracleFindsNoMissedContact<T>, S::Safety},
         {"exactReferenceAgreesWithSubsteps", &exactReferenceAgreesWithSubsteps<T>, S::Internal},
+        {"placesContactsLikeTheExactReference", &placesContactsLikeTheExactReference<T>, S::Internal},
         {"zeroMoveChangesNothing", &zeroMoveChangesNothing<T>, S::Safety},
         {"scalingByPowerOfTwoScalesTheResult", &scalingByPowerOfTwoScalesTheResult<T>, S::Safety},
         {"mirroringXMirrorsTheResult", &mirroringMirrorsTheResult<T, Axis::X>, S::Safety},

@@ -156,6 +156,9 @@ std::vector<std::string> classifyScene(const Scene<T>& scene) {
     bool startOverlap = false;
     bool down = false;
     bool timeTie = false;
+    bool slide = false;         // a contact the box slides on from (Contact::position's own number)
+    bool lateSlide = false;     // the same at a time after 0
+    bool roundedSlide = false;  // the same at a coordinate T cannot hold
     for (const auto& f : frames) {
         hit = hit || !f.contacts.empty();
         startOverlap = startOverlap || !f.startOverlaps.empty();
@@ -166,6 +169,13 @@ std::vector<std::string> classifyScene(const Scene<T>& scene) {
             touch0 = touch0 || c.time == 0;
             twoStep = twoStep || c.step == 2;
             timeTie = timeTie || halfwayBetweenValues<T>(c.time);
+            if (c.movesOnX || c.movesOnY) {
+                slide = true;
+                lateSlide = lateSlide || c.time != 0;
+                const Rational& free = c.movesOnX ? c.position.x : c.position.y;
+                roundedSlide = roundedSlide || oracle::toRational(oracle::fromRational<T>(
+                                                   free, oracle::Rounding::NearestEven)) != free;
+            }
             if (k > 0 && f.contacts[k - 1].step == c.step && f.contacts[k - 1].normal == c.normal)
                 seam = true;
         }
@@ -177,6 +187,9 @@ std::vector<std::string> classifyScene(const Scene<T>& scene) {
     if (reachesATileAtTheEnd(scene, frames)) tags.push_back("reaches-at-end");
     if (touch0) tags.push_back("touch-at-0");
     if (twoStep) tags.push_back("two-step");
+    if (slide) tags.push_back("hit-then-slide");
+    if (lateSlide) tags.push_back("late-hit-then-slide");
+    if (roundedSlide) tags.push_back("hit-then-slide-rounded");
     if (seam) tags.push_back("seam");
     if (startOverlap) tags.push_back("start-overlap");
     if (std::find(scene.map.solid.begin(), scene.map.solid.end(), std::uint8_t{1}) == scene.map.solid.end())

@@ -9,12 +9,12 @@
 // computes it with its own integers (lattice_frame.h, roundRatioToNearest); the exact reference
 // defines it (oracle/exact/exact_resolve.cpp).
 //
-// Here V*den = x0*den + num*d is a sum of exact doubles: each product is p + e by TwoProduct
-// (exact_double.h), num being a double (float frames) or an exact pair (double frames). For a
-// candidate c, V lies above the midpoint c + h (h half the gap to the next T above c) iff
-//     x0*den + num*d - c*den - h*den > 0,
-// a sum of at most nine exact doubles (h*den is exact: h is a power of two); likewise below the
-// midpoint under c. The candidate comes from a double estimate of V and moves by one T at a time
+// For a candidate c, V lies above the midpoint c + h (h half the gap to the next T above c) iff
+//     (x0 - c)*den + num*d - h*den > 0,
+// where x0 - c is an exact pair by TwoSum, each product is p + e by TwoProduct (exact_double.h),
+// num is a double (float frames) or an exact pair (double frames), and h*den is exact (h is a
+// power of two): a sum of nine exact doubles (remainderTerms); likewise below the midpoint under
+// c. The candidate comes from a double estimate of V and moves by one T at a time
 // until V lies between its two midpoints; on a midpoint the even one is taken. Each sign is
 // filtered (signOfSumFiltered) and settled exactly inside the filter's band.
 //
@@ -75,48 +75,60 @@ template <class T>
     return (bits & 1) != 0;
 }
 
-/// The coordinate x0 + (num / den) * d rounded to the nearest T, ties to even, into `out`; false
-/// when it is left to the lattice (a result near zero, or an estimate more than a few T away).
-/// x0 and d are the free axis's start and displacement, num / den the contact time (0 < num < den,
-/// den > 0), all exact (see the top of this file); `refined` is set when a filter could not
-/// decide alone.
+/// The terms of (V - c) * den = (x0 - c) * den + num * d (see the top of this file), as eight
+/// doubles that sum to it exactly. The two large products nearly cancel when c is near V; their
+/// rounded values are added by TwoSum first, so that every term left is about as small as the
+/// remainder itself, and the filter's bound (a multiple of the terms' magnitudes) stays far below
+/// the half-gap it is compared with.
+inline void remainderTerms(double x0, double d, double hi, double lo, double den, double c,
+                           double* terms) noexcept {
+    const ExactPair start = twoSum(x0, -c);  // x0 - c, exactly
+    const double p1 = start.hi * den;
+    const double p2 = hi * d;
+    const ExactPair big = twoSum(p1, p2);
+    const double p3 = start.lo * den;
+    const double p4 = lo * d;
+    terms[0] = big.hi;
+    terms[1] = big.lo;
+    terms[2] = productError(start.hi, den, p1);
+    terms[3] = productError(hi, d, p2);
+    terms[4] = p3;
+    terms[5] = productError(start.lo, den, p3);
+    terms[6] = p4;
+    terms[7] = productError(lo, d, p4);
+}
+
+/// The coordinate V = x0 + (num / den) * d rounded to the nearest T, ties to even, into `out`;
+/// false when it is left to the lattice (a result near zero, or an estimate more than a few T
+/// away). x0 and d are the free axis's start and displacement, num / den the contact time
+/// (0 < num < den, den > 0), all exact (see the top of this file); `refined` is set when a filter
+/// could not decide alone.
 template <class T, class Coord>
 [[nodiscard]] bool roundPositionAtTime(double x0, double d, const Coord& num, double den, bool& refined,
                                        T& out) noexcept {
-    double terms[9];
-    int n = 0;
-    const auto addProduct = [&terms, &n](double a, double b) {
-        const double p = a * b;
-        terms[n++] = p;
-        terms[n++] = productError(a, b, p);
-    };
     const double hi = highPartOf(num);
     const double lo = lowPartOf(num);
-    addProduct(x0, den);
-    addProduct(hi, d);
-    if (lo != 0) addProduct(lo, d);
-    const int exactTerms = n;  // V * den
+    double terms[9];
     T c = static_cast<T>(x0 + hi / den * d);
     for (int step = 0; step < 4; ++step) {
         const auto cd = static_cast<double>(c);
         if (!(std::fabs(cd) >= kPositionFloor)) {
-            if (c != 0 || signOfSumFiltered(terms, exactTerms, refined) != 0) return false;
+            remainderTerms(x0, d, hi, lo, den, 0, terms);
+            if (c != 0 || signOfSumFiltered(terms, 8, refined) != 0) return false;
             out = T(0);  // V = 0 exactly: +0
             return true;
         }
         const T up = stepScalar(c, true);
         const T down = stepScalar(c, false);
-        const double p = cd * den;
-        terms[exactTerms] = -p;
-        terms[exactTerms + 1] = -productError(cd, den, p);
-        terms[exactTerms + 2] = -(0.5 * (static_cast<double>(up) - cd)) * den;
-        const int above = signOfSumFiltered(terms, exactTerms + 3, refined);  // V against c's upper midpoint
+        remainderTerms(x0, d, hi, lo, den, cd, terms);
+        terms[8] = -(0.5 * (static_cast<double>(up) - cd)) * den;
+        const int above = signOfSumFiltered(terms, 9, refined);  // V against c's upper midpoint
         if (above > 0) {
             c = up;
             continue;
         }
-        terms[exactTerms + 2] = (0.5 * (cd - static_cast<double>(down))) * den;
-        const int below = signOfSumFiltered(terms, exactTerms + 3, refined);  // against its lower midpoint
+        terms[8] = (0.5 * (cd - static_cast<double>(down))) * den;
+        const int below = signOfSumFiltered(terms, 9, refined);  // against its lower midpoint
         if (below < 0) {
             c = down;
             continue;

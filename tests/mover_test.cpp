@@ -200,7 +200,8 @@ void expectSameAsResolveMove(const scenarios::RandomScene<T>& scene, std::uint64
         const auto& a = got[static_cast<std::size_t>(k)];
         const auto& b = expected[static_cast<std::size_t>(k)];
         EXPECT_TRUE(a.tile == b.tile && a.normal == b.normal &&
-                    std::memcmp(&a.time, &b.time, sizeof a.time) == 0)
+                    std::memcmp(&a.time, &b.time, sizeof a.time) == 0 &&
+                    std::memcmp(&a.position, &b.position, sizeof a.position) == 0)
             << where << " contact " << k;
         ground = ground || b.normal.y == -1;
         ceiling = ceiling || b.normal.y == 1;

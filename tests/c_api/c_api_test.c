@@ -41,6 +41,16 @@ static void testFloat(void) {
     CHECK(r.contact_count == 1 && r.contacts_stored);
     CHECK(contacts[0].i == 0 && contacts[0].j == 3 && contacts[0].nx == 0 && contacts[0].ny == -1);
     CHECK(contacts[0].time == 0.25f);
+    CHECK(contacts[0].position.x == 4.0f && contacts[0].position.y == 32.0f); /* x does not move */
+    /* The same fall moving right 8: the floor is reached at t = 2/8 with x = 4 + 2 = 6, over
+     * tiles (0, 3) and (1, 3); the box then slides on to x = 12. The contacts are where the box
+     * was at the hit: (6, 32). */
+    mover.displacement.x = 8;
+    CHECK(ts_move_and_slide_f(map, &mover, &r, contacts, 8) == TS_OK);
+    CHECK(r.position.x == 12.0f && r.position.y == 32.0f && r.contact_count == 2 && r.contacts_stored);
+    CHECK(contacts[0].i == 0 && contacts[1].i == 1 && contacts[1].time == 0.25f);
+    CHECK(contacts[0].position.x == 6.0f && contacts[0].position.y == 32.0f);
+    CHECK(contacts[1].position.x == 6.0f && contacts[1].position.y == 32.0f);
     /* Walks right 40 along the floor from x = 60 (right edge 72) into the wall at x = 96:
      * stops at x = 84. */
     mover.box.pos.x = 60;
@@ -106,6 +116,15 @@ static void testDoubleAndBatch(void) {
     CHECK(results[501].status != TS_MOVE_INVALID_INPUT);
     CHECK(ts_move_and_slide_batch_d(NULL, movers, results, 1000, pool) == TS_ERROR_NULL_ARGUMENT);
     CHECK(ts_move_and_slide_batch_d(map, NULL, results, 0, pool) == TS_OK);
+    {
+        /* testFloat's landing while moving right, in double: the contacts at (6, 32). */
+        ts_mover_d landing = {{{4, 30}, {12, 16}}, {8, 8}};
+        ts_contact_d contacts[4];
+        CHECK(ts_move_and_slide_d(map, &landing, &single, contacts, 4) == TS_OK);
+        CHECK(single.contact_count == 2 && single.contacts_stored && single.position.x == 12.0);
+        CHECK(contacts[0].position.x == 6.0 && contacts[0].position.y == 32.0 &&
+              contacts[1].position.x == 6.0);
+    }
     ts_pool_destroy(pool);
     ts_pool_destroy(NULL);
     ts_map_destroy_d(map);
@@ -133,6 +152,8 @@ static void testWideBox(void) {
     CHECK(ts_move_and_slide_f(map, &mover, &r, contacts, bound) == TS_OK);
     CHECK(r.contact_count == 101 && r.position.y == 8.0f && r.on_ground && r.contacts_stored);
     for (k = 0; k < 101; ++k) CHECK(contacts[k].i == k && contacts[k].j == 1 && contacts[k].ny == -1);
+    /* Through the scratch list too, each with its position: no x motion, so the final (8, 8). */
+    for (k = 0; k < 101; ++k) CHECK(contacts[k].position.x == 8.0f && contacts[k].position.y == 8.0f);
     ts_map_destroy_f(map);
 }
 
