@@ -17,7 +17,9 @@
 // (each step knows its contact axes, and the motion's sign gives the normal), so they are right
 // with or without a contact buffer, for a box of any size. Contacts are optional: a buffer
 // receives a frame's contacts all, or none (contactsStored says which), and a buffer of
-// maxContacts(box size, tile size) entries always receives them.
+// maxContacts(box size, tile size) entries always receives them. Each has its tile, normal, time
+// and the box's position at the hit (Contact, resolve.h), which places a hit the box slid on
+// from: a wall met on the way down, before sliding down it.
 //
 // Axes: x grows to the right and y grows downward (screen coordinates), so landing on a floor is
 // the normal (0, -1) and sets onGround; hitting a face above sets onCeiling. A y-up game (y grows
@@ -146,7 +148,8 @@ inline constexpr std::int32_t kInlineContacts = 64;
 /// The same bound in double.
 [[nodiscard]] std::int32_t maxContacts(Vec2<double> boxSize, Vec2<double> tileSize) noexcept;
 
-/// Resolves one mover's frame (the same position and contacts as resolveMove). `contacts` is
+/// Resolves one mover's frame (the same position and contacts as resolveMove, each contact with
+/// its time and the box's position at the hit). `contacts` is
 /// optional: when it holds at least maxContacts entries, or at least contactCount and the frame
 /// has at most kInlineContacts, the contacts are stored in resolveMove's order (step by step,
 /// then by row, then column) and contactsStored is set; otherwise none are stored. Never throws;
