@@ -36,27 +36,70 @@ namespace tilesweep::detail {
 /// Candidates smaller than this in magnitude are left to the lattice (see the top of this file).
 inline constexpr double kPositionFloor = 0x1p-500;
 
-/// The sign of the exact sum of `count` doubles (count <= 16), by a filter with a certified
-/// bound, and by the exact expansion (signOfSum) inside the bound, which sets `refined`.
-///
-/// Recursive summation of n terms errs by at most gamma(n-1) * sum|t|, gamma(k) = k*u / (1 - k*u)
-/// (Higham, "Accuracy and Stability of Numerical Algorithms", 4.2). The bound, computed as
-/// fl((n+1)u * M) with M = fl(sum|t|) >= (1-u)^(n-1) sum|t|, is at least (n+1)u(1-u)^n sum|t|,
-/// which exceeds gamma(n-1) sum|t| for every n <= 16. So a computed sum beyond the bound has the
-/// exact sum's sign. Additions that underflow are exact, and the callers' terms stay far above
-/// the subnormals, so the bound's product does not underflow either.
-[[nodiscard]] inline int signOfSumFiltered(const double* terms, int count, bool& refined) noexcept {
+/// (V - c) * den for a candidate c, as up to eight exact doubles whose sum it is exactly
+/// (remainderOf), with their recursive sum and the sum of their magnitudes, so that the tests
+/// against both midpoints of c (signAgainst) add one term each to what is summed once.
+struct Remainder {
+    double terms[9];
+    int count = 0;
     double sum = 0;
     double magnitude = 0;
-    for (int k = 0; k < count; ++k) {
-        sum += terms[k];
-        magnitude += std::fabs(terms[k]);
+
+    void add(double t) noexcept {
+        terms[count++] = t;
+        sum += t;
+        magnitude += std::fabs(t);
     }
-    const double bound = (count + 1) * kUnitRoundoff * magnitude;
+};
+
+/// The sign of the exact sum of r's terms and `extra`, by a filter with a certified bound, and
+/// by the exact expansion (signOfSum) inside the bound, which sets `refined`.
+///
+/// Recursive summation of n terms errs by at most gamma(n-1) * sum|t|, gamma(k) = k*u / (1 - k*u)
+/// (Higham, "Accuracy and Stability of Numerical Algorithms", 4.2); `extra` is the n-th term,
+/// added last. The bound, computed as fl((n+1)u * M) with M = fl(sum|t|) >= (1-u)^(n-1) sum|t|,
+/// is at least (n+1)u(1-u)^n sum|t|, which exceeds gamma(n-1) sum|t| for every n <= 16. So a
+/// computed sum beyond the bound has the exact sum's sign. Additions that underflow are exact, and
+/// the terms stay far above the subnormals (kPositionFloor), so the bound's product does not
+/// underflow either.
+[[nodiscard]] inline int signAgainst(Remainder& r, double extra, bool& refined) noexcept {
+    const int n = r.count + 1;
+    const double sum = r.sum + extra;
+    const double bound = (n + 1) * kUnitRoundoff * (r.magnitude + std::fabs(extra));
     if (sum > bound) return 1;
     if (sum < -bound) return -1;
     refined = true;
-    return signOfSum(terms, count);
+    r.terms[r.count] = extra;
+    return signOfSum(r.terms, n);
+}
+
+/// The terms of (V - c) * den = (x0 - c) * den + num * d (see the top of this file). The two
+/// large products nearly cancel when c is near V; their rounded values are added by TwoSum first,
+/// so that every term left is about as small as the remainder itself, and the filter's bound (a
+/// multiple of the terms' magnitudes) stays far below the half-gap it is compared with. Terms
+/// that are zero by construction (x0 - c exact, or num a double) are left out.
+[[nodiscard]] inline Remainder remainderOf(double x0, double d, double hi, double lo, double den,
+                                           double c) noexcept {
+    const ExactPair start = twoSum(x0, -c);  // x0 - c, exactly
+    const double p1 = start.hi * den;
+    const double p2 = hi * d;
+    const ExactPair big = twoSum(p1, p2);
+    Remainder r;
+    r.add(big.hi);
+    r.add(big.lo);
+    r.add(productError(start.hi, den, p1));
+    r.add(productError(hi, d, p2));
+    if (start.lo != 0) {
+        const double p3 = start.lo * den;
+        r.add(p3);
+        r.add(productError(start.lo, den, p3));
+    }
+    if (lo != 0) {
+        const double p4 = lo * d;
+        r.add(p4);
+        r.add(productError(lo, d, p4));
+    }
+    return r;
 }
 
 /// The low part of an exact coordinate: zero for a double, the pair's low part otherwise.
@@ -75,27 +118,25 @@ template <class T>
     return (bits & 1) != 0;
 }
 
-/// The terms of (V - c) * den = (x0 - c) * den + num * d (see the top of this file), as eight
-/// doubles that sum to it exactly. The two large products nearly cancel when c is near V; their
-/// rounded values are added by TwoSum first, so that every term left is about as small as the
-/// remainder itself, and the filter's bound (a multiple of the terms' magnitudes) stays far below
-/// the half-gap it is compared with.
-inline void remainderTerms(double x0, double d, double hi, double lo, double den, double c,
-                           double* terms) noexcept {
-    const ExactPair start = twoSum(x0, -c);  // x0 - c, exactly
-    const double p1 = start.hi * den;
-    const double p2 = hi * d;
-    const ExactPair big = twoSum(p1, p2);
-    const double p3 = start.lo * den;
-    const double p4 = lo * d;
-    terms[0] = big.hi;
-    terms[1] = big.lo;
-    terms[2] = productError(start.hi, den, p1);
-    terms[3] = productError(hi, d, p2);
-    terms[4] = p3;
-    terms[5] = productError(start.lo, den, p3);
-    terms[6] = p4;
-    terms[7] = productError(lo, d, p4);
+/// Float frames' shortcut: the float nearest the double estimate v = fl(x0 + fl(fl(num / den) *
+/// d)) when v lies farther than its error bound from both float midpoints around it; false when
+/// it does not (or the nearest float is zero), and the exact test decides. Three roundings, each
+/// within u of its result, and |fl(num/den)*d - P| <= (2u + u^2)|P| for P = num*d/den: |v - V| <=
+/// u|v|/(1 - u) + 2.01u|P~| < 3u(|v| + |P~|), P~ the computed product; the bound, computed as
+/// fl(4u * fl(|v| + |P~|)), exceeds that. The midpoints are exact doubles (25 bits).
+[[nodiscard]] inline bool nearestFloatOfEstimate(double x0, double d, double num, double den,
+                                                 float& out) noexcept {
+    const double product = num / den * d;
+    const double v = x0 + product;
+    const auto c = static_cast<float>(v);
+    if (c == 0) return false;
+    const double bound = 4 * kUnitRoundoff * (std::fabs(v) + std::fabs(product));
+    const auto cd = static_cast<double>(c);
+    const double midUp = 0.5 * (cd + static_cast<double>(stepFloat(c, true)));
+    const double midDown = 0.5 * (cd + static_cast<double>(stepFloat(c, false)));
+    if (!(v + bound < midUp && v - bound > midDown)) return false;
+    out = c;
+    return true;
 }
 
 /// The coordinate V = x0 + (num / den) * d rounded to the nearest T, ties to even, into `out`;
@@ -108,28 +149,28 @@ template <class T, class Coord>
                                        T& out) noexcept {
     const double hi = highPartOf(num);
     const double lo = lowPartOf(num);
-    double terms[9];
+    if constexpr (std::is_same<T, float>::value) {
+        if (nearestFloatOfEstimate(x0, d, hi, den, out)) return true;
+    }
     T c = static_cast<T>(x0 + hi / den * d);
     for (int step = 0; step < 4; ++step) {
         const auto cd = static_cast<double>(c);
         if (!(std::fabs(cd) >= kPositionFloor)) {
-            remainderTerms(x0, d, hi, lo, den, 0, terms);
-            if (c != 0 || signOfSumFiltered(terms, 8, refined) != 0) return false;
+            Remainder atZero = remainderOf(x0, d, hi, lo, den, 0);
+            if (c != 0 || signAgainst(atZero, 0, refined) != 0) return false;
             out = T(0);  // V = 0 exactly: +0
             return true;
         }
         const T up = stepScalar(c, true);
         const T down = stepScalar(c, false);
-        remainderTerms(x0, d, hi, lo, den, cd, terms);
-        terms[8] = -(0.5 * (static_cast<double>(up) - cd)) * den;
-        const int above = signOfSumFiltered(terms, 9, refined);  // V against c's upper midpoint
-        if (above > 0) {
+        Remainder r = remainderOf(x0, d, hi, lo, den, cd);
+        const int above = signAgainst(r, -(0.5 * (static_cast<double>(up) - cd)) * den, refined);
+        if (above > 0) {  // V above c's upper midpoint
             c = up;
             continue;
         }
-        terms[8] = (0.5 * (cd - static_cast<double>(down))) * den;
-        const int below = signOfSumFiltered(terms, 9, refined);  // against its lower midpoint
-        if (below < 0) {
+        const int below = signAgainst(r, (0.5 * (cd - static_cast<double>(down))) * den, refined);
+        if (below < 0) {  // V below its lower midpoint
             c = down;
             continue;
         }

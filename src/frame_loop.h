@@ -67,8 +67,9 @@ public:
     explicit FrameLoop(Arith& arith) noexcept : m_(arith) {}
 
     /// Solves the frame into `result`; false when the arithmetic could not decide something
-    /// (the caller then solves the frame on the lattice).
-    bool run(const ResolveOutput<T>& out, ResolveResult<T>& result) noexcept {
+    /// (the caller then solves the frame on the lattice). `placeContactPositions` false leaves
+    /// the stored contacts' positions unwritten (frame_solve.h, ContactPositions).
+    bool run(const ResolveOutput<T>& out, ResolveResult<T>& result, bool placeContactPositions) noexcept {
         // A short move: the solid cells of the swept bounds, listed once, serve the start
         // overlaps and both steps (collectNear); otherwise the walk.
         const bool nearOnly = collectNear(std::max<std::int32_t>(out.contactCapacity, 0));
@@ -119,7 +120,8 @@ public:
         result.contactCount = total;
         result.status = total > 0 ? ResolveStatus::Blocked : ResolveStatus::Moved;
         return roundFinal(m_, finalPos[0], 0, result.position.x) &&
-               roundFinal(m_, finalPos[1], 1, result.position.y) && placeContacts(out, first, slides, result);
+               roundFinal(m_, finalPos[1], 1, result.position.y) &&
+               (!placeContactPositions || placeContacts(out, first, slides, result));
     }
 
 private:
@@ -177,8 +179,8 @@ private:
     /// arithmetic could not settle the free coordinate.
     bool placeContacts(const ResolveOutput<T>& out, const Hits& first, bool slides,
                        const ResolveResult<T>& result) noexcept {
-        const std::int32_t stored =
-            std::min(result.contactCount, std::max<std::int32_t>(out.contactCapacity, 0));
+        if (result.contactCount == 0 || out.contactCapacity <= 0) return true;
+        const std::int32_t stored = std::min(result.contactCount, out.contactCapacity);
         for (std::int32_t k = 0; k < stored; ++k) out.contacts[k].position = result.position;
         const std::int32_t storedFirst = std::min(first.count, first.capacity);
         if (!slides || storedFirst == 0) return true;

@@ -20,9 +20,11 @@ namespace {
 /// refinement (DecisionPath::Filtered).
 template <class T>
 [[gnu::always_inline]] inline bool solveFast(const ResolveInput<T>& input, const ResolveOutput<T>& output,
-                                             ResolveResult<T>& result, bool& refined) noexcept {
+                                             ContactPositions positions, ResolveResult<T>& result,
+                                             bool& refined) noexcept {
     FastFrame<T> frame(input);
-    const bool solved = FrameLoop<FastFrame<T>>(frame).run(output, result);
+    const bool solved =
+        FrameLoop<FastFrame<T>>(frame).run(output, result, positions == ContactPositions::Placed);
     refined = frame.refined();
     return solved;
 }
@@ -30,8 +32,8 @@ template <class T>
 /// Solves a valid frame exactly: scaled onto its lattice, with integers wide enough for it. Out
 /// of line (gnu::noinline): the fast path, inlined into resolveMovingFrame, pays for none of it.
 template <class T>
-[[gnu::noinline]] ResolveResult<T> solveOnLattice(const ResolveInput<T>& in,
-                                                  const ResolveOutput<T>& out) noexcept {
+[[gnu::noinline]] ResolveResult<T> solveOnLattice(const ResolveInput<T>& in, const ResolveOutput<T>& out,
+                                                  ContactPositions positions) noexcept {
     const T values[10] = {in.box.pos.x,      in.box.pos.y,      in.box.size.x,   in.box.size.y,
                           in.displacement.x, in.displacement.y, in.map.origin.x, in.map.origin.y,
                           in.map.tileSize.x, in.map.tileSize.y};
@@ -49,7 +51,8 @@ template <class T>
     return onLattice(d, 10, top, [&](auto tag, int exponent) {
         LatticeFrame<T, decltype(tag)> frame(in, d, exponent);
         ResolveResult<T> result;
-        (void)FrameLoop<LatticeFrame<T, decltype(tag)>>(frame).run(out, result);  // never undecided
+        (void)FrameLoop<LatticeFrame<T, decltype(tag)>>(frame).run(  // never undecided
+            out, result, positions == ContactPositions::Placed);
         return result;
     });
 }
@@ -61,7 +64,8 @@ template <class T>
 __attribute__((noinline))
 #endif
 ResolveResult<T>
-resolveMovingFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output) noexcept {
+resolveMovingFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output,
+                   ContactPositions positions) noexcept {
     // The fast path, when the range test admits the frame: float frames on exact doubles,
     // double frames on exact pairs under a certified filter. The range test implies the frame
     // is valid, so isValid only runs for the frames it turns away.
@@ -74,7 +78,7 @@ resolveMovingFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output)
     if (admitted) {
         ResolveResult<T> result;
         bool refined = false;
-        if (solveFast(input, output, result, refined)) {
+        if (solveFast(input, output, positions, result, refined)) {
             recordPath(output, refined ? DecisionPath::Filtered : DecisionPath::Fast);
             return result;
         }
@@ -88,12 +92,14 @@ resolveMovingFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output)
         return invalid;
     }
     recordPath(output, DecisionPath::Exact);
-    return solveOnLattice(input, output);
+    return solveOnLattice(input, output, positions);
 }
 
 template ResolveResult<float> resolveMovingFrame<float>(const ResolveInput<float>&,
-                                                        const ResolveOutput<float>&) noexcept;
+                                                        const ResolveOutput<float>&,
+                                                        ContactPositions) noexcept;
 template ResolveResult<double> resolveMovingFrame<double>(const ResolveInput<double>&,
-                                                          const ResolveOutput<double>&) noexcept;
+                                                          const ResolveOutput<double>&,
+                                                          ContactPositions) noexcept;
 
 }  // namespace tilesweep::detail

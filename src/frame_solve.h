@@ -8,6 +8,8 @@
 
 #include "tilesweep/resolve.h"
 
+#include <cstdint>
+
 namespace tilesweep::detail {
 
 /// Records the path that decided the frame when the caller asked for it (frame_stats.h).
@@ -16,14 +18,34 @@ inline void recordPath(const ResolveOutput<T>& output, DecisionPath path) noexce
     if (output.stats != nullptr) output.stats->path = path;
 }
 
+/// Whether a frame writes its stored contacts' positions (Contact::position). resolveMove always
+/// does; the game-loop calls (mover.cpp) skip them when the caller will not receive the
+/// contacts, so that a frame resolved into their inline buffer pays nothing for them.
+enum class ContactPositions : std::uint8_t { Placed, Skipped };
+
+/// resolveMove, with the choice above (resolve.cpp): the zero moves resolveZeroMove settles, then
+/// resolveMovingFrame.
+template <class T>
+[[nodiscard]] ResolveResult<T> resolveFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output,
+                                            ContactPositions positions) noexcept;
+
 /// resolveMove for every frame but the zero moves resolveZeroMove settles (resolve.cpp).
 template <class T>
 [[nodiscard]] ResolveResult<T> resolveMovingFrame(const ResolveInput<T>& input,
-                                                  const ResolveOutput<T>& output) noexcept;
+                                                  const ResolveOutput<T>& output,
+                                                  ContactPositions positions) noexcept;
 
+extern template ResolveResult<float> resolveFrame<float>(const ResolveInput<float>&,
+                                                         const ResolveOutput<float>&,
+                                                         ContactPositions) noexcept;
+extern template ResolveResult<double> resolveFrame<double>(const ResolveInput<double>&,
+                                                           const ResolveOutput<double>&,
+                                                           ContactPositions) noexcept;
 extern template ResolveResult<float> resolveMovingFrame<float>(const ResolveInput<float>&,
-                                                               const ResolveOutput<float>&) noexcept;
+                                                               const ResolveOutput<float>&,
+                                                               ContactPositions) noexcept;
 extern template ResolveResult<double> resolveMovingFrame<double>(const ResolveInput<double>&,
-                                                                 const ResolveOutput<double>&) noexcept;
+                                                                 const ResolveOutput<double>&,
+                                                                 ContactPositions) noexcept;
 
 }  // namespace tilesweep::detail

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "tilesweep/mover.h"
 
+#include "frame_solve.h"
 #include "free_move.h"
 #include "validity.h"
 
@@ -71,8 +72,11 @@ MoveResult<T> moveAndSlideOf(const PreparedMap<T>& map, const MoveInput<T>& inpu
     Contact<T> local[kInlineContacts];
     Contact<T>* buffer = direct ? contacts : local;
     const std::int32_t bufferCapacity = direct ? capacity : kInlineContacts;
-    const ResolveResult<T> s = resolveMove(ResolveInput<T>{map.view(), input.box, input.displacement},
-                                           ResolveOutput<T>{buffer, bufferCapacity});
+    // The contacts' positions only when the caller may receive the contacts.
+    const bool wanted = direct || (contacts != nullptr && capacity > 0);
+    const ResolveResult<T> s = detail::resolveFrame(
+        ResolveInput<T>{map.view(), input.box, input.displacement}, ResolveOutput<T>{buffer, bufferCapacity},
+        wanted ? detail::ContactPositions::Placed : detail::ContactPositions::Skipped);
     if (s.status == ResolveStatus::InvalidInput) return refuse(input, MoveStatus::InvalidInput);
     r.position = s.position;
     r.status = s.status == ResolveStatus::Blocked ? MoveStatus::Blocked : MoveStatus::Moved;

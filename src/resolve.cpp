@@ -11,17 +11,32 @@
 
 namespace tilesweep {
 
+namespace detail {
+
 template <class T>
-ResolveResult<T> resolveMove(const ResolveInput<T>& input, const ResolveOutput<T>& output) noexcept {
+ResolveResult<T> resolveFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output,
+                              ContactPositions positions) noexcept {
     // A zero move: the start overlaps alone, from the cells under the box (zero_move.h).
     if (input.displacement.x == 0 && input.displacement.y == 0) {
         ResolveResult<T> result;
-        if (detail::resolveZeroMove(input, output, result)) {
-            detail::recordPath(output, DecisionPath::Fast);
+        if (resolveZeroMove(input, output, result)) {
+            recordPath(output, DecisionPath::Fast);
             return result;
         }
     }
-    return detail::resolveMovingFrame(input, output);
+    return resolveMovingFrame(input, output, positions);
+}
+
+template ResolveResult<float> resolveFrame<float>(const ResolveInput<float>&, const ResolveOutput<float>&,
+                                                  ContactPositions) noexcept;
+template ResolveResult<double> resolveFrame<double>(const ResolveInput<double>&, const ResolveOutput<double>&,
+                                                    ContactPositions) noexcept;
+
+}  // namespace detail
+
+template <class T>
+ResolveResult<T> resolveMove(const ResolveInput<T>& input, const ResolveOutput<T>& output) noexcept {
+    return detail::resolveFrame(input, output, detail::ContactPositions::Placed);
 }
 
 template ResolveResult<float> resolveMove<float>(const ResolveInput<float>&,
