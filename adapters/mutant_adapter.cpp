@@ -11,10 +11,9 @@
 //                              where the default axis is the other one, and transposed back)
 //
 //     tilesweep_mutant_adapter --mutation round-nearest [--scalar float|double] < scenes.jsonl
-#include "oracle/exact/exact_geometry.h"
-#include "oracle/exact/exact_resolve.h"
-#include "oracle/exact/rational_convert.h"
-
+#include "tilesweep/oracle/exact/exact_geometry.h"
+#include "tilesweep/oracle/exact/exact_resolve.h"
+#include "tilesweep/oracle/exact/rational_convert.h"
 #include "tilesweep/scene/scene.h"
 
 #include <algorithm>

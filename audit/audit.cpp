@@ -4,14 +4,14 @@
 // (scene_judge.h), the figures gathered per (implementation, family) cell on worker threads
 // (parallel_tasks.h) with no shared mutable state (each worker owns its cells; the GMP rationals
 // of the oracle are per-object), merged at the end (audit_result.cpp).
-#include "audit/audit.h"
+#include "tilesweep/audit/audit.h"
 
-#include "audit/parallel_tasks.h"
-#include "audit/scene_judge.h"
-#include "oracle/exact/exact_resolve.h"
-#include "oracle/seed/seed_resolve.h"
+#include "parallel_tasks.h"
+#include "scene_judge.h"
 
 #include "tilesweep/baselines/run_frames.h"
+#include "tilesweep/oracle/exact/exact_resolve.h"
+#include "tilesweep/oracle/seed/seed_resolve.h"
 #include "tilesweep/scene/scene.h"
 
 #include <algorithm>

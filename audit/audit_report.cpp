@@ -2,8 +2,7 @@
 // The audit's output: report.md (a table per metric), report.json (every figure) and the worst
 // scene of every failing cell as a replayable scene line. The charts are drawn from report.json
 // by scripts/plots.py (matplotlib), the one way every chart is drawn; scripts/audit.sh runs both.
-#include "audit/audit.h"
-
+#include "tilesweep/audit/audit.h"
 #include "tilesweep/scene/scene.h"
 
 #include <nlohmann/json.hpp>

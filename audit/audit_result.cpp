@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The audit's figures (audit.h): metric names, and cells, coverage and worst cases merged from the
 // workers' shards.
-#include "audit/audit.h"
+#include "tilesweep/audit/audit.h"
 
 #include <cstdio>
 #include <stdexcept>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The audit on a tiny budget: the production rows read zero, the naive rows show their known
 // flaws, and every generated scene is replayable (it survives formatScene/parseScene bit for bit).
-#include "audit/audit.h"
+#include "tilesweep/audit/audit.h"
 
 #include <gtest/gtest.h>
 

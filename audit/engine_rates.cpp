@@ -2,10 +2,10 @@
 // Engine rates (engine_rates.h): the scenes of each family drawn once per batch, judged once
 // against the exact reference, and answered by every engine in turn; workers own their cells and
 // their engines (one process each, for an outside resolver), merged at the end.
-#include "audit/engine_rates.h"
+#include "tilesweep/audit/engine_rates.h"
 
-#include "audit/parallel_tasks.h"
-#include "audit/scene_judge.h"
+#include "parallel_tasks.h"
+#include "scene_judge.h"
 
 #include <nlohmann/json.hpp>
 

@@ -2,7 +2,7 @@
 // Engine rates on a small budget: tilesweep reads zero on every claim, a game-style baseline
 // does not, a resolver's missing answers are counted per scene without losing the rest, shards
 // add up to the whole run, and the JSON file reads back as written.
-#include "audit/engine_rates.h"
+#include "tilesweep/audit/engine_rates.h"
 
 #include <gtest/gtest.h>
 

@@ -1,12 +1,11 @@
 // SPDX-License-Identifier: MIT
 // The audit's rows (audit.h): each implementation, and a scene's frames through it.
-#include "audit/audit.h"
-#include "oracle/seed/seed_resolve.h"
-#include "oracle/substep/substep_float.h"
-
+#include "tilesweep/audit/audit.h"
 #include "tilesweep/baselines/grid_resolve.h"
 #include "tilesweep/baselines/run_frames.h"
 #include "tilesweep/baselines/twin_resolve.h"
+#include "tilesweep/oracle/seed/seed_resolve.h"
+#include "tilesweep/oracle/substep/substep_float.h"
 #include "tilesweep/scene/scene.h"
 
 #include <vector>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The audit's worker threads (parallel_tasks.h).
-#include "audit/parallel_tasks.h"
+#include "parallel_tasks.h"
 
 #include <algorithm>
 #include <atomic>

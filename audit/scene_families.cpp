@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The audit's columns (scene_families.h) over the scenario library.
-#include "audit/scene_families.h"
+#include "tilesweep/audit/scene_families.h"
 
 #include <string>
 

@@ -9,12 +9,12 @@
 // judge measures by how much an implementation breaks the safety claims (`SceneVerdict`'s
 // distances), which is what an engine's tolerance is measured from.
 
-#include "audit/audit.h"
 #include "frame_safety.h"  // checks/
-#include "oracle/exact/exact_resolve.h"
-#include "oracle/exact/exact_sweep.h"
-#include "oracle/exact/rational_convert.h"
 
+#include "tilesweep/audit/audit.h"
+#include "tilesweep/oracle/exact/exact_resolve.h"
+#include "tilesweep/oracle/exact/exact_sweep.h"
+#include "tilesweep/oracle/exact/rational_convert.h"
 #include "tilesweep/scene/scene.h"
 
 #include <algorithm>

@@ -21,14 +21,14 @@
 #endif
 
 #include "frame_scenarios.h"
-#include "oracle/exact/exact_geometry.h"
-#include "oracle/exact/exact_resolve.h"
-#include "oracle/seed/seed_resolve.h"
-#include "oracle/substep/substep_float.h"
 #include "side_by_side.h"
 
 #include "tilesweep/baselines/grid_resolve.h"
 #include "tilesweep/baselines/twin_resolve.h"
+#include "tilesweep/oracle/exact/exact_geometry.h"
+#include "tilesweep/oracle/exact/exact_resolve.h"
+#include "tilesweep/oracle/seed/seed_resolve.h"
+#include "tilesweep/oracle/substep/substep_float.h"
 #include "tilesweep/scene/scene.h"
 #include "tilesweep/sweep.h"
 

@@ -4,10 +4,11 @@
 // production row (core-float, core-double) is not zero: that is a bug in the core.
 #include "audit_command.h"
 
-#include "audit/audit.h"
 #include "outside_resolver_options.h"
 #include "progress_line.h"
 #include "shard.h"
+
+#include "tilesweep/audit/audit.h"
 
 #include <chrono>
 #include <cmath>
@@ -19,10 +20,11 @@
 #include <string>
 #include <unistd.h>
 #if TILESWEEP_HAVE_CHECK
-#include "audit/engine_rates.h"
 #include "check_command.h"
 #include "conformance_report.h"
 #include "outside_batch_resolver.h"
+
+#include "tilesweep/audit/engine_rates.h"
 
 #include <fstream>
 #include <sstream>

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "merge_command.h"
 
-#include "audit/engine_rates.h"
 #include "check_command.h"
 #include "conformance_report.h"
+
+#include "tilesweep/audit/engine_rates.h"
 
 #include <filesystem>
 #include <fstream>

@@ -7,7 +7,7 @@
 // crash, a hang, an error line or a malformed answer is that scene's failure, with the
 // engine's output tail; the batch goes on.
 
-#include "audit/engine_rates.h"
+#include "tilesweep/audit/engine_rates.h"
 
 #include <memory>
 #include <string>

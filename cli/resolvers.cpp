@@ -5,13 +5,13 @@
 #include <string>
 
 #if TILESWEEP_HAVE_ORACLE
-#include "oracle/exact/exact_resolve.h"
-#include "oracle/seed/seed_resolve.h"
-#include "oracle/substep/substep_float.h"
-#include "oracle/substep/substep_oracle.h"
+#include "tilesweep/oracle/exact/exact_resolve.h"
+#include "tilesweep/oracle/seed/seed_resolve.h"
+#include "tilesweep/oracle/substep/substep_float.h"
+#include "tilesweep/oracle/substep/substep_oracle.h"
 #endif
 #if TILESWEEP_HAVE_AUDIT
-#include "audit/audit.h"
+#include "tilesweep/audit/audit.h"
 #endif
 
 namespace tilesweep::cli {

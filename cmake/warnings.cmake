@@ -2,10 +2,14 @@
 # fmt's PEDANTIC_COMPILE_FLAGS). Consumers of the installed library inherit none of them.
 
 # One deliberate fault (src/fault_injection.h), for scripts/fault-table.sh; empty in real builds.
+# Only the code that holds the faults is compiled with it (the library, the oracles, and the two
+# tests that include src/ headers), so that a fault build recompiles those alone and the rest
+# comes from ccache.
 set(TILESWEEP_FAULT "" CACHE STRING "Build the library with one deliberate fault (see src/fault_injection.h)")
+set(tilesweep_fault_definitions "")
 if(TILESWEEP_FAULT)
     message(WARNING "tilesweep is built with the deliberate fault ${TILESWEEP_FAULT}")
-    add_compile_definitions(TILESWEEP_FAULT_${TILESWEEP_FAULT})
+    set(tilesweep_fault_definitions TILESWEEP_FAULT_${TILESWEEP_FAULT})
 endif()
 
 # Fused multiply-add changes the rounding of a*b+c; the library's exact arithmetic (Dekker's

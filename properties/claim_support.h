@@ -7,11 +7,11 @@
 // a missed contact. Internal to the property suite.
 
 #include "frame_safety.h"  // checks/
-#include "oracle/exact/exact_geometry.h"
-#include "oracle/exact/rational_convert.h"
-#include "oracle/substep/substep_oracle.h"
 #include "scene_runner.h"
 
+#include "tilesweep/oracle/exact/exact_geometry.h"
+#include "tilesweep/oracle/exact/rational_convert.h"
+#include "tilesweep/oracle/substep/substep_oracle.h"
 #include "tilesweep/scene/scene.h"
 
 #include <algorithm>

@@ -3,10 +3,10 @@
 // positions too, sweepBox tile by tile, and the reference itself against the exact substep oracle.
 #include "claim_support.h"
 #include "claims.h"
-#include "oracle/exact/exact_resolve.h"
-#include "oracle/exact/exact_sweep.h"
 
 #include "tilesweep/box_sweep.h"
+#include "tilesweep/oracle/exact/exact_resolve.h"
+#include "tilesweep/oracle/exact/exact_sweep.h"
 
 #include <cstdint>
 #include <string>

@@ -3,10 +3,10 @@
 
 #include "coverage_judgement.h"
 #include "generators.h"
-#include "oracle/exact/exact_resolve.h"
 #include "scene_checks.h"
 #include "scene_runner.h"
 
+#include "tilesweep/oracle/exact/exact_resolve.h"
 #include "tilesweep/scene/render.h"
 
 #include <nlohmann/json.hpp>

@@ -21,7 +21,7 @@
 // will ask for (properties/scene_runner.h, RecordingSceneRunner), so an engine sees one batch
 // per round instead of one request per case.
 //
-//     ResolverProcess process("build/dev/cli/tilesweep resolve --scalar float", 10.0);
+//     ResolverProcess process("build/plain/cli/tilesweep resolve --scalar float", 10.0);
 //     auto replies = process.exchange({sceneLine1, sceneLine2});
 //     for (auto& r : replies) if (!r.failure.empty()) ... else parseResultLine<float>(r.line, ...);
 //

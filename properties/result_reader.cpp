@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "result_reader.h"
 
-#include "scene/scalar_text.h"  // scene/: exact number text, shared with the scene reader
+#include "tilesweep/scene/scalar_text.h"  // exact number text, shared with the scene reader
 
 #include <nlohmann/json.hpp>
 

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
 // The coverage tags of a scene (scene_checks.h, classifyScene): what its exact resolution and the
 // resolver's decision path say it reaches, for RC_CLASSIFY and the coverage floors.
-#include "oracle/exact/exact_geometry.h"
-#include "oracle/exact/exact_resolve.h"
-#include "oracle/exact/exact_sweep.h"
-#include "oracle/exact/rational_convert.h"
 #include "scene_checks.h"
 
 #include "tilesweep/mover.h"
+#include "tilesweep/oracle/exact/exact_geometry.h"
+#include "tilesweep/oracle/exact/exact_resolve.h"
+#include "tilesweep/oracle/exact/exact_sweep.h"
+#include "tilesweep/oracle/exact/rational_convert.h"
 #include "tilesweep/resolve.h"
 #include "tilesweep/scenarios/scene_pieces.h"
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "json_value.h"
 
-#include "scalar_text.h"
+#include "tilesweep/scene/scalar_text.h"
 
 #include <nlohmann/json.hpp>
 

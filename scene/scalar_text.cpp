@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "scalar_text.h"
+#include "tilesweep/scene/scalar_text.h"
 
 #include <charconv>
 #include <cmath>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Reading one scene line (../shared/CONTRACT.md, "Scene files") into a Scene<T>.
 #include "json_value.h"
-#include "scalar_text.h"
 
+#include "tilesweep/scene/scalar_text.h"
 #include "tilesweep/scene/scene.h"
 
 #include <array>

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Writing scenes and the output lines of `tilesweep resolve` (../shared/CONTRACT.md).
-#include "scalar_text.h"
-
+#include "tilesweep/scene/scalar_text.h"
 #include "tilesweep/scene/scene.h"
 
 #include <nlohmann/json.hpp>

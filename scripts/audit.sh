@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The tolerance audit with its charts: builds the CLI (preset dev), runs `tilesweep audit` into
+# The tolerance audit with its charts: builds the CLI (the plain Release build), runs `tilesweep audit` into
 # DIR (default docs/audit), then draws DIR/error_vs_magnitude.svg and failures_per_family.svg
 # from DIR/report.json with scripts/plots.py (Debian's python3-matplotlib, installed when missing).
 #
@@ -15,7 +15,7 @@ while (($#)); do
         *) args+=("$1"); shift ;;
     esac
 done
-export TILESWEEP_PRESET=${TILESWEEP_PRESET:-dev}
+export TILESWEEP_PRESET=${TILESWEEP_PRESET:-plain}
 TILESWEEP_EXTRA_PACKAGES=python3-matplotlib TILESWEEP_TARGETS=tilesweep_cli bash "$root/scripts/build.sh" >/dev/null
 cd "$root"
 "${TILESWEEP_BUILD_DIR:-$root/build/$TILESWEEP_PRESET}/cli/tilesweep" audit --out "$out" "${args[@]}" || status=$?

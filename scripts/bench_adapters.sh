@@ -25,7 +25,7 @@ while [ $# -gt 0 ]; do
         *) echo "bench_adapters: unknown option $1 (--seconds S, --cases N, --out FILE)" >&2; exit 2 ;;
     esac
 done
-build=${TILESWEEP_BUILD_DIR:-$root/build/dev}
+build=${TILESWEEP_BUILD_DIR:-$root/build/plain}
 tool=$build/cli/tilesweep
 if [ ! -x "$tool" ]; then
     echo "bench_adapters: $tool not found: build first (bash scripts/test.sh)" >&2

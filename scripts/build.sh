@@ -1,17 +1,26 @@
 #!/usr/bin/env bash
-# Configures and builds tilesweep with a preset of CMakePresets.json (TILESWEEP_PRESET, default
-# dev) into build/<preset>/, installing missing packages first. TILESWEEP_BUILD_DIR puts the
-# build elsewhere; TILESWEEP_BUILD_TYPE overrides the preset's build type; extra arguments go to
-# cmake's configure step; TILESWEEP_TARGETS (space-separated) builds only those targets.
+# Configures and builds tilesweep into build/<preset>/, installing missing packages first.
+#
+# TILESWEEP_PRESET=plain (the default) is the build a user makes, with no preset:
+#   cmake -S . -B build/plain -DCMAKE_BUILD_TYPE=Release
+# and TILESWEEP_WERROR=ON adds -DTILESWEEP_WERROR=ON (CI does; warnings are not errors by default).
+# Any other TILESWEEP_PRESET names a preset of CMakePresets.json (dev, asan, portable, ...).
+# TILESWEEP_BUILD_DIR puts the build elsewhere; TILESWEEP_BUILD_TYPE overrides the build type;
+# extra arguments go to cmake's configure step; TILESWEEP_TARGETS (space-separated) builds only
+# those targets.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 source "$root/scripts/setup.sh"
-preset=${TILESWEEP_PRESET:-dev}
-args=(--preset "$preset")
-[ -z "${TILESWEEP_BUILD_DIR:-}" ] || args+=(-B "$TILESWEEP_BUILD_DIR")
-[ -z "${TILESWEEP_BUILD_TYPE:-}" ] || args+=(-DCMAKE_BUILD_TYPE="$TILESWEEP_BUILD_TYPE")
-(cd "$root" && cmake "${args[@]}" "$@" >/dev/null)
+preset=${TILESWEEP_PRESET:-plain}
 build=${TILESWEEP_BUILD_DIR:-$root/build/$preset}
+if [ "$preset" = plain ]; then
+    args=(-S "$root" -B "$build" -DCMAKE_BUILD_TYPE="${TILESWEEP_BUILD_TYPE:-Release}")
+else
+    args=(--preset "$preset" -B "$build")
+    [ -z "${TILESWEEP_BUILD_TYPE:-}" ] || args+=(-DCMAKE_BUILD_TYPE="$TILESWEEP_BUILD_TYPE")
+fi
+[ -z "${TILESWEEP_WERROR:-}" ] || args+=(-DTILESWEEP_WERROR="$TILESWEEP_WERROR")
+(cd "$root" && cmake "${args[@]}" "$@" >/dev/null)
 read -r -a targets <<<"${TILESWEEP_TARGETS:-}"
 if ((${#targets[@]})); then
     cmake --build "$build" --parallel "$(nproc)" --target "${targets[@]}"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Builds the soak (scripts/build.sh, preset dev) and runs the soak: random walkers with gravity, jumps and
+# Builds the soak (scripts/build.sh, the plain Release build) and runs the soak: random walkers with gravity, jumps and
 # dashes through generated levels, every frame checked against the contract's safety rules.
 #
 #   bash scripts/soak.sh [SECONDS] [tilesweep_soak options...]    # default: 60 s, float then double
@@ -10,7 +10,7 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 seconds=${1:-60}
 shift || true
-export TILESWEEP_PRESET=${TILESWEEP_PRESET:-dev}
+export TILESWEEP_PRESET=${TILESWEEP_PRESET:-plain}
 TILESWEEP_TARGETS=tilesweep_soak bash "$root/scripts/build.sh" >/dev/null
 soak=${TILESWEEP_BUILD_DIR:-$root/build/$TILESWEEP_PRESET}/soak/tilesweep_soak
 if (($#)); then

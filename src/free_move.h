@@ -12,6 +12,7 @@
 
 #include "cell_range.h"
 #include "exact_double.h"
+#include "final_rounding.h"
 #include "proof_constants.h"
 
 #include "tilesweep/math.h"
@@ -23,12 +24,35 @@
 
 namespace tilesweep::detail {
 
-/// The exact end x + d rounded as resolveMove rounds a free axis, when that is settled here:
-/// d == 0 keeps x's bits (a -0 stays -0); an exact sum is the end itself (rounding toward the
-/// start and the grid-line exception both leave a representable end alone); an inexact sum
-/// moving toward +infinity rounds down (TwoSum gives the sign of the error of s = fl(x + d)
-/// exactly). An inexact sum toward -infinity may fall under the grid-line exception
-/// (CONTRACT.md, "Positions"), and a zero end has a sign to settle: both return false.
+/// The exact end x + d of one free axis, as the arithmetic final_rounding.h asks for: the sum
+/// s = fl(x + d) and its error (x + d) - s, exact by TwoSum. It cannot test grid lines, so the
+/// grid-line exception answers Undecided and the caller runs the full resolver.
+template <class T>
+class FreeEnd {
+public:
+    struct Sum {
+        T s;
+        T error;
+    };
+    FreeEnd(T x, T d) noexcept : x_(x), d_(d) {}
+    T start(int) const noexcept { return x_; }
+    int compareWithStart(const Sum&, int) const noexcept { return (d_ > 0) - (d_ < 0); }
+    T roundDirected(const Sum& e, bool up) const noexcept {
+        if (up) return e.error > 0 ? std::nextafter(e.s, std::numeric_limits<T>::infinity()) : e.s;
+        return e.error < 0 ? std::nextafter(e.s, -std::numeric_limits<T>::infinity()) : e.s;
+    }
+    T roundNearest(const Sum& e) const noexcept { return e.s; }
+    bool isExactly(const Sum& e, T v) const noexcept { return e.error == 0 && e.s == v; }
+    LineTest gridLineAhead(const Sum&, T, int) const noexcept { return LineTest::Undecided; }
+
+private:
+    T x_;
+    T d_;
+};
+
+/// The exact end x + d rounded by the contract's rule (roundFinal, the frame loop's own), when
+/// that is settled here: d == 0 keeps x's bits (a -0 stays -0); a zero or infinite sum, or an
+/// inexact one toward -infinity (the grid-line exception may apply), returns false.
 template <class T>
 [[nodiscard]] inline bool roundFreeCoordinate(T x, T d, T& q) noexcept {
     if (d == 0) {
@@ -37,14 +61,7 @@ template <class T>
     }
     const T s = x + d;
     if (!std::isfinite(s) || s == 0) return false;
-    const T error = twoSum(x, d).lo;  // (x + d) - s exactly
-    if (error == 0) {
-        q = s;
-        return true;
-    }
-    if (d < 0) return false;
-    q = error > 0 ? s : std::nextafter(s, -std::numeric_limits<T>::infinity());
-    return true;
+    return roundFinal(FreeEnd<T>(x, d), typename FreeEnd<T>::Sum{s, twoSum(x, d).lo}, 0, q);
 }
 
 /// The cells of one axis that a closed interval [lo, hi] can touch, widened by one cell on each

@@ -6,9 +6,10 @@
 // are the cases that double frames reach rarely (issue 20, class 1); each test counts how many
 // of its draws took the exact refinement and asserts a floor, so none of them is vacuous.
 #include "exact_double.h"
-#include "oracle/exact/rational.h"
-#include "oracle/exact/rational_convert.h"
 #include "time_rounding.h"
+
+#include "tilesweep/oracle/exact/rational.h"
+#include "tilesweep/oracle/exact/rational_convert.h"
 
 #include <gtest/gtest.h>
 

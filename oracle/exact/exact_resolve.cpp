@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-#include "oracle/exact/exact_resolve.h"
+#include "tilesweep/oracle/exact/exact_resolve.h"
 
-#include "oracle/exact/rational_convert.h"
+#include "tilesweep/oracle/exact/rational_convert.h"
 
 #include <cmath>
 #include <cstdint>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "oracle/exact/exact_sweep.h"
+#include "tilesweep/oracle/exact/exact_sweep.h"
 
 #include <utility>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "oracle/exact/rational_convert.h"
+#include "tilesweep/oracle/exact/rational_convert.h"
 
 #include <cmath>
 #include <cstdint>

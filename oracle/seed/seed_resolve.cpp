@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "oracle/seed/seed_resolve.h"
+#include "tilesweep/oracle/seed/seed_resolve.h"
 
 #include <algorithm>
 #include <cstddef>

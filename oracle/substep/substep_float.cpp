@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-#include "oracle/substep/substep_float.h"
+#include "tilesweep/oracle/substep/substep_float.h"
 
-#include "oracle/substep/normal_guess.h"
+#include "tilesweep/oracle/substep/normal_guess.h"
 
 #include <cmath>
 #include <stdexcept>

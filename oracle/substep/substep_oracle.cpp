@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-#include "oracle/substep/substep_oracle.h"
+#include "tilesweep/oracle/substep/substep_oracle.h"
 
-#include "oracle/exact/rational_convert.h"
-#include "oracle/substep/normal_guess.h"
+#include "tilesweep/oracle/exact/rational_convert.h"
+#include "tilesweep/oracle/substep/normal_guess.h"
 
 #include <stdexcept>
 #include <vector>

@@ -4,11 +4,12 @@
 // not taken from the program's output. Tiles are 16 x 16 at the origin unless said otherwise, so
 // tile (i, j) is [16i, 16i + 16] x [16j, 16j + 16].
 
-#include "oracle/exact/exact_resolve.h"
+#include "tilesweep/oracle/exact/exact_resolve.h"
 
-#include "oracle/exact/exact_sweep.h"
-#include "oracle/exact/rational_convert.h"
 #include "scene_builder.h"
+
+#include "tilesweep/oracle/exact/exact_sweep.h"
+#include "tilesweep/oracle/exact/rational_convert.h"
 
 #include <gtest/gtest.h>
 

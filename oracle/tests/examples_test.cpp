@@ -5,8 +5,8 @@
 // Scenes are read with the project's scene reader, tilesweep::parseScene<T>.
 
 #include "expected_json.h"
-#include "oracle/exact/exact_resolve.h"
 
+#include "tilesweep/oracle/exact/exact_resolve.h"
 #include "tilesweep/scene/scene.h"
 
 #include <gtest/gtest.h>

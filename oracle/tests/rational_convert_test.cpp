@@ -2,7 +2,7 @@
 // The float <-> rational helpers: exact conversion in, one directed or nearest rounding out.
 // Expected values are worked out from the IEEE 754 binary32/binary64 formats.
 
-#include "oracle/exact/rational_convert.h"
+#include "tilesweep/oracle/exact/rational_convert.h"
 
 #include <gtest/gtest.h>
 

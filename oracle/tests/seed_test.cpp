@@ -3,9 +3,10 @@
 // Expected values follow the article's formulas step by step (see seed_resolve.h), with inputs
 // chosen so that every float operation is exact unless said otherwise.
 
-#include "oracle/exact/exact_resolve.h"
-#include "oracle/seed/seed_resolve.h"
 #include "scene_builder.h"
+
+#include "tilesweep/oracle/exact/exact_resolve.h"
+#include "tilesweep/oracle/seed/seed_resolve.h"
 
 #include <gtest/gtest.h>
 

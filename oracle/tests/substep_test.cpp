@@ -3,11 +3,12 @@
 // window is wider than one substep, and never reports a hit the contract does not have; the
 // game-style float one tunnels and misses corners, as a baseline should.
 
-#include "oracle/exact/exact_resolve.h"
-#include "oracle/exact/exact_sweep.h"
-#include "oracle/substep/substep_float.h"
-#include "oracle/substep/substep_oracle.h"
 #include "scene_builder.h"
+
+#include "tilesweep/oracle/exact/exact_resolve.h"
+#include "tilesweep/oracle/exact/exact_sweep.h"
+#include "tilesweep/oracle/substep/substep_float.h"
+#include "tilesweep/oracle/substep/substep_oracle.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "oracle/exact/rational.h"
-#include "oracle/exact/rational_convert.h"
-
 #include "tilesweep/math.h"
+#include "tilesweep/oracle/exact/rational.h"
+#include "tilesweep/oracle/exact/rational_convert.h"
 #include "tilesweep/scene/scene.h"
 
 #include <cstdint>

@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "oracle/exact/exact_geometry.h"
-#include "oracle/exact/rational.h"
-
 #include "tilesweep/math.h"
+#include "tilesweep/oracle/exact/exact_geometry.h"
+#include "tilesweep/oracle/exact/rational.h"
 
 #include <cstdint>
 

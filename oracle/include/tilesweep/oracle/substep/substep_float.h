@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "oracle/substep/substep_oracle.h"
-
+#include "tilesweep/oracle/substep/substep_oracle.h"
 #include "tilesweep/scene/scene.h"
 
 #include <cstdint>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "oracle/exact/rational.h"
+#include "tilesweep/oracle/exact/rational.h"
 
 #include <cstdint>
 

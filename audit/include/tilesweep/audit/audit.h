@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "audit/scene_families.h"
+#include "tilesweep/audit/scene_families.h"
 
 #include <array>
 #include <cstdint>

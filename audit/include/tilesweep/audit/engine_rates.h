@@ -19,10 +19,9 @@
 // N machines cover the same cases as one; mergeRates adds their results up (rates.json files
 // read back with readRatesJson).
 
-#include "audit/audit.h"
-#include "audit/scene_families.h"
-#include "audit/wilson_interval.h"
-
+#include "tilesweep/audit/audit.h"
+#include "tilesweep/audit/scene_families.h"
+#include "tilesweep/audit/wilson_interval.h"
 #include "tilesweep/scene/scene.h"
 
 #include <array>
