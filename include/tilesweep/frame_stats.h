@@ -14,11 +14,13 @@ namespace tilesweep {
 enum class DecisionPath : std::uint8_t {
     /// The fast path decided every predicate of the frame from rounded double arithmetic alone:
     /// each comparison of two products by the order of the rounded products (exact by monotonic
-    /// rounding), each contact time's rounding from the rounded quotient.
+    /// rounding), each contact time's rounding from the rounded quotient, and each contact
+    /// position's from a rounded estimate outside its certified error bound.
     Fast,
     /// The fast path decided the frame, but some predicate lay inside its error band (two
     /// products rounded to the same double, a rounded contact time exactly on a rounding
-    /// midpoint) and an exact refinement inside the fast path settled it (TwoProduct).
+    /// midpoint, a contact position next to one) and an exact refinement inside the fast path
+    /// settled it (TwoProduct, exact expansions).
     Filtered,
     /// The exact lattice solver decided the frame: the range test did not admit it (scalar type,
     /// magnitudes, subnormals, map size), or the fast path met a case it does not refine and
