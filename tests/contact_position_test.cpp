@@ -203,6 +203,26 @@ TYPED_TEST(ContactPosition, hitAtTheStartKeepsTheStartsBits) {
     });
 }
 
+// A hit where the free coordinate is exactly zero: box at (-2, 0), size 8, map origin (-32, 0),
+// lands on the floor of row 1 at t = 8/16 = 1/2 moving (4, 16), when x = -2 + 2 = 0: +0 (a
+// rational zero has no sign, and rounds to +0 as IEEE does). Its span [0, 8] is over tile
+// (2, 1) alone: it leaves column 1 (x < 0) exactly as it reaches the floor, a touch. It ends at
+// (2, 8).
+TYPED_TEST(ContactPosition, hitAtAZeroCoordinateIsPositiveZero) {
+    using T = TypeParam;
+    const Scene<T> s{{"....", "####"}, {{-2, 0}, {8, 8}}, {4, 16}, {-32, 0}};
+    onBothPaths(s, [](const Frame<T>& f, T k) {
+        EXPECT_EQ(f.result.position.x, 2 * k);
+        EXPECT_EQ(f.result.position.y, 8 * k);
+        ASSERT_EQ(f.contacts.size(), 1u);
+        EXPECT_EQ(f.contacts[0].tile, (Cell{2, 1}));
+        for (const Contact<T>& c : f.contacts) {
+            expectPosition(c, T(0), 8 * k);
+            EXPECT_FALSE(std::signbit(c.position.x));
+        }
+    });
+}
+
 // Ties go to even. Box [1, 9] x [0, 8] lands on the floor of row 1 at t = 8/16 = 1/2, moving
 // (m * u, 16) with u = 2^-(digits - 1), the spacing of T just above 1. At the hit x = 1 + m*u/2:
 // for m = 1, halfway between 1 (even) and 1 + u (odd): 1; for m = 3, halfway between 1 + u
