@@ -124,6 +124,20 @@ template <class T>
     return genScene<T>(family)(rc::Random(seed), size).value();
 }
 
+/// buildScene with every map origin the family draws (genOrigin) at `magnitude`, rounded down to
+/// whole tiles: the same (family, seed) gives the same local scene at every magnitude, built in
+/// T there. The families whose builders draw their origin that way: random, floor, stairs,
+/// single-tile, corner-tie, corner-pass, seam-landing, gap, resting, high-speed (the others place
+/// their own origins and ignore it). The audit's far columns are these.
+template <class T>
+[[nodiscard]] GeneratedScene<T> buildSceneAt(Family family, std::uint64_t seed, double magnitude) {
+    detail::placedOriginMagnitude() = magnitude;
+    struct Clear {
+        ~Clear() { detail::placedOriginMagnitude().reset(); }
+    } clear;
+    return buildScene<T>(family, seed);
+}
+
 /// Prints a generated scene as the scene line it is (every number a hexfloat), so a
 /// counterexample reads back bit for bit.
 template <class T>
