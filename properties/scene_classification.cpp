@@ -123,6 +123,39 @@ int widestSignificand(const Scene<T>& scene) {
     return widest;
 }
 
+/// The span C + 1 - G that the float range test (admitFloatFrame, src/range_admission.h) takes for
+/// the scene's first frame, from frexp exponents (|v| < 2^e, ulp 2^(e - 24) for a normal float):
+/// B the largest of the box's inputs, E = max over both axes of max(e(origin), e(tile) +
+/// bitLength(cells + 2)) + 1, C = max(B + 2, E), G the lowest ulp. Admitted at 53 and below.
+int floatRangeSpan(const Scene<float>& scene) {
+    const auto exponent = [](float v) {
+        int e = 0;
+        (void)std::frexp(v, &e);
+        return v == 0 ? -100000 : e;
+    };
+    const Vec2<float> move = scene.moves.empty() ? Vec2<float>{0, 0} : scene.moves.front();
+    const float box[6] = {scene.box.pos.x,  scene.box.pos.y, scene.box.size.x,
+                          scene.box.size.y, move.x,          move.y};
+    const float grid[4] = {scene.map.origin.x, scene.map.origin.y, scene.map.tileSize.x,
+                           scene.map.tileSize.y};
+    int top = -100000;
+    int lowest = 100000;
+    for (const float v : box) {
+        top = std::max(top, exponent(v));
+        if (v != 0) lowest = std::min(lowest, exponent(v) - 24);
+    }
+    int edges = -100000;
+    const std::int32_t cells[2] = {scene.map.columns, scene.map.rows};
+    for (int a = 0; a < 2; ++a) {
+        int cellBits = 0;
+        for (auto n = static_cast<std::uint32_t>(cells[a]) + 2; n != 0; n >>= 1) ++cellBits;
+        edges = std::max(edges, std::max(exponent(grid[a]), exponent(grid[2 + a]) + cellBits) + 1);
+        for (const float v : {grid[a], grid[2 + a]})
+            if (v != 0) lowest = std::min(lowest, exponent(v) - 24);
+    }
+    return std::max(top + 2, edges) + 1 - lowest;
+}
+
 /// The path that decided the scene's frames (tilesweep/frame_stats.h): "exact" when any frame fell
 /// back to the lattice, else "filtered" when any predicate needed the exact refinement, else "fast".
 template <class T>
@@ -203,6 +236,11 @@ std::vector<std::string> classifyScene(const Scene<T>& scene) {
     // The tiny end of the range: some nonzero input below 2^-500 (double) or 2^-100 (float),
     // where a product of two inputs would underflow a double (or come near it).
     if (smallestInputExponent(scene) < (std::is_same<T, float>::value ? -100 : -500)) tags.push_back("tiny");
+    // The edge of the float range test: spans 53 (the last admitted) to 56 (three binades past).
+    if constexpr (std::is_same<T, float>::value) {
+        const int rangeSpan = floatRangeSpan(scene);
+        if (rangeSpan >= 53 && rangeSpan <= 56) tags.push_back("range-boundary");
+    }
     // Capacity boundaries (mover.h): the contact bound at the inline limit, or past it (the wide
     // path), and frames with many contacts (an exact count the buffers are sized to).
     const std::int32_t bound = maxContacts(scene.box.size, scene.map.tileSize);

@@ -107,9 +107,43 @@ inline constexpr double kGridLineReachLimit = 0x1p40;
 // ---- range admission -------------------------------------------------------------------------
 
 /// The most bits the fast path's exact doubles may need: a double's 53.
+///
+/// Float frames (admitFloatFrame). Every input is a float, a multiple of its ulp, so all are
+/// multiples of 2^G, G the lowest ulp exponent among the nonzero ones (G >= -149: subnormal
+/// inputs are turned away). A multiple of 2^G below 2^(G+53) in magnitude is a double, so it is
+/// enough that every value the solver must hold exactly is below 2^(G+53). On one axis, with x,
+/// w, dx the box's position, size and displacement, o the origin, t the tile and c the cells,
+/// those values are (fast_frame.h, fast_axis.h, frame_loop.h, final_rounding.h):
+///   - x + w, x + dx, and the touch positions e - w, e + w (e a tile edge);
+///   - tile edges e = o + k*t for -1 <= k <= c + 1 (k*t itself is exact: k < 2^25 times a
+///     24-bit significand);
+///   - the distances e - (x + w), x - e, e - x, (x + w) - e of the tile test;
+///   - the grid-line test's ends (x + dx) + w, e (a touch position plus w) and r + w (r the float
+///     the position rounds to, between the start and the exact end), their difference, and the
+///     grid lines o + k*t and k*t next to them (within 2t of (x + dx) + w: FastAxis::hasLineIn).
+/// Each is at most A = |x| + |w| + |dx| + |o| + (c + 2)t in magnitude (the grid lines: |x + dx
+/// + w| + 2t <= A, as c + 2 >= 2). The range test bounds A by exponent fields: |x|, |w|, |dx| <
+/// 2^B (B = boxTop - 126), so their sum is below 3 * 2^B < 2^(B+2); |o| + (c + 2)t < 2^E (E =
+/// edgeTop - 126); so A < 2^(B+2) + 2^E <= 2^(C+1) with C = max(B + 2, E), and C + 1 - G <= 53
+/// suffices. Through issue 20 the test asked C + 3 - G <= 53 (C + 1 bounded the coordinates, and
+/// two more bits the differences, which A already counts): two binades of slack, gone.
+///
+/// What a wider test admits. A value misses the double grid only when it is at least 2^(G+53)
+/// and has a bit at 2^G, which only an input with its ulp at 2^G (below 2^(G+24)) provides.
+/// One binade wider (G + 53 >= C) still holds exactly every value that decides anything: the
+/// box's sums are below 3 * 2^B < 2^(B+2), the tile edges below 2^E, the touch positions and
+/// the grid-line test's ends among them; only distances to far tile edges can pass 2^C, and the
+/// solver compares those with the speed alone, which they exceed by far (monotonic rounding
+/// keeps that exact). So no answer can change, and a fault one binade wide is equivalent. Two
+/// binades (G + 53 = B + 1) let a grid line in [2^(B+1), 2^(B+2)) miss the grid, which takes a
+/// far origin with fine tiles and an exact corner tie to show. Three (G + 53 = B) take only a
+/// grid line e = o + k*t in [2^B, 2^(B+1)) with o fine: it rounds by 2^G, and a box of width
+/// o + 2^G stopped at it lands at k*t, 2^G inside the wall, where the contract's position is the
+/// float below. That is the fault FAST_RANGE_TOO_WIDE (fault_injection.h), and the range-edge
+/// family builds those scenes (scenarios/range_edge_family.h).
 inline constexpr int kFastSpanBits = 53;
-/// Float frames: every coordinate below 2^120, so that sums of three and products of the fast
-/// path (squares of coordinates at most) stay far from double overflow, and a far edge plus a
+/// Float frames: every value formed (A above) below 2^120, so that sums of three and products of
+/// the fast path (squares of values at most) stay far from double overflow, and a far edge plus a
 /// tile stays below float's largest value.
 inline constexpr int kFloatFrameTopExponent = 120;
 /// Double frames: every nonzero input in [2^-250, 2^251), so that no product, TwoProduct error
