@@ -375,8 +375,8 @@ void addAll(std::vector<Property>& out) {
                 {{"bound-inline-limit", 0.15}, {"bound-wide", 0.15}, {"many-contacts", 0.3}});
     addClaim<T>(out, "storesEveryFramesContactsAtExactCapacity", "storesContactsAtExactCapacity",
                 Family::Mixed, {{"hit", 0.2}, {"two-step", 0.005}});
-    // The edge of the float range test (range-edge): spans 52 to 56 (range_edge_family.h), bit for
-    // bit; the scenes three binades past it catch a test that much too generous.
+    // The edge of the float range test (range-edge): spans 52 to 57 (range_edge_family.h), bit for
+    // bit; the scenes four binades past it catch a test that much too generous.
     addClaim<T>(out, "decidesRangeEdgeScenesExactly", "matchesExactReferenceBitForBit", Family::RangeEdge,
                 isDouble ? std::vector<CoverageFloor>{{"hit", 0.9}}
                          : std::vector<CoverageFloor>{{"range-boundary", 0.6}, {"hit", 0.9}});

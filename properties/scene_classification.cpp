@@ -236,10 +236,10 @@ std::vector<std::string> classifyScene(const Scene<T>& scene) {
     // The tiny end of the range: some nonzero input below 2^-500 (double) or 2^-100 (float),
     // where a product of two inputs would underflow a double (or come near it).
     if (smallestInputExponent(scene) < (std::is_same<T, float>::value ? -100 : -500)) tags.push_back("tiny");
-    // The edge of the float range test: spans 53 (the last admitted) to 56 (three binades past).
+    // The edge of the float range test: spans 53 (the last admitted) to 57 (four binades past).
     if constexpr (std::is_same<T, float>::value) {
         const int rangeSpan = floatRangeSpan(scene);
-        if (rangeSpan >= 53 && rangeSpan <= 56) tags.push_back("range-boundary");
+        if (rangeSpan >= 53 && rangeSpan <= 57) tags.push_back("range-boundary");
     }
     // Capacity boundaries (mover.h): the contact bound at the inline limit, or past it (the wide
     // path), and frames with many contacts (an exact count the buffers are sized to).

@@ -129,18 +129,22 @@ inline constexpr double kGridLineReachLimit = 0x1p40;
 /// two more bits the differences, which A already counts): two binades of slack, gone.
 ///
 /// What a wider test admits. A value misses the double grid only when it is at least 2^(G+53)
-/// and has a bit at 2^G, which only an input with its ulp at 2^G (below 2^(G+24)) provides.
-/// One binade wider (G + 53 >= C) still holds exactly every value that decides anything: the
-/// box's sums are below 3 * 2^B < 2^(B+2), the tile edges below 2^E, the touch positions and
-/// the grid-line test's ends among them; only distances to far tile edges can pass 2^C, and the
-/// solver compares those with the speed alone, which they exceed by far (monotonic rounding
-/// keeps that exact). So no answer can change, and a fault one binade wide is equivalent. Two
-/// binades (G + 53 = B + 1) let a grid line in [2^(B+1), 2^(B+2)) miss the grid, which takes a
-/// far origin with fine tiles and an exact corner tie to show. Three (G + 53 = B) take only a
-/// grid line e = o + k*t in [2^B, 2^(B+1)) with o fine: it rounds by 2^G, and a box of width
-/// o + 2^G stopped at it lands at k*t, 2^G inside the wall, where the contract's position is the
-/// float below. That is the fault FAST_RANGE_TOO_WIDE (fault_injection.h), and the range-edge
-/// family builds those scenes (scenarios/range_edge_family.h).
+/// and has a bit at 2^G, which only an input with its ulp at 2^G (below 2^(G+24)) provides; it
+/// changes an answer only when it lies within 2^G of what it is compared with or rounded to (a
+/// tile edge, a grid line, a float). One binade wider (G + 53 >= C) holds exactly every value
+/// that decides anything: the box's sums are below 3 * 2^B < 2^(B+2), tile edges below 2^E,
+/// touch positions and the grid-line test's ends among them; only distances to far tile edges
+/// can pass 2^C, and the solver compares those with the speed alone, which they exceed by far
+/// (monotonic rounding keeps that exact). So no answer can change, and a fault one binade wide
+/// is equivalent. On a valid map every tile edge is a float, so a fine bit comes from the box
+/// alone (w or dx), and a value 2^G from a float needs two fine inputs that cancel to 2^G
+/// beside a coarse one: the far face x + dx + w of a box whose move dx = -(w - 2^G) leaves it
+/// 2^G past the grid line x. That value is below 2^B, so it misses the grid only when G + 53 <=
+/// B - 1: four binades (C + 1 - G = 57). Then it rounds onto x, the grid-line test sees x in
+/// [far face, far face rounded), and the position is rounded down, one float below the contract's
+/// x. That is the fault FAST_RANGE_TOO_WIDE (fault_injection.h), and the range-edge family builds
+/// those scenes (scenarios/range_edge_family.h); at two and three binades no valid scene we know
+/// of can tell.
 inline constexpr int kFastSpanBits = 53;
 /// Float frames: every value formed (A above) below 2^120, so that sums of three and products of
 /// the fast path (squares of values at most) stay far from double overflow, and a far edge plus a

@@ -64,7 +64,7 @@ struct FloatFields {
 [[nodiscard]] inline bool floatSpanFits(int top, int headroom, int lowest) noexcept {
     int span = (top - 126 + headroom) - (lowest - 150);
 #if defined(TILESWEEP_FAULT_FAST_RANGE_TOO_WIDE)
-    span -= 3;  // deliberate fault: the range test three binades too generous (fault_injection.h)
+    span -= 4;  // deliberate fault: the range test four binades too generous (fault_injection.h)
 #endif
 #if defined(TILESWEEP_FAULT_FAST_RANGE_FAR_TOO_WIDE)
     span -= 6;  // deliberate fault: six binades too generous, past the test's slack

@@ -31,7 +31,7 @@ enum class Family : std::uint8_t {
     NearTie,      ///< the filter band's corner ties nudged one ulp off: nonzero signs its refinement decides
     TinyScale,    ///< a mixed scene scaled by a power of two near the bottom of T's normal range
     Capacity,     ///< boxes whose contact bound is the inline limit or just past it, into a corner
-    RangeEdge,    ///< float frames at the edge of the fast path's range test, fine bits in origin and width
+    RangeEdge,    ///< float frames at the range test's edge: a fine width and move just past a grid line
     Mixed,
 };
 
