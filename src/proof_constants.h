@@ -69,11 +69,23 @@ inline constexpr double kFreeMoveMagnitudeScale = 0x1p-48;
 // ---- products and times ----------------------------------------------------------------------
 
 /// The semi-static error bound of compareProducts on exact pairs (exact_double.h), relative to
-/// |fl(a.hi*s)| + |fl(b.hi*t)|: (3 + 16u)u. The exact difference a*s - b*t lies within
-/// (3u + 2u^2)(|p| + |q|) of D = fl(p - q) (three roundings, and the low parts at most u of the
-/// high parts); the bound computed as fl(c * fl(|p| + |q|)) is at least c(1 - u)^2(|p| + |q|),
-/// which for c = (3 + 16u)u exceeds it. Full derivation above compareProducts.
-inline constexpr double kPairProductErrorBound = (3.0 + 16.0 * kUnitRoundoff) * kUnitRoundoff;
+/// S = |p| + |q|, p = fl(a.hi*s), q = fl(b.hi*t): c = (2 + 16u)u. With D = fl(p - q), the exact
+/// difference X = a*s - b*t satisfies
+///   |X - D| <= |a.hi*s - p| + |b.hi*t - q| + |(p - q) - D| + |a.lo*s| + |b.lo*t|
+///           <= u|p| + u|q| + u|D| + u(1 + u)(|p| + |q|) = (2u + u^2)S + u|D|
+/// (each rounding to nearest errs by at most u times its result; |lo| <= ulp(hi)/2 <= u|hi|, and
+/// |a.hi*s| <= (1 + u)|p|). So sign(D) is sign(X) once |D|(1 - u) > (2u + u^2)S. The filter
+/// decides only when |D| > fl(c * fl(S)) >= c(1 - u)^2 S, and c(1 - u)^3 >= 2u + u^2 holds for
+/// c = 2u + 7u^2 + 16u^3 already: (2 + 16u)u is safe.
+///
+/// Through issue 20 this was (3 + 16u)u: the derivation bounded u|D| by u(1 + u)S, which is
+/// true but only matters when |D| is far outside the band. Inside it the error is at most about
+/// 2uS, two thirds of the old bound, so the old band's top third was never reachable; the
+/// construction of tests/exact_primitives_test.cpp (comparesExactTiesInTheFilterBandsUpperHalf)
+/// reaches 0.946 of the new bound (0.63 of the old), and its upper half in every case where the
+/// two rounded products land two ulps apart. Halving the new bound (FILTER_BOUND_HALVED) is
+/// wrong on exactly those: the sign of D (two ulps of p) is not the sign of an exact tie.
+inline constexpr double kPairProductErrorBound = (2.0 + 16.0 * kUnitRoundoff) * kUnitRoundoff;
 
 /// The filter of roundTimeToDouble (time_rounding.h), in units of u times |d| + |e| + |lo|: the
 /// remainder R~ = fl(fl(d - e) + lo) is within (2u + u^2)(|d| + |e| + |lo|) of the exact one;
