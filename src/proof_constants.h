@@ -131,8 +131,9 @@ inline constexpr double kGridLineReachLimit = 0x1p40;
 ///     24-bit significand);
 ///   - the distances e - (x + w), x - e, e - x, (x + w) - e of the tile test;
 ///   - the grid-line test's ends (x + dx) + w, e (a touch position plus w) and r + w (r the float
-///     the position rounds to, between the start and the exact end), their difference, and the
-///     grid lines o + k*t and k*t next to them (within 2t of (x + dx) + w: FastAxis::hasLineIn).
+///     the position rounds to, between the start and the exact end: the exact end itself, or a
+///     float of at least 2^(G+24), so a multiple of 2^G too), their difference, and the grid
+///     lines o + k*t and k*t next to them (within 2t of (x + dx) + w: FastAxis::hasLineIn).
 /// Each is at most A = |x| + |w| + |dx| + |o| + (c + 2)t in magnitude (the grid lines: |x + dx
 /// + w| + 2t <= A, as c + 2 >= 2). The range test bounds A by exponent fields: |x|, |w|, |dx| <
 /// 2^B (B = boxTop - 126), so their sum is below 3 * 2^B < 2^(B+2); |o| + (c + 2)t < 2^E (E =
