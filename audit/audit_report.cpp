@@ -254,11 +254,10 @@ std::string markdown(const AuditResult& r) {
          "on).\n\n";
 
     s << "## Families and what they cover\n\n"
-         "Counted on the exact first frame, float / double scenes. far-* are the uniform, near-corner, tie "
-         "and seam "
-         "generators (in turn) with the map's origin moved to the magnitude, rounded down to whole tiles; "
-         "case k of "
-         "every far-* family is the same local scene.\n\n"
+         "Counted on the exact first frame, float / double scenes. Every family of the property suite but "
+         "extreme, then far-*: the random, corner-pass, corner-tie and seam-landing builders (in turn) with "
+         "every map origin they draw at the magnitude, rounded down to whole tiles; case k of every far-* "
+         "family is the same local scene, built there.\n\n"
          "The last two columns are the production resolver's own: the scenes where its fast path needed an "
          "exact "
          "refinement (filtered) and where it fell back to the exact lattice (exact), of all the scene's "

@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <string>
+#include <vector>
 
 namespace tilesweep::audit {
 namespace {
@@ -47,14 +49,14 @@ TEST(Audit, seedVariantShowsItsKnownFlaws) {
     const AuditResult& r = tinyAudit();
     for (const std::string impl : {"seed-float", "seed-double"}) {
         // Moving left or up it never hits anything; without a slide it never matches a two-step frame.
-        EXPECT_GT(failures(r.cell(impl, "uniform"), Metric::Decision), 0u) << impl;
-        EXPECT_GT(failures(r.cell(impl, "uniform"), Metric::Tunnel) +
-                      failures(r.cell(impl, "uniform"), Metric::Inside),
+        EXPECT_GT(failures(r.cell(impl, "random"), Metric::Decision), 0u) << impl;
+        EXPECT_GT(failures(r.cell(impl, "random"), Metric::Tunnel) +
+                      failures(r.cell(impl, "random"), Metric::Inside),
                   0u)
             << impl;
         // A box falling straight onto a floor divides by zero and falls through.
-        EXPECT_GT(failures(r.cell(impl, "seam"), Metric::Decision), 0u) << impl;
-        EXPECT_EQ(smallestFixingEpsilon(r.cell(impl, "uniform")), "none") << impl;
+        EXPECT_GT(failures(r.cell(impl, "seam-landing"), Metric::Decision), 0u) << impl;
+        EXPECT_EQ(smallestFixingEpsilon(r.cell(impl, "random")), "none") << impl;
     }
 }
 
@@ -62,7 +64,7 @@ TEST(Audit, coarseSubstepsTunnelAtHighSpeed) {
     const AuditResult& r = tinyAudit();
     const CellStats& c = r.cell("substep4-float", "high-speed");
     EXPECT_GT(failures(c, Metric::Tunnel), 0u);
-    EXPECT_GT(failures(r.cell("substep4-float", "near-corner"), Metric::Decision), 0u);
+    EXPECT_GT(failures(r.cell("substep4-float", "corner-pass"), Metric::Decision), 0u);
 }
 
 TEST(Audit, familiesCoverTheirRules) {
@@ -71,15 +73,15 @@ TEST(Audit, familiesCoverTheirRules) {
         const Family& f = r.families[c];
         const Coverage& cv = r.coverage[c][1];
         EXPECT_EQ(cv.scenes, kTinyCases) << f.name;
-        if (f.name == "tie") {
+        if (f.name == "corner-tie") {
             EXPECT_GT(cv.tie, 0u);
         }
-        if (f.name == "near-corner") {
+        if (f.name == "corner-pass") {
             EXPECT_GT(cv.cornerMiss, 0u);
             EXPECT_GT(cv.cornerPass, 0u);
             EXPECT_GT(cv.cornerClip, 0u);
         }
-        if (f.name == "seam") {
+        if (f.name == "resting") {
             EXPECT_GT(cv.resting, 0u);
         }
     }
@@ -99,6 +101,27 @@ TEST(Audit, everyGeneratedSceneIsAValidReplayableSceneLine) {
     for (const Family& f : auditFamilies()) {
         if (f.floatToo) expectReplayable<float>(f);
         expectReplayable<double>(f);
+    }
+}
+
+// A far column builds the same local scene as the others, at its magnitude: the map origin is the
+// magnitude rounded down to whole tiles, and the map and the box's size do not depend on it.
+TEST(Audit, farColumnsBuildTheSameLocalSceneAtTheirMagnitude) {
+    std::vector<Family> far;
+    for (const Family& f : auditFamilies())
+        if (f.kind == FamilyKind::Far && f.floatToo) far.push_back(f);
+    ASSERT_GE(far.size(), 3u);
+    for (std::uint64_t k = 0; k < 16; ++k) {
+        const Scene<float> nearest = generateScene<float>(far.front(), kSeed, k);
+        for (const Family& f : far) {
+            const Scene<float> s = generateScene<float>(f, kSeed, k);
+            const double tile = static_cast<double>(s.map.tileSize.x);
+            EXPECT_EQ(static_cast<double>(s.map.origin.x), std::floor(f.magnitude / tile) * tile)
+                << f.name << " " << k;
+            EXPECT_EQ(s.map.solid, nearest.map.solid) << f.name << " " << k;
+            EXPECT_EQ(s.box.size.x, nearest.box.size.x) << f.name << " " << k;
+            EXPECT_EQ(s.moves.size(), nearest.moves.size()) << f.name << " " << k;
+        }
     }
 }
 

@@ -124,11 +124,11 @@ void RateCell::merge(const RateCell& other) {
 }
 
 std::vector<Family> rateFamilies() {
-    std::vector<Family> f = {
-        {"uniform", FamilyKind::Uniform, 0, true}, {"near-corner", FamilyKind::NearCorner, 0, true},
-        {"tie", FamilyKind::Tie, 0, true},         {"seam", FamilyKind::Seam, 0, true},
-        {"tiny", FamilyKind::Tiny, 0, true},       {"high-speed", FamilyKind::HighSpeed, 0, true},
-    };
+    using Suite = scenarios::Family;
+    std::vector<Family> f;
+    for (const Suite suite : {Suite::Random, Suite::CornerPass, Suite::CornerTie, Suite::SeamLanding,
+                              Suite::Resting, Suite::FarSubUlp, Suite::HighSpeed})
+        f.push_back(suiteFamily(suite));
     for (const double d : kRateDistances) f.push_back({"far-" + distanceName(d), FamilyKind::Far, d, true});
     return f;
 }

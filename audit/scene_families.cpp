@@ -2,6 +2,7 @@
 // The audit's columns (scene_families.h) over the scenario library.
 #include "tilesweep/audit/scene_families.h"
 
+#include <iterator>
 #include <string>
 
 namespace tilesweep::audit {
@@ -28,14 +29,17 @@ std::uint64_t hashName(const std::string& name) {
 
 }  // namespace
 
+Family suiteFamily(scenarios::Family suite) {
+    return {scenarios::familyName(suite), FamilyKind::Suite, 0, true, suite};
+}
+
 std::vector<Family> auditFamilies() {
-    std::vector<Family> f = {
-        {"uniform", FamilyKind::Uniform, 0, true},
-        {"near-corner", FamilyKind::NearCorner, 0, true},
-        {"tie", FamilyKind::Tie, 0, true},
-        {"seam", FamilyKind::Seam, 0, true},
-        {"tiny", FamilyKind::Tiny, 0, true},
-        {"high-speed", FamilyKind::HighSpeed, 0, true},
+    // Every family of the property suite but `extreme`, whose moves of up to the largest finite
+    // value would send the grid and substep baselines through billions of cells.
+    std::vector<Family> f;
+    for (const scenarios::Family suite : scenarios::allFamilies())
+        if (suite != scenarios::Family::Extreme) f.push_back(suiteFamily(suite));
+    const std::vector<Family> far = {
         {"far-1", FamilyKind::Far, 1, true},
         {"far-1e3", FamilyKind::Far, 1e3, true},
         {"far-1e5", FamilyKind::Far, 1e5, true},
@@ -45,55 +49,22 @@ std::vector<Family> auditFamilies() {
         {"far-1e12", FamilyKind::Far, 1e12, false},
         {"far-2^52", FamilyKind::Far, 4503599627370496.0, false},
     };
-    // Every family of the property suite but `extreme`, whose moves of up to the largest finite
-    // value would send the grid and substep baselines through billions of cells, and
-    // `high-speed`, which is the high-speed column above.
-    for (const scenarios::Family suite : scenarios::allFamilies()) {
-        if (suite == scenarios::Family::Extreme || suite == scenarios::Family::HighSpeed) continue;
-        f.push_back(
-            {std::string("suite:") + scenarios::familyName(suite), FamilyKind::Suite, 0, true, suite});
-    }
+    f.insert(f.end(), far.begin(), far.end());
     return f;
 }
 
 template <class T>
 Scene<T> generateScene(const Family& family, std::uint64_t seed, std::uint64_t caseIndex) {
-    using scenarios::DrawnFamily;
     // The far families share one stream per case: case c of every magnitude is the same local
-    // scene, translated, so that the error-against-magnitude curve compares like with like.
+    // scene, built at each magnitude, so that the error-against-magnitude curve compares like
+    // with like.
     const std::uint64_t stream = family.kind == FamilyKind::Far ? hashName("far") : hashName(family.name);
     const std::uint64_t sceneSeed = mix(mix(seed ^ stream) + caseIndex);
-    const double m = family.magnitude;
-    Scene<T> s;
-    switch (family.kind) {
-        case FamilyKind::Uniform:
-            s = scenarios::drawScene<T>(DrawnFamily::Uniform, sceneSeed, m);
-            break;
-        case FamilyKind::NearCorner:
-            s = scenarios::drawScene<T>(DrawnFamily::NearCorner, sceneSeed, m);
-            break;
-        case FamilyKind::Tie:
-            s = scenarios::drawScene<T>(DrawnFamily::Tie, sceneSeed, m);
-            break;
-        case FamilyKind::Seam:
-            s = scenarios::drawScene<T>(DrawnFamily::Seam, sceneSeed, m);
-            break;
-        case FamilyKind::Tiny:
-            s = scenarios::drawScene<T>(DrawnFamily::Tiny, sceneSeed, m);
-            break;
-        case FamilyKind::HighSpeed:  // the property family's builder: one high-speed scene model
-            s = scenarios::buildScene<T>(scenarios::Family::HighSpeed, sceneSeed).scene;
-            break;
-        case FamilyKind::Far: {
-            static constexpr DrawnFamily kFar[] = {DrawnFamily::Uniform, DrawnFamily::NearCorner,
-                                                   DrawnFamily::Tie, DrawnFamily::Seam};
-            s = scenarios::drawScene<T>(kFar[caseIndex % 4], sceneSeed, m);
-            break;
-        }
-        case FamilyKind::Suite:
-            s = scenarios::buildScene<T>(family.suite, sceneSeed).scene;
-            break;
-    }
+    Scene<T> s = family.kind == FamilyKind::Far
+                     ? scenarios::buildSceneAt<T>(kFarFamilies[caseIndex % std::size(kFarFamilies)],
+                                                  sceneSeed, family.magnitude)
+                           .scene
+                     : scenarios::buildScene<T>(family.suite, sceneSeed).scene;
     s.name = "audit/" + family.name + "/" + std::to_string(caseIndex);
     return s;
 }

@@ -8,7 +8,7 @@
 // Then the lean twin against the first one (resolveMoveTwinLibm, std::floor/std::ceil of a
 // quotient per cell): the frames on which they decide differently or end at different
 // positions, on the benchmarks' frames (16-px tiles: a power of two, where the two must agree)
-// and on the audit's drawn families (tiles of 8 to 32 px, 12 and 24 among them).
+// and on five property families (tiles of 4 to 32 px, 12 and 24 among them).
 //
 // Per frame and implementation, against tilesweep::resolveMove (which matches the exact
 // reference bit for bit):
@@ -23,7 +23,7 @@
 
 #include "tilesweep/baselines/grid_resolve.h"
 #include "tilesweep/baselines/twin_resolve.h"
-#include "tilesweep/scenarios/drawn_families.h"
+#include "tilesweep/scenarios/families.h"
 
 #include <cmath>
 #include <cstdint>
@@ -218,12 +218,12 @@ LibmCounts libmOnFrames(tb::FrameKind kind, int speedArg) {
     return c;
 }
 
-/// `scenes` scenes of a drawn family, each frame from where the lean twin ended the last.
+/// `scenes` scenes of a property family, each frame from where the lean twin ended the last.
 template <class T>
-LibmCounts libmOnDrawnFamily(tilesweep::scenarios::DrawnFamily family, std::uint64_t scenes) {
+LibmCounts libmOnFamily(tilesweep::scenarios::Family family, std::uint64_t scenes) {
     LibmCounts c;
     for (std::uint64_t seed = 0; seed < scenes; ++seed) {
-        const tilesweep::Scene<T> scene = tilesweep::scenarios::drawScene<T>(family, seed);
+        const tilesweep::Scene<T> scene = tilesweep::scenarios::buildScene<T>(family, seed).scene;
         Vec2<T> start = scene.box.pos;
         for (const Vec2<T>& move : scene.moves)
             start = compareWithLibm<T>({scene.map.view(), {start, scene.box.size}, move}, c).position;
@@ -265,19 +265,15 @@ int main() {
     }
     printLibmRow("benchmark frames<float>", frames[0]);
     printLibmRow("benchmark frames<double>", frames[1]);
-    using tilesweep::scenarios::DrawnFamily;
-    constexpr std::uint64_t kDrawnScenes = 20000;
-    const std::pair<DrawnFamily, const char*> drawn[] = {
-        {DrawnFamily::Uniform, "uniform"}, {DrawnFamily::NearCorner, "near-corner"},
-        {DrawnFamily::Tie, "tie"},         {DrawnFamily::Seam, "seam"},
-        {DrawnFamily::Tiny, "tiny"},
-    };
-    for (const auto& [family, name] : drawn) {
+    using tilesweep::scenarios::Family;
+    constexpr std::uint64_t kFamilyScenes = 20000;
+    for (const Family family :
+         {Family::Random, Family::CornerPass, Family::CornerTie, Family::SeamLanding, Family::FarSubUlp}) {
         char row[64];
-        std::snprintf(row, sizeof row, "drawn %s<float>", name);
-        printLibmRow(row, libmOnDrawnFamily<float>(family, kDrawnScenes));
-        std::snprintf(row, sizeof row, "drawn %s<double>", name);
-        printLibmRow(row, libmOnDrawnFamily<double>(family, kDrawnScenes));
+        std::snprintf(row, sizeof row, "%s<float>", tilesweep::scenarios::familyName(family));
+        printLibmRow(row, libmOnFamily<float>(family, kFamilyScenes));
+        std::snprintf(row, sizeof row, "%s<double>", tilesweep::scenarios::familyName(family));
+        printLibmRow(row, libmOnFamily<double>(family, kFamilyScenes));
     }
     return 0;
 }

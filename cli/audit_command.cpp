@@ -100,10 +100,10 @@ CLI::App* addAuditCommand(CLI::App& app, AuditOptions& options) {
     command->footer(
         "Implementations: core-float, core-double (tilesweep::runScene), twin-* and grid-* (game-style\n"
         "swept AABB, bench/), seed-float, seed-double (the seed\n"
-        "article as written), substep{4,16,256}-float (the game-style substep loop). Families: uniform,\n"
-        "near-corner, tie, seam, tiny, high-speed, and far-<magnitude> (the same scenes translated by whole\n"
-        "tiles; float up to 2^23, double up to 2^52), and suite:<family>, every family of the property\n"
-        "suite but extreme (scenarios/). The figures depend only on --cases and --seed.\n"
+        "article as written), substep{4,16,256}-float (the game-style substep loop). Families: every\n"
+        "family of the property suite but extreme (scenarios/), and far-<magnitude>: random, corner-pass,\n"
+        "corner-tie and seam-landing scenes built with their map origin there (float up to 2^23, double\n"
+        "up to 2^52). The figures depend only on --cases and --seed.\n"
         "\n"
         "Exit status: 0 the production rows read zero everywhere; 1 they do not (the report names the\n"
         "scenes); 2 bad arguments or the report could not be written.");

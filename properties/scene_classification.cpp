@@ -123,6 +123,79 @@ int widestSignificand(const Scene<T>& scene) {
     return widest;
 }
 
+/// The span C + 1 - G that the float range test (admitFloatFrame, src/range_admission.h) takes for
+/// the scene's first frame, from frexp exponents (|v| < 2^e, ulp 2^(e - 24) for a normal float):
+/// B the largest of the box's inputs, E = max over both axes of max(e(origin), e(tile) +
+/// bitLength(cells + 2)) + 1, C = max(B + 2, E), G the lowest ulp. Admitted at 53 and below.
+int floatRangeSpan(const Scene<float>& scene) {
+    const auto exponent = [](float v) {
+        int e = 0;
+        (void)std::frexp(v, &e);
+        return v == 0 ? -100000 : e;
+    };
+    const Vec2<float> move = scene.moves.empty() ? Vec2<float>{0, 0} : scene.moves.front();
+    const float box[6] = {scene.box.pos.x,  scene.box.pos.y, scene.box.size.x,
+                          scene.box.size.y, move.x,          move.y};
+    const float grid[4] = {scene.map.origin.x, scene.map.origin.y, scene.map.tileSize.x,
+                           scene.map.tileSize.y};
+    int top = -100000;
+    int lowest = 100000;
+    for (const float v : box) {
+        top = std::max(top, exponent(v));
+        if (v != 0) lowest = std::min(lowest, exponent(v) - 24);
+    }
+    int edges = -100000;
+    const std::int32_t cells[2] = {scene.map.columns, scene.map.rows};
+    for (int a = 0; a < 2; ++a) {
+        int cellBits = 0;
+        for (auto n = static_cast<std::uint32_t>(cells[a]) + 2; n != 0; n >>= 1) ++cellBits;
+        edges = std::max(edges, std::max(exponent(grid[a]), exponent(grid[2 + a]) + cellBits) + 1);
+        for (const float v : {grid[a], grid[2 + a]})
+            if (v != 0) lowest = std::min(lowest, exponent(v) - 24);
+    }
+    return std::max(top + 2, edges) + 1 - lowest;
+}
+
+/// How deep into the double filter's band (kPairProductErrorBound, src/proof_constants.h) the
+/// first frame's entry comparisons reach: for each solid tile that both axes approach, the
+/// resolver's D = fl(fl(ex.hi * vy) - fl(ey.hi * vx)) (ex.hi, ey.hi the entry distances rounded to
+/// nearest: the high parts of its exact pairs) against the exact ex * vy - ey * vx, the error as a
+/// fraction of the bound (2 + 16u)u (|p| + |q|); the largest, or 0. Only entries that are not
+/// doubles count (pairs with a low part: the filter's path).
+double deepestFilterError(const Scene<double>& scene) {
+    if (scene.moves.empty()) return 0;
+    const Vec2<double> move = scene.moves.front();
+    if (move.x == 0 || move.y == 0) return 0;
+    const oracle::ExactTileMap map = oracle::toExact(scene.map);
+    const Rational x0 = oracle::toRational(scene.box.pos.x);
+    const Rational y0 = oracle::toRational(scene.box.pos.y);
+    const Rational x1 = x0 + oracle::toRational(scene.box.size.x);
+    const Rational y1 = y0 + oracle::toRational(scene.box.size.y);
+    const double bound = (2.0 + 16.0 * 0x1p-53) * 0x1p-53;
+    double deepest = 0;
+    for (std::int32_t j = 0; j < map.rows; ++j)
+        for (std::int32_t i = 0; i < map.columns; ++i) {
+            if (!map.isSolid(i, j)) continue;
+            const oracle::ExactRect r = map.tileRect(i, j);
+            const Rational ex = move.x > 0 ? r.min.x - x1 : x0 - r.max.x;
+            const Rational ey = move.y > 0 ? r.min.y - y1 : y0 - r.max.y;
+            if (ex < 0 || ey < 0) continue;
+            const double exHi = oracle::fromRational<double>(ex, oracle::Rounding::NearestEven);
+            const double eyHi = oracle::fromRational<double>(ey, oracle::Rounding::NearestEven);
+            if (oracle::toRational(exHi) == ex && oracle::toRational(eyHi) == ey) continue;
+            const double vx = std::fabs(move.x);
+            const double vy = std::fabs(move.y);
+            const double p = exHi * vy;
+            const double q = eyHi * vx;
+            if (!std::isfinite(p - q) || !std::isfinite(std::fabs(p) + std::fabs(q))) continue;  // huge moves
+            const Rational exact = ex * oracle::toRational(vy) - ey * oracle::toRational(vx);
+            const double error = oracle::fromRational<double>(abs(exact - oracle::toRational(p - q)),
+                                                              oracle::Rounding::NearestEven);
+            deepest = std::max(deepest, error / (bound * (std::fabs(p) + std::fabs(q))));
+        }
+    return deepest;
+}
+
 /// The path that decided the scene's frames (tilesweep/frame_stats.h): "exact" when any frame fell
 /// back to the lattice, else "filtered" when any predicate needed the exact refinement, else "fast".
 template <class T>
@@ -216,6 +289,20 @@ std::vector<std::string> classifyScene(const Scene<T>& scene) {
     // The tiny end of the range: some nonzero input below 2^-500 (double) or 2^-100 (float),
     // where a product of two inputs would underflow a double (or come near it).
     if (smallestInputExponent(scene) < (std::is_same<T, float>::value ? -100 : -500)) tags.push_back("tiny");
+    // The upper half of the double filter's band (between half its bound and the bound), by tenths.
+    if constexpr (std::is_same<T, double>::value) {
+        const double deepest = deepestFilterError(scene);
+        if (deepest > 0.5) {
+            tags.push_back("filter-upper-half");
+            tags.push_back("filter-band-tenth:" +
+                           std::to_string(std::min(9, static_cast<int>(deepest * 10))));
+        }
+    }
+    // The edge of the float range test: spans 53 (the last admitted) to 57 (four binades past).
+    if constexpr (std::is_same<T, float>::value) {
+        const int rangeSpan = floatRangeSpan(scene);
+        if (rangeSpan >= 53 && rangeSpan <= 57) tags.push_back("range-boundary");
+    }
     // Capacity boundaries (mover.h): the contact bound at the inline limit, or past it (the wide
     // path), and frames with many contacts (an exact count the buffers are sized to).
     const std::int32_t bound = maxContacts(scene.box.size, scene.map.tileSize);

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The tolerance audit with its charts: builds the CLI (the plain Release build), runs `tilesweep audit` into
-# DIR (default docs/audit), then draws DIR/error_vs_magnitude.svg and failures_per_family.svg
-# from DIR/report.json with scripts/plots.py (Debian's python3-matplotlib, installed when missing).
+# The tolerance audit with its charts: builds the CLI (the plain Release build), runs
+# `tilesweep audit` into DIR (default docs/audit), then draws DIR/error_vs_magnitude.svg and
+# failures_per_family.svg from DIR/report.json with scripts/plots.py (Debian's
+# python3-matplotlib, installed when missing).
 #
 #   bash scripts/audit.sh [--out DIR] [tilesweep audit options...]   # e.g. --cases 500 --seed 7
 set -euo pipefail

@@ -138,16 +138,14 @@ template <class T>
 /// -1, 0 or 1 as A*s compares with B*t, exactly, for exact pairs A, B and doubles s, t >= 0.
 /// Pairs whose low parts are zero go to the product comparison above (exact by monotonic
 /// rounding and TwoProduct). Otherwise a semi-static filter decides (Shewchuk 1997; the CGAL
-/// filtered kernels): with p = fl(a.hi*s), q = fl(b.hi*t) and D = fl(p - q),
-///   |(a.hi*s - b.hi*t) - D| <= u|p| + u|q| + u|D| <= (2u + u^2)(|p| + |q|)
-/// (each rounding to nearest errs by at most u times its result), and the low parts add
-///   |a.lo*s| + |b.lo*t| <= u|a.hi*s| + u|b.hi*t| <= (u + u^2)(|p| + |q|)
-/// (|lo| <= ulp(hi)/2 <= u|hi|): the exact difference lies within (3u + 2u^2)(|p| + |q|) of D.
-/// The bound (kPairProductErrorBound, proof_constants.h) is computed as fl(c * fl(|p| + |q|)), at least c(1 -
-/// u)^2(|p| + |q|), which for c = (3 + 16u)u exceeds (3u + 2u^2)(|p| + |q|). So |D| above it gives the sign
-/// of D, exactly. Inside it, the sign of the eight-term exact sum (four TwoProducts) settles it, and
-/// `refined` is set. The caller's range keeps every product and every TwoProduct error term far from overflow
-/// and underflow.
+/// filtered kernels): with p = fl(a.hi*s), q = fl(b.hi*t), S = |p| + |q| and D = fl(p - q),
+///   |(A*s - B*t) - D| <= u|p| + u|q| + u|D| + |a.lo*s| + |b.lo*t| <= (2u + u^2)S + u|D|
+/// (each rounding to nearest errs by at most u times its result; |lo| <= ulp(hi)/2 <= u|hi|), so
+/// the sign of D is exact once |D|(1 - u) > (2u + u^2)S. The bound (kPairProductErrorBound,
+/// proof_constants.h, c = (2 + 16u)u) is computed as fl(c * fl(S)) >= c(1 - u)^2 S, and |D| above
+/// it is above (2u + u^2)S / (1 - u). Inside it, the sign of the eight-term exact sum (four
+/// TwoProducts) settles it, and `refined` is set. The caller's range keeps every product and
+/// every TwoProduct error term far from overflow and underflow.
 [[nodiscard, gnu::always_inline]] inline int compareProducts(ExactPair a, double s, ExactPair b, double t,
                                                              bool& refined) noexcept {
     if (a.lo == 0 && b.lo == 0) return compareProducts(a.hi, s, b.hi, t, refined);

@@ -25,10 +25,11 @@
 //                      derivations need: the secondary range of its walk
 //                      (kSecondaryRangeErrorUlps, fast_frame.h) and the double frames' time
 //                      comparison filter (kPairProductErrorBound, exact_double.h)
-//   FAST_RANGE_TOO_WIDE  the range test admitting a float frame to the fast path one binade
-//                      too generous (spans of 54 bits, which a double cannot hold) (range_admission.h)
-//   FAST_RANGE_FAR_TOO_WIDE  the same six binades too generous: the range test bounds every
-//                      coordinate with a few bits of slack, so one binade alone rarely shows
+//   FAST_RANGE_TOO_WIDE  the range test admitting a float frame to the fast path four binades
+//                      too generous (spans of 57 bits): the least widening known to show on a
+//                      valid map, a far face 2^G past a grid line read as on it (kFastSpanBits,
+//                      proof_constants.h: one binade wider cannot change an answer) (range_admission.h)
+//   FAST_RANGE_FAR_TOO_WIDE  the same six binades too generous
 // Issue 20's four classes, one fault standing for each:
 //   PAIR_REFINEMENT_SWAPPED  double near-ties: the exact refinement of the pair comparison called
 //                      with its two sides swapped, so a nonzero sign inside the filter's band

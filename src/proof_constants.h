@@ -69,11 +69,23 @@ inline constexpr double kFreeMoveMagnitudeScale = 0x1p-48;
 // ---- products and times ----------------------------------------------------------------------
 
 /// The semi-static error bound of compareProducts on exact pairs (exact_double.h), relative to
-/// |fl(a.hi*s)| + |fl(b.hi*t)|: (3 + 16u)u. The exact difference a*s - b*t lies within
-/// (3u + 2u^2)(|p| + |q|) of D = fl(p - q) (three roundings, and the low parts at most u of the
-/// high parts); the bound computed as fl(c * fl(|p| + |q|)) is at least c(1 - u)^2(|p| + |q|),
-/// which for c = (3 + 16u)u exceeds it. Full derivation above compareProducts.
-inline constexpr double kPairProductErrorBound = (3.0 + 16.0 * kUnitRoundoff) * kUnitRoundoff;
+/// S = |p| + |q|, p = fl(a.hi*s), q = fl(b.hi*t): c = (2 + 16u)u. With D = fl(p - q), the exact
+/// difference X = a*s - b*t satisfies
+///   |X - D| <= |a.hi*s - p| + |b.hi*t - q| + |(p - q) - D| + |a.lo*s| + |b.lo*t|
+///           <= u|p| + u|q| + u|D| + u(1 + u)(|p| + |q|) = (2u + u^2)S + u|D|
+/// (each rounding to nearest errs by at most u times its result; |lo| <= ulp(hi)/2 <= u|hi|, and
+/// |a.hi*s| <= (1 + u)|p|). So sign(D) is sign(X) once |D|(1 - u) > (2u + u^2)S. The filter
+/// decides only when |D| > fl(c * fl(S)) >= c(1 - u)^2 S, and c(1 - u)^3 >= 2u + u^2 holds for
+/// c = 2u + 7u^2 + 16u^3 already: (2 + 16u)u is safe.
+///
+/// Through issue 20 this was (3 + 16u)u: the derivation bounded u|D| by u(1 + u)S, which is
+/// true but only matters when |D| is far outside the band. Inside it the error is at most about
+/// 2uS, two thirds of the old bound, so the old band's top third was never reachable; the
+/// construction of tests/exact_primitives_test.cpp (comparesExactTiesInTheFilterBandsUpperHalf)
+/// reaches 0.946 of the new bound (0.63 of the old), and its upper half in every case where the
+/// two rounded products land two ulps apart. Halving the new bound (FILTER_BOUND_HALVED) is
+/// wrong on exactly those: the sign of D (two ulps of p) is not the sign of an exact tie.
+inline constexpr double kPairProductErrorBound = (2.0 + 16.0 * kUnitRoundoff) * kUnitRoundoff;
 
 /// The filter of roundTimeToDouble (time_rounding.h), in units of u times |d| + |e| + |lo|: the
 /// remainder R~ = fl(fl(d - e) + lo) is within (2u + u^2)(|d| + |e| + |lo|) of the exact one;
@@ -107,9 +119,48 @@ inline constexpr double kGridLineReachLimit = 0x1p40;
 // ---- range admission -------------------------------------------------------------------------
 
 /// The most bits the fast path's exact doubles may need: a double's 53.
+///
+/// Float frames (admitFloatFrame). Every input is a float, a multiple of its ulp, so all are
+/// multiples of 2^G, G the lowest ulp exponent among the nonzero ones (G >= -149: subnormal
+/// inputs are turned away). A multiple of 2^G below 2^(G+53) in magnitude is a double, so it is
+/// enough that every value the solver must hold exactly is below 2^(G+53). On one axis, with x,
+/// w, dx the box's position, size and displacement, o the origin, t the tile and c the cells,
+/// those values are (fast_frame.h, fast_axis.h, frame_loop.h, final_rounding.h):
+///   - x + w, x + dx, and the touch positions e - w, e + w (e a tile edge);
+///   - tile edges e = o + k*t for -1 <= k <= c + 1 (k*t itself is exact: k < 2^25 times a
+///     24-bit significand);
+///   - the distances e - (x + w), x - e, e - x, (x + w) - e of the tile test;
+///   - the grid-line test's ends (x + dx) + w, e (a touch position plus w) and r + w (r the float
+///     the position rounds to, between the start and the exact end: the exact end itself, or a
+///     float of at least 2^(G+24), so a multiple of 2^G too), their difference, and the grid
+///     lines o + k*t and k*t next to them (within 2t of (x + dx) + w: FastAxis::hasLineIn).
+/// Each is at most A = |x| + |w| + |dx| + |o| + (c + 2)t in magnitude (the grid lines: |x + dx
+/// + w| + 2t <= A, as c + 2 >= 2). The range test bounds A by exponent fields: |x|, |w|, |dx| <
+/// 2^B (B = boxTop - 126), so their sum is below 3 * 2^B < 2^(B+2); |o| + (c + 2)t < 2^E (E =
+/// edgeTop - 126); so A < 2^(B+2) + 2^E <= 2^(C+1) with C = max(B + 2, E), and C + 1 - G <= 53
+/// suffices. Through issue 20 the test asked C + 3 - G <= 53 (C + 1 bounded the coordinates, and
+/// two more bits the differences, which A already counts): two binades of slack, gone.
+///
+/// What a wider test admits. A value misses the double grid only when it is at least 2^(G+53)
+/// and has a bit at 2^G, which only an input with its ulp at 2^G (below 2^(G+24)) provides; it
+/// changes an answer only when it lies within 2^G of what it is compared with or rounded to (a
+/// tile edge, a grid line, a float). One binade wider (G + 53 >= C) holds exactly every value
+/// that decides anything: the box's sums are below 3 * 2^B < 2^(B+2), tile edges below 2^E,
+/// touch positions and the grid-line test's ends among them; only distances to far tile edges
+/// can pass 2^C, and the solver compares those with the speed alone, which they exceed by far
+/// (monotonic rounding keeps that exact). So no answer can change, and a fault one binade wide
+/// is equivalent. On a valid map every tile edge is a float, so a fine bit comes from the box
+/// alone (w or dx), and a value 2^G from a float needs two fine inputs that cancel to 2^G
+/// beside a coarse one: the far face x + dx + w of a box whose move dx = -(w - 2^G) leaves it
+/// 2^G past the grid line x. That value is below 2^B, so it misses the grid only when G + 53 <=
+/// B - 1: four binades (C + 1 - G = 57). Then it rounds onto x, the grid-line test sees x in
+/// [far face, far face rounded), and the position is rounded down, one float below the contract's
+/// x. That is the fault FAST_RANGE_TOO_WIDE (fault_injection.h), and the range-edge family builds
+/// those scenes (scenarios/range_edge_family.h); at two and three binades no valid scene we know
+/// of can tell.
 inline constexpr int kFastSpanBits = 53;
-/// Float frames: every coordinate below 2^120, so that sums of three and products of the fast
-/// path (squares of coordinates at most) stay far from double overflow, and a far edge plus a
+/// Float frames: every value formed (A above) below 2^120, so that sums of three and products of
+/// the fast path (squares of values at most) stay far from double overflow, and a far edge plus a
 /// tile stays below float's largest value.
 inline constexpr int kFloatFrameTopExponent = 120;
 /// Double frames: every nonzero input in [2^-250, 2^251), so that no product, TwoProduct error

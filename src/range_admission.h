@@ -6,11 +6,12 @@
 // is solved on the lattice (lattice_frame.h).
 //
 // Float frames. Every finite float is a multiple of its ulp. Let G be the lowest ulp exponent
-// among the nonzero inputs, and 2^C a bound on the magnitude of every coordinate formed (box
-// edges at the start, the end and every touch position, tile edges from one cell before the map
-// to two past it, grid lines next to them). Every such coordinate, and every difference of two
-// of them, is a multiple of 2^G below 2^(C+2); when C + 2 - G <= 53 it is a double exactly, and
-// so is every sum and difference the solver takes (admitFloatFrame). The single-tile sweep takes
+// among the nonzero inputs. On each axis every value the solver forms (box edges at the start,
+// the end and every touch position, tile edges from one cell before the map to one past it,
+// grid lines next to them, and every difference of two of these) is a multiple of 2^G below
+// |x| + |w| + |dx| + |origin| + (cells + 2) * tile, which admitFloatFrame bounds by 2^(C+1) from
+// the inputs' exponent fields; when C + 1 - G <= 53 every one of them is a double exactly
+// (kFastSpanBits, proof_constants.h, gives the list and the proof). The single-tile sweep takes
 // the same test with its own coordinates (admitFloatPair).
 //
 // Double frames. Every coordinate the solver forms is a double or an exact pair (admitDoubleFrame
@@ -56,23 +57,23 @@ struct FloatFields {
     return r;
 }
 
-/// The float range test itself, for coordinates below 2^(top - 126) that are multiples of the
-/// ulp of the smallest input (field `lowest`, ulp 2^(lowest - 150)), with `headroom` more bits
-/// for the differences the solver takes: (C + headroom) - G <= 53, and every coordinate below
-/// 2^kFloatFrameTopExponent.
+/// The float range test itself, for values below 2^(top - 126 + headroom) (2^C with C = top -
+/// 126 bounds the coordinates, `headroom` bits more the differences the solver takes) that are
+/// multiples of the ulp of the smallest input (field `lowest`, ulp 2^G, G = lowest - 150):
+/// C + headroom - G <= 53, and C + headroom <= kFloatFrameTopExponent.
 [[nodiscard]] inline bool floatSpanFits(int top, int headroom, int lowest) noexcept {
     int span = (top - 126 + headroom) - (lowest - 150);
 #if defined(TILESWEEP_FAULT_FAST_RANGE_TOO_WIDE)
-    --span;  // deliberate fault: the range test one binade too generous
+    span -= 4;  // deliberate fault: the range test four binades too generous (fault_injection.h)
 #endif
 #if defined(TILESWEEP_FAULT_FAST_RANGE_FAR_TOO_WIDE)
     span -= 6;  // deliberate fault: six binades too generous, past the test's slack
 #endif
-    return span <= kFastSpanBits && top - 126 <= kFloatFrameTopExponent;
+    return span <= kFastSpanBits && top - 126 + headroom <= kFloatFrameTopExponent;
 }
 
 /// Whether the fast path holds every value of this float frame exactly (see the top of this
-/// file): all nonzero inputs normal, the frame valid, C + 2 - G <= 53, and no coordinate near
+/// file): all nonzero inputs normal, the frame valid, C + 1 - G <= 53, and no coordinate near
 /// the top of float's range.
 [[nodiscard]] inline bool admitFloatFrame(const ResolveInput<float>& in) noexcept {
     const float values[10] = {in.box.pos.x,      in.box.pos.y,      in.box.size.x,   in.box.size.y,
@@ -89,9 +90,9 @@ struct FloatFields {
     int edgeTop = -1000;
     for (int a = 0; a < 2; ++a)
         edgeTop = std::max(edgeTop, std::max(f.field[6 + a], f.field[8 + a] + cellBits[a]) + 1);
-    // Coordinates: |x| + |w| + |dx| < 2^(boxTop + 2 - 126); an edge minus a size, a grid line
-    // next to a box edge: one bit more than the larger.
-    return floatSpanFits(std::max(boxTop + 2, edgeTop) + 1, 2, f.lowest);
+    // |x| + |w| + |dx| < 3 * 2^(boxTop - 126) < 2^(boxTop + 2 - 126), and the sum of that and the
+    // edges' bound is below twice the larger: C = max(boxTop + 2, edgeTop) - 126, headroom 1.
+    return floatSpanFits(std::max(boxTop + 2, edgeTop), 1, f.lowest);
 }
 
 /// The same for one box against one tile (sweepBox), with the box's edges (sums of three

@@ -13,8 +13,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <random>
 
@@ -142,6 +144,69 @@ TEST(ExactPrimitives, comparesPairProductsInsideTheFilterBandExactly) {
     }
     EXPECT_GT(refinedCount, 5000) << "too few comparisons reached the exact refinement";
     EXPECT_GT(bothSides, 2000) << "too few refined comparisons had a nonzero answer";
+}
+
+/// The filter's error, |X - D| with X = A*s - B*t exact and D = fl(fl(a.hi*s) - fl(b.hi*t)), as a
+/// fraction of its bound kPairProductErrorBound * (|p| + |q|) (proof_constants.h). For an exact
+/// tie (X = 0) it is |D| over the bound.
+double fractionOfTheBand(ExactPair a, double s, ExactPair b, double t) {
+    const double p = a.hi * s;
+    const double q = b.hi * t;
+    return std::fabs(p - q) / (kPairProductErrorBound * (std::fabs(p) + std::fabs(q)));
+}
+
+TEST(ExactPrimitives, comparesExactTiesInTheFilterBandsUpperHalf) {
+    // A = t*M and B = s*M as exact pairs (TwoProduct of a double and a small integer), so that
+    // A*s = B*t exactly, and the filter's D is all error. Its four parts (the rounding of p and of
+    // q, and the low parts of A and B, each up to u of its value) add up to about 2u(|p| + |q|)
+    // when all are near their largest and of the same sign: the upper half of the band. With M's
+    // significand just above 1 and s, t's at 1.01 to 1.15, p and q are the roundings of two
+    // values within about an ulp of each other, and land two ulps apart in about 1 case in 4,000:
+    // then |D| is two ulps of p, the bound over p's significand. A bound halved
+    // (FILTER_BOUND_HALVED) decides those ties as D's sign, which is not 0.
+    std::mt19937_64 rng(2026120207);
+    int upper = 0;
+    int candidates = 0;
+    double largest = 0;
+    for (int k = 0; k < 300000; ++k) {
+        const double m = 1.0 + std::ldexp(static_cast<double>(rng() >> 11), -53) / 64;  // [1, 1 + 2^-6)
+        const double M = std::ldexp(m, std::uniform_int_distribution<int>(-30, 30)(rng));
+        const auto multiplier = [&rng] { return static_cast<double>(259 + rng() % 36); };  // [259, 294]
+        const double t = multiplier();
+        const double s = multiplier();
+        if (s == t) continue;
+        ++candidates;
+        const double aHi = t * M;
+        const double bHi = s * M;
+        const ExactPair a{aHi, productError(t, M, aHi)};
+        const ExactPair b{bHi, productError(s, M, bHi)};
+        const double fraction = fractionOfTheBand(a, s, b, t);
+        largest = std::max(largest, fraction);
+        if (fraction <= 0.5) continue;
+        ++upper;
+        const Rational exactA = exactly(a.hi) + exactly(a.lo);
+        const Rational exactB = exactly(b.hi) + exactly(b.lo);
+        ASSERT_EQ(signOf(exactA * exactly(s) - exactB * exactly(t)), 0) << "the construction is an exact tie";
+        bool refined = false;
+        ASSERT_EQ(compareProducts(a, s, b, t, refined), 0)
+            << std::hexfloat << "A = " << a.hi << " + " << a.lo << ", s = " << s << "; B = " << b.hi << " + "
+            << b.lo << ", t = " << t << "; |D| at " << std::defaultfloat << fraction << " of the bound";
+        EXPECT_TRUE(refined);
+        // One ulp off the tie in B's low part: the same D, a nonzero exact sign.
+        const ExactPair nudged = twoSum(b.hi, (k & 1) != 0 ? nextUp(b.lo) : nextDown(b.lo));
+        const int exact =
+            signOf(exactA * exactly(s) - (exactly(nudged.hi) + exactly(nudged.lo)) * exactly(t));
+        ASSERT_EQ(compareProducts(a, s, nudged, t, refined), exact)
+            << std::hexfloat << "A = " << a.hi << " + " << a.lo << ", s = " << s << "; B = " << nudged.hi
+            << " + " << nudged.lo << ", t = " << t;
+    }
+    std::printf(
+        "filter band: %d of %d exact ties in the upper half (%.3f%%), the largest at %.4f of the bound\n",
+        upper, candidates, 100.0 * upper / candidates, largest);
+    // Measured with this seed: 70 of 291,804 (0.024%), the largest at 0.946 of the bound.
+    EXPECT_GT(upper, 40) << "too few exact ties reached the upper half of the filter's band";
+    EXPECT_GT(largest, 0.9) << "the construction should come near the top of the band";
+    EXPECT_LE(largest, 1.0) << "an exact tie outside the band: the filter would decide it";
 }
 
 TEST(ExactPrimitives, signOfSumIsTheSignOfTheExactSum) {

@@ -8,7 +8,7 @@
 // (resolver, family): the share of scenes that break each claim, with a 95% Wilson interval,
 // and the largest distance by which a safety claim broke (how deep inside a tile, how far
 // short of touching, how far past the exact end): the tolerance under which it would hold.
-// The far families are the same local scenes translated by each distance of kRateDistances,
+// The far families are the same local scenes built at each distance of kRateDistances,
 // so that the tolerance is a function of the distance from the origin.
 //
 //     RatesConfig config;  config.cases = 2000;
@@ -64,7 +64,8 @@ inline const std::vector<Metric> kRateMetrics = {Metric::Tunnel,    Metric::Insi
                                                  Metric::Overshoot, Metric::Missed,  Metric::Extra,
                                                  Metric::Snag,      Metric::Inexact, Metric::NoAnswer};
 
-/// The families of a rates run: the drawn families at the origin, then far-<d> for each distance.
+/// The families of a rates run: seven property families (random, corner-pass, corner-tie,
+/// seam-landing, resting, far-sub-ulp, high-speed), then far-<d> for each distance.
 [[nodiscard]] std::vector<Family> rateFamilies();
 
 /// A histogram of breach distances, in binades: bin 0 holds the scenes that did not break the

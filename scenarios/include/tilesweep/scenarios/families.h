@@ -12,9 +12,9 @@
 //
 // One file per family (or per builder that draws several related families): layout_family.h,
 // corner_family.h, floor_family.h, far_sub_ulp_family.h, far_edge_family.h, fine_bits_family.h,
-// extreme_family.h, filter_band_family.h, high_speed_family.h, tiny_scale_family.h and
-// capacity_family.h, over the shared pieces of scene_pieces.h; family.h names them. This header
-// includes them all and draws any of them (genScene, buildScene).
+// extreme_family.h, filter_band_family.h, high_speed_family.h, tiny_scale_family.h,
+// capacity_family.h and range_edge_family.h, over the shared pieces of scene_pieces.h; family.h
+// names them. This header includes them all and draws any of them (genScene, buildScene).
 //
 // RapidCheck's own float generator never yields -0, subnormals or tile-edge values and shrinks
 // poorly, so every number here is an integer on a grid mapped to T (a multiple of tile/8, say),
@@ -35,6 +35,7 @@
 #include "tilesweep/scenarios/floor_family.h"
 #include "tilesweep/scenarios/high_speed_family.h"
 #include "tilesweep/scenarios/layout_family.h"
+#include "tilesweep/scenarios/range_edge_family.h"
 #include "tilesweep/scenarios/tiny_scale_family.h"
 #include "tilesweep/scene/scene.h"
 
@@ -89,6 +90,8 @@ rc::Gen<GeneratedScene<T>> genScene(Family family) {
             return detail::genTinyScaleScene<T>(genScene<T>(Family::Mixed));
         case Family::Capacity:
             return detail::genCapacityScene<T>();
+        case Family::RangeEdge:
+            return detail::genRangeEdgeScene<T>();
         case Family::Mixed:
             break;
     }
@@ -122,6 +125,20 @@ template <class T>
 [[nodiscard]] GeneratedScene<T> buildScene(Family family, std::uint64_t seed, int size = rc::kNominalSize) {
     const std::lock_guard<std::mutex> lock(generatorMutex());
     return genScene<T>(family)(rc::Random(seed), size).value();
+}
+
+/// buildScene with every map origin the family draws (genOrigin) at `magnitude`, rounded down to
+/// whole tiles: the same (family, seed) gives the same local scene at every magnitude, built in
+/// T there. The families whose builders draw their origin that way: random, floor, stairs,
+/// single-tile, corner-tie, corner-pass, seam-landing, gap, resting, high-speed (the others place
+/// their own origins and ignore it). The audit's far columns are these.
+template <class T>
+[[nodiscard]] GeneratedScene<T> buildSceneAt(Family family, std::uint64_t seed, double magnitude) {
+    detail::placedOriginMagnitude() = magnitude;
+    struct Clear {
+        ~Clear() { detail::placedOriginMagnitude().reset(); }
+    } clear;
+    return buildScene<T>(family, seed);
 }
 
 /// Prints a generated scene as the scene line it is (every number a hexfloat), so a

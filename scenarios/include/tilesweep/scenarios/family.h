@@ -31,6 +31,7 @@ enum class Family : std::uint8_t {
     NearTie,      ///< the filter band's corner ties nudged one ulp off: nonzero signs its refinement decides
     TinyScale,    ///< a mixed scene scaled by a power of two near the bottom of T's normal range
     Capacity,     ///< boxes whose contact bound is the inline limit or just past it, into a corner
+    RangeEdge,    ///< float frames at the range test's edge: a fine width and move just past a grid line
     Mixed,
 };
 
@@ -72,6 +73,8 @@ enum class Family : std::uint8_t {
             return "tiny-scale";
         case Family::Capacity:
             return "capacity";
+        case Family::RangeEdge:
+            return "range-edge";
         case Family::Mixed:
             return "mixed";
     }

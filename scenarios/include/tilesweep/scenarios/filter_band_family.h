@@ -24,18 +24,22 @@ namespace tilesweep::scenarios::detail {
 /// but in double they are not doubles (the resolver carries them as exact pairs hi + lo), and the
 /// rounded comparison of a(K-g)*b*s against b(K-g)*a*s comes out nonzero in about 28% of cases.
 /// The search below asks for a rounded difference in the upper half of the certified band
-/// (kPairProductErrorBound, src/exact_double.h). With a and b just above powers of two (257, 513,
-/// ..., 8193: float's choices) no candidate passed a third of it (3 million tried, none above
-/// 0.334); in double, a and b are any odd numbers in [257, 8193), and about 1 candidate in 50,000
-/// lands in the upper half (up to 0.545 of the bound measured, the analysis allows 2/3: both
-/// product roundings and both low parts at their largest, aligned), so about 60% of double scenes
-/// reach it within the search; the rest are the stream's last candidate. What also catches a
-/// halved bound (FILTER_BOUND_HALVED) is the neighbours: a solid tile
-/// across the approached face is hit at the same time as the corner tile, through a comparison of
-/// two pair-valued times that the halved band decides wrongly ("1 contacts != 2"). Drawing one
-/// candidate instead of the stream's last did not reach it in 3 x 4000 cases, so the stream stays.
-/// Float scenes are the same construction, where the fast path's rounded products tie and
-/// TwoProduct settles them. The tile's neighbours across both faces are random.
+/// (kPairProductErrorBound, src/proof_constants.h: (2 + 16u)u since issue 20, which no exact
+/// tie passes). Its four parts (the roundings of both products, both low parts) each reach u of
+/// their value only when every significand is just above 1, and add up only when all four are
+/// near their largest with one sign: then the two rounded products land two ulps apart. So in
+/// double a and b are odd from 259 to 293 (significands 1.01 to 1.15) and K - g's significand
+/// is just above 1: the search found the upper half in every double scene of 300 (tag
+/// filter-upper-half, floor 50%: 23% of them at 0.7 to 0.8 of the bound, 75% at 0.8 to 0.9, 1%
+/// above 0.9), where a and b anywhere in [257, 8193) found it in 66% (the rest are the stream's
+/// last candidate). tests/exact_primitives_test.cpp (comparesExactTiesInTheFilterBandsUpperHalf)
+/// builds the same ties without a scene. Float's a and b are just above powers of two (257,
+/// 513, ..., 8193: its products are exact doubles, compared by monotonic rounding and
+/// TwoProduct, with no band). A halved bound (FILTER_BOUND_HALVED) decides the upper half's
+/// ties by the sign of D, wrongly; the neighbours show it too: a solid tile across the
+/// approached face is hit at the same time as the corner tile, through a comparison of two
+/// pair-valued times that the halved band decides wrongly ("1 contacts != 2"). The tile's
+/// neighbours across both faces are random.
 ///
 /// With `nearTie`, one input (the box's position or the move, on x or y) is then nudged by one ulp
 /// either way: the two products now differ, by far less than the filter's bound, and the exact
@@ -50,14 +54,15 @@ rc::Gen<GeneratedScene<T>> genFilterBandScene(bool nearTie = false) {
         // value.
         const double near[] = {257, 513, 1025, 2049, 4097, 8193};
         const double u = std::ldexp(1.0, -53);
-        const double band = (3.0 + 16.0 * u) * u;  // the certified bound, relative to |p| + |q|
+        const double band = (2.0 + 16.0 * u) * u;  // the certified bound, relative to |p| + |q|
         double a = 257;
         double b = 513;
         double K = 0;
         double g = 0;
         for (int attempt = 0; attempt < 50000; ++attempt) {
-            a = isFloat ? near[rng() % 6] : static_cast<double>((257 + rng() % 7936) | 1);
-            b = isFloat ? near[rng() % 6] : static_cast<double>((257 + rng() % 7936) | 1);
+            // Double: odd, from 259 to 293 (significands 1.01 to 1.15).
+            a = isFloat ? near[rng() % 6] : static_cast<double>(259 + 2 * (rng() % 18));
+            b = isFloat ? near[rng() % 6] : static_cast<double>(259 + 2 * (rng() % 18));
             if (a == b) continue;
             K = std::ldexp(1.0,
                            isFloat ? 8 + static_cast<int>(rng() % 6) : 24 + static_cast<int>(rng() % 14));

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <type_traits>
 #include <vector>
 
@@ -57,11 +58,22 @@ struct Grid {
 /// Tile sizes: powers of two and integers such as 12 or 24.
 inline rc::Gen<int> genTileSize() { return rc::gen::element(16, 8, 32, 12, 24, 16, 4); }
 
+/// The origin that genOrigin gives while buildScene places a scene at a magnitude (the audit's
+/// far columns): set and cleared by buildScene on its own thread, empty otherwise.
+inline std::optional<double>& placedOriginMagnitude() {
+    static thread_local std::optional<double> magnitude;
+    return magnitude;
+}
+
 /// A map origin: zero mostly, a few tiles off, or far away (up to 2^23 in float, 2^40 in
 /// double) where the ulp of a coordinate is large. Always a multiple of the tile size, so every
-/// edge is an integer and representable.
+/// edge is an integer and representable. While buildScene places a scene at a magnitude, that
+/// magnitude rounded down to whole tiles: the same local scene, built where the magnitude's ulps
+/// are (a one-ulp nudge is one ulp there).
 template <class T>
 rc::Gen<double> genOrigin(int tile) {
+    if (const std::optional<double>& m = placedOriginMagnitude())
+        return rc::gen::just(std::floor(*m / tile) * tile);
     const double far = std::is_same<T, float>::value ? 8388608.0 : 1099511627776.0;
     return rc::gen::weightedOneOf<double>(
         {{6, rc::gen::just(0.0)},
