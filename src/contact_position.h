@@ -33,9 +33,6 @@
 
 namespace tilesweep::detail {
 
-/// Candidates smaller than this in magnitude are left to the lattice (see the top of this file).
-inline constexpr double kPositionFloor = 0x1p-500;
-
 /// (V - c) * den for a candidate c, as up to eight exact doubles whose sum it is exactly
 /// (remainderOf), with their recursive sum and the sum of their magnitudes, so that the tests
 /// against both midpoints of c (signAgainst) add one term each to what is summed once.

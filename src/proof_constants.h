@@ -175,4 +175,12 @@ inline constexpr int kDoubleFrameOriginTileBits = 46;
 /// (admitDoubleFrame derives it: the three-term sum's low terms fit 53 bits).
 inline constexpr int kDoubleFramePairSpanBits = 104;
 
+// ---- Contact positions on the fast path (contact_position.h)
+
+/// A contact position's candidate c below 2^-500 in magnitude (or zero) is left to the lattice:
+/// the midpoint tests form c*den and h*den (h half the gap from c to its neighbour) with their
+/// TwoProduct error terms, which must stay normal to be exact; a smaller c would carry them toward
+/// the subnormals (contact_position.h, "Range"). V = 0 exactly is settled there (+0).
+inline constexpr double kPositionFloor = 0x1p-500;
+
 }  // namespace tilesweep::detail
