@@ -64,16 +64,17 @@ template <class T>
 __attribute__((noinline))
 #endif
 ResolveResult<T>
-resolveMovingFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output,
-                   ContactPositions positions) noexcept {
+resolveMovingFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output, ContactPositions positions,
+                   const MapRange* prepared) noexcept {
     // The fast path, when the range test admits the frame: float frames on exact doubles,
     // double frames on exact pairs under a certified filter. The range test implies the frame
     // is valid, so isValid only runs for the frames it turns away.
+    const MapRange range = prepared != nullptr ? *prepared : mapRangeOf(input.map);
     bool admitted = false;
     if constexpr (std::is_same<T, float>::value) {
-        admitted = admitFloatFrame(input);
+        admitted = admitFloatFrame(input, range);
     } else {
-        admitted = admitDoubleFrame(input);
+        admitted = admitDoubleFrame(input, range);
     }
     if (admitted) {
         ResolveResult<T> result;
@@ -96,10 +97,10 @@ resolveMovingFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output,
 }
 
 template ResolveResult<float> resolveMovingFrame<float>(const ResolveInput<float>&,
-                                                        const ResolveOutput<float>&,
-                                                        ContactPositions) noexcept;
+                                                        const ResolveOutput<float>&, ContactPositions,
+                                                        const MapRange*) noexcept;
 template ResolveResult<double> resolveMovingFrame<double>(const ResolveInput<double>&,
-                                                          const ResolveOutput<double>&,
-                                                          ContactPositions) noexcept;
+                                                          const ResolveOutput<double>&, ContactPositions,
+                                                          const MapRange*) noexcept;
 
 }  // namespace tilesweep::detail

@@ -6,6 +6,7 @@
 // on a different arithmetic. Defined in frame_solve.cpp, instantiated there for float and
 // double, so that the fast path inlines into its caller there.
 
+#include "tilesweep/detail/map_range.h"
 #include "tilesweep/resolve.h"
 
 #include <cstdint>
@@ -24,28 +25,29 @@ inline void recordPath(const ResolveOutput<T>& output, DecisionPath path) noexce
 enum class ContactPositions : std::uint8_t { Placed, Skipped };
 
 /// resolveMove, with the choice above (resolve.cpp): the zero moves resolveZeroMove settles, then
-/// resolveMovingFrame.
+/// resolveMovingFrame. `prepared` is the map's range test (range_admission.h) when the map was
+/// prepared (PreparedMap), or null: it is then computed for the frame.
 template <class T>
 [[nodiscard]] ResolveResult<T> resolveFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output,
-                                            ContactPositions positions) noexcept;
+                                            ContactPositions positions, const MapRange* prepared) noexcept;
 
 /// resolveMove for every frame but the zero moves resolveZeroMove settles (resolve.cpp).
 template <class T>
 [[nodiscard]] ResolveResult<T> resolveMovingFrame(const ResolveInput<T>& input,
-                                                  const ResolveOutput<T>& output,
-                                                  ContactPositions positions) noexcept;
+                                                  const ResolveOutput<T>& output, ContactPositions positions,
+                                                  const MapRange* prepared) noexcept;
 
 extern template ResolveResult<float> resolveFrame<float>(const ResolveInput<float>&,
-                                                         const ResolveOutput<float>&,
-                                                         ContactPositions) noexcept;
+                                                         const ResolveOutput<float>&, ContactPositions,
+                                                         const MapRange*) noexcept;
 extern template ResolveResult<double> resolveFrame<double>(const ResolveInput<double>&,
-                                                           const ResolveOutput<double>&,
-                                                           ContactPositions) noexcept;
+                                                           const ResolveOutput<double>&, ContactPositions,
+                                                           const MapRange*) noexcept;
 extern template ResolveResult<float> resolveMovingFrame<float>(const ResolveInput<float>&,
-                                                               const ResolveOutput<float>&,
-                                                               ContactPositions) noexcept;
+                                                               const ResolveOutput<float>&, ContactPositions,
+                                                               const MapRange*) noexcept;
 extern template ResolveResult<double> resolveMovingFrame<double>(const ResolveInput<double>&,
                                                                  const ResolveOutput<double>&,
-                                                                 ContactPositions) noexcept;
+                                                                 ContactPositions, const MapRange*) noexcept;
 
 }  // namespace tilesweep::detail

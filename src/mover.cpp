@@ -3,6 +3,7 @@
 
 #include "frame_solve.h"
 #include "free_move.h"
+#include "range_admission.h"
 #include "validity.h"
 
 #include <cmath>
@@ -17,12 +18,27 @@ using detail::isPositive;
 namespace {
 
 template <class T>
-void prepare(const TileMapView<T>& map, MapError& error, Vec2<double>& inverse,
+void prepare(const TileMapView<T>& map, MapError& error, Vec2<double>& inverse, detail::MapRange& range,
              TileMapView<T>& view) noexcept {
     error = validateTileMap(map);
     view = map;
-    if (error == MapError::None)
+    if (error == MapError::None) {
         inverse = {1.0 / static_cast<double>(map.tileSize.x), 1.0 / static_cast<double>(map.tileSize.y)};
+        range = detail::mapRangeOf(map);
+    }
+}
+
+template <class T>
+ResolveResult<T> resolveOnPrepared(const PreparedMap<T>& map, const Box<T>& box, Vec2<T> displacement,
+                                   const ResolveOutput<T>& output) noexcept {
+    if (!map.isValid()) {
+        ResolveResult<T> invalid;
+        invalid.status = ResolveStatus::InvalidInput;
+        invalid.position = isFinite(box.pos) ? box.pos : Vec2<T>{0, 0};
+        return invalid;
+    }
+    return detail::resolveFrame(ResolveInput<T>{map.view(), box, displacement}, output,
+                                detail::ContactPositions::Placed, &map.mapRange());
 }
 
 /// floor(fl(size / tile)) + 2 on one axis, in int64, saturated far above INT32_MAX.
@@ -76,7 +92,7 @@ MoveResult<T> moveAndSlideOf(const PreparedMap<T>& map, const MoveInput<T>& inpu
     const bool wanted = direct || (contacts != nullptr && capacity > 0);
     const ResolveResult<T> s = detail::resolveFrame(
         ResolveInput<T>{map.view(), input.box, input.displacement}, ResolveOutput<T>{buffer, bufferCapacity},
-        wanted ? detail::ContactPositions::Placed : detail::ContactPositions::Skipped);
+        wanted ? detail::ContactPositions::Placed : detail::ContactPositions::Skipped, &map.mapRange());
     if (s.status == ResolveStatus::InvalidInput) return refuse(input, MoveStatus::InvalidInput);
     r.position = s.position;
     r.status = s.status == ResolveStatus::Blocked ? MoveStatus::Blocked : MoveStatus::Moved;
@@ -110,16 +126,24 @@ MoveResult<T> moveAndSlideOf(const PreparedMap<T>& map, const MoveInput<T>& inpu
 
 PreparedMap<float> prepareMap(const TileMapView<float>& map) noexcept {
     PreparedMap<float> p;
-    prepare(map, p.error_, p.inverseTileSize_, p.view_);
+    prepare(map, p.error_, p.inverseTileSize_, p.range_, p.view_);
     return p;
 }
 
 PreparedMap<double> prepareMap(const TileMapView<double>& map) noexcept {
     PreparedMap<double> p;
-    prepare(map, p.error_, p.inverseTileSize_, p.view_);
+    prepare(map, p.error_, p.inverseTileSize_, p.range_, p.view_);
     return p;
 }
 
+ResolveResult<float> resolveMove(const PreparedMap<float>& map, const Box<float>& box,
+                                 Vec2<float> displacement, const ResolveOutput<float>& output) noexcept {
+    return resolveOnPrepared(map, box, displacement, output);
+}
+ResolveResult<double> resolveMove(const PreparedMap<double>& map, const Box<double>& box,
+                                  Vec2<double> displacement, const ResolveOutput<double>& output) noexcept {
+    return resolveOnPrepared(map, box, displacement, output);
+}
 std::int32_t maxContacts(Vec2<float> boxSize, Vec2<float> tileSize) noexcept {
     return maxContactsOf(boxSize, tileSize);
 }

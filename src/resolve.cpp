@@ -15,7 +15,7 @@ namespace detail {
 
 template <class T>
 ResolveResult<T> resolveFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output,
-                              ContactPositions positions) noexcept {
+                              ContactPositions positions, const MapRange* prepared) noexcept {
     // A zero move: the start overlaps alone, from the cells under the box (zero_move.h).
     if (input.displacement.x == 0 && input.displacement.y == 0) {
         ResolveResult<T> result;
@@ -24,19 +24,19 @@ ResolveResult<T> resolveFrame(const ResolveInput<T>& input, const ResolveOutput<
             return result;
         }
     }
-    return resolveMovingFrame(input, output, positions);
+    return resolveMovingFrame(input, output, positions, prepared);
 }
 
 template ResolveResult<float> resolveFrame<float>(const ResolveInput<float>&, const ResolveOutput<float>&,
-                                                  ContactPositions) noexcept;
+                                                  ContactPositions, const MapRange*) noexcept;
 template ResolveResult<double> resolveFrame<double>(const ResolveInput<double>&, const ResolveOutput<double>&,
-                                                    ContactPositions) noexcept;
+                                                    ContactPositions, const MapRange*) noexcept;
 
 }  // namespace detail
 
 template <class T>
 ResolveResult<T> resolveMove(const ResolveInput<T>& input, const ResolveOutput<T>& output) noexcept {
-    return detail::resolveFrame(input, output, detail::ContactPositions::Placed);
+    return detail::resolveFrame(input, output, detail::ContactPositions::Placed, nullptr);
 }
 
 template ResolveResult<float> resolveMove<float>(const ResolveInput<float>&,
