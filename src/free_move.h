@@ -38,8 +38,10 @@ public:
     T start(int) const noexcept { return x_; }
     int compareWithStart(const Sum&, int) const noexcept { return (d_ > 0) - (d_ < 0); }
     T roundDirected(const Sum& e, bool up) const noexcept {
-        if (up) return e.error > 0 ? std::nextafter(e.s, std::numeric_limits<T>::infinity()) : e.s;
-        return e.error < 0 ? std::nextafter(e.s, -std::numeric_limits<T>::infinity()) : e.s;
+        // By the bits, not std::nextafter (a libm call): the same neighbour, infinity past the
+        // largest finite value included.
+        if (up) return e.error > 0 ? stepScalar(e.s, true) : e.s;
+        return e.error < 0 ? stepScalar(e.s, false) : e.s;
     }
     T roundNearest(const Sum& e) const noexcept { return e.s; }
     bool isExactly(const Sum& e, T v) const noexcept { return e.error == 0 && e.s == v; }
@@ -77,32 +79,28 @@ template <class T>
     return true;
 }
 
-/// True when a row-major block of cells holds no solid byte (an OR over each row: vectorised).
+/// True when a row-major block of cells holds no solid byte. Rows are read from the side the box
+/// moves toward on y (`down`: from the last row up), where a mover's floor or ceiling lies, and
+/// each row stops at its first solid byte: a move that is not free usually fails on the first row
+/// read. (Rows are a few cells wide here: a plain loop, not a vectorised OR with its set-up.)
 [[nodiscard]] inline bool blockIsEmpty(const std::uint8_t* solid, std::int32_t columns, const CellRange& x,
-                                       const CellRange& y) noexcept {
-    const std::int64_t width = x.last - x.first + 1;
-    for (std::int64_t j = y.first; j <= y.last; ++j) {
-        const std::uint8_t* row = solid + j * columns + x.first;
-        unsigned any = 0;
-        for (std::int64_t i = 0; i < width; ++i) any |= row[i];
-        if (any != 0) return false;
+                                       const CellRange& y, bool down) noexcept {
+    const std::int64_t rows = y.last - y.first + 1;
+    for (std::int64_t n = 0; n < rows; ++n) {
+        const std::int64_t j = down ? y.last - n : y.first + n;
+        const std::uint8_t* row = solid + j * columns;
+        for (std::int64_t i = x.first; i <= x.last; ++i)
+            if (row[i] != 0) return false;
     }
     return true;
 }
 
-/// If the move of `box` by `d` through `map` meets no solid cell and its end is settled here,
-/// stores the end in `position` and returns true; otherwise false (resolve it fully).
-/// The inputs must be finite with sizes > 0 and the map valid (the caller checks).
+/// Whether the cells that the move of `box` by `d` sweeps hold no solid byte (on each axis, from
+/// the box's low edge at the start or the end to its high edge at the start or the end, widened
+/// by one cell); false too when the estimate is not settled here. The map must have cells.
 template <class T>
-[[nodiscard]] inline bool tryFreeMove(const TileMapView<T>& map, Vec2<double> inverseTile, const Box<T>& box,
-                                      Vec2<T> d, Vec2<T>& position) noexcept {
-    Vec2<T> end{};
-    if (!roundFreeCoordinate(box.pos.x, d.x, end.x) || !roundFreeCoordinate(box.pos.y, d.y, end.y))
-        return false;
-    if (map.columns == 0 || map.rows == 0) {
-        position = end;
-        return true;
-    }
+[[nodiscard]] inline bool sweptCellsAreEmpty(const TileMapView<T>& map, Vec2<double> inverseTile,
+                                             const Box<T>& box, Vec2<T> d) noexcept {
     const double x = static_cast<double>(box.pos.x);
     const double y = static_cast<double>(box.pos.y);
     const double dx = static_cast<double>(d.x);
@@ -120,7 +118,19 @@ template <class T>
         !cellRangeOf(dy < 0 ? y + dy : y, dy > 0 ? y + dy + h : y + h, oy,
                      static_cast<double>(map.tileSize.y), inverseTile.y, magY, map.rows, cy))
         return false;
-    if (cx.first <= cx.last && cy.first <= cy.last && !blockIsEmpty(map.solid, map.columns, cx, cy))
+    return cx.first > cx.last || cy.first > cy.last || blockIsEmpty(map.solid, map.columns, cx, cy, dy > 0);
+}
+
+/// If the move of `box` by `d` through `map` meets no solid cell and its end is settled here,
+/// stores the end in `position` and returns true; otherwise false (resolve it fully).
+/// The inputs must be finite with sizes > 0 and the map valid (the caller checks).
+template <class T>
+[[nodiscard]] inline bool tryFreeMove(const TileMapView<T>& map, Vec2<double> inverseTile, const Box<T>& box,
+                                      Vec2<T> d, Vec2<T>& position) noexcept {
+    // The cells first: a move that is not free mostly fails there, before any rounding.
+    if (map.columns != 0 && map.rows != 0 && !sweptCellsAreEmpty(map, inverseTile, box, d)) return false;
+    Vec2<T> end{};
+    if (!roundFreeCoordinate(box.pos.x, d.x, end.x) || !roundFreeCoordinate(box.pos.y, d.y, end.y))
         return false;
     position = end;
     return true;

@@ -83,8 +83,8 @@ MoveResult<T> moveAndSlideOf(const PreparedMap<T>& map, const MoveInput<T>& inpu
     // A buffer of maxContacts takes the contacts directly; otherwise they go to the stack, so that
     // the resolver keeps its short-move path (its capacity bounds the cells it lists), and are
     // copied out when they fit. The flags never depend on either: they come from the steps.
-    const std::int32_t bound = maxContactsOf(input.box.size, map.view().tileSize);
-    const bool direct = contacts != nullptr && capacity >= bound;
+    // (The bound takes two divisions and two floors: only a caller with a buffer pays for them.)
+    const bool direct = contacts != nullptr && capacity >= maxContactsOf(input.box.size, map.view().tileSize);
     Contact<T> local[kInlineContacts];
     Contact<T>* buffer = direct ? contacts : local;
     const std::int32_t bufferCapacity = direct ? capacity : kInlineContacts;
