@@ -234,25 +234,33 @@ template <class T>
 /// out as exact pairs (farEdgeMinus). Branch-free over the six box inputs.
 [[nodiscard, gnu::always_inline]] inline bool admitDoubleFrame(const ResolveInput<double>& in,
                                                                const MapRange& map) noexcept {
-    const std::uint64_t position[2] = {magnitudeBits(in.box.pos.x), magnitudeBits(in.box.pos.y)};
-    const std::uint64_t size[2] = {magnitudeBits(in.box.size.x), magnitudeBits(in.box.size.y)};
-    const std::uint64_t motion[2] = {magnitudeBits(in.displacement.x), magnitudeBits(in.displacement.y)};
-    bool admitted = map.admitted & (in.box.size.x > 0) & (in.box.size.y > 0);
-    for (int a = 0; a < 2; ++a) {
-        // The far edge's distances to tile edges (FastAxis::farEdgeMinus). With x, w the box's
-        // position and size, h = fl(x + w) and h + l = x + w: |h| <= |x| + |w| < 2^boxTop; for an
-        // edge e (|e| < 2^top), fl(h - e) = a with h - e = a + b, |a| < 2^(m + 1), m = max(top,
-        // boxTop), so |b| <= 2^(m - 52) and |l| <= 2^(boxTop - 53): |b + l| < 2^(m - 51). All of
-        // e, x, w, h, a, b, l are multiples of 2^lowest (the least set bit of x, w, origin and
-        // tile), so b + l is a double, exactly, when m - 51 <= lowest + 53. (The larger
-        // magnitude has the larger field; a zero position reads field 0, below the size's.)
-        const int boxTop = static_cast<int>(std::max(position[a], size[a]) >> 52) - 1023 + 2;
-        const int lowest = std::min(std::min(lowestBitOf(position[a]), lowestBitOf(size[a])), map.lowest[a]);
-        admitted &= inDoubleFrameRange(position[a]) & inDoubleFrameRange(size[a]) &
-                    inDoubleFrameRange(motion[a]) &
-                    (std::max(map.top[a], boxTop) <= lowest + kDoubleFramePairSpanBits);
-    }
-    return admitted;
+    const std::uint64_t x = magnitudeBits(in.box.pos.x);
+    const std::uint64_t y = magnitudeBits(in.box.pos.y);
+    const std::uint64_t w = magnitudeBits(in.box.size.x);
+    const std::uint64_t h = magnitudeBits(in.box.size.y);
+    const std::uint64_t dx = magnitudeBits(in.displacement.x);
+    const std::uint64_t dy = magnitudeBits(in.displacement.y);
+    // Every nonzero input in [2^-250, 2^251): the largest magnitude's field and the least nonzero
+    // one's (a zero's bits minus one wrap to the largest value, so zeros never count; a NaN or an
+    // infinity has the largest field).
+    const std::uint64_t largest = std::max(std::max(std::max(x, y), std::max(w, h)), std::max(dx, dy));
+    const std::uint64_t least =
+        std::min(std::min(std::min(x - 1, y - 1), std::min(w - 1, h - 1)), std::min(dx - 1, dy - 1)) + 1;
+    const bool inRange = inDoubleFrameRange(largest) && inDoubleFrameRange(least);
+    // The far edge's distances to tile edges (FastAxis::farEdgeMinus). With x, w the box's
+    // position and size, h = fl(x + w) and h + l = x + w: |h| <= |x| + |w| < 2^boxTop; for an
+    // edge e (|e| < 2^top), fl(h - e) = a with h - e = a + b, |a| < 2^(m + 1), m = max(top,
+    // boxTop), so |b| <= 2^(m - 52) and |l| <= 2^(boxTop - 53): |b + l| < 2^(m - 51). All of e, x,
+    // w, h, a, b, l are multiples of 2^lowest (the least set bit of x, w, origin and tile), so
+    // b + l is a double, exactly, when m - 51 <= lowest + 53. (The larger magnitude has the
+    // larger field; a zero position reads field 0, below the size's.)
+    const int boxTopX = static_cast<int>(std::max(x, w) >> 52) - 1023 + 2;
+    const int boxTopY = static_cast<int>(std::max(y, h) >> 52) - 1023 + 2;
+    const int lowestX = std::min(std::min(lowestBitOf(x), lowestBitOf(w)), map.lowest[0]);
+    const int lowestY = std::min(std::min(lowestBitOf(y), lowestBitOf(h)), map.lowest[1]);
+    return map.admitted & inRange & (in.box.size.x > 0) & (in.box.size.y > 0) &
+           (std::max(map.top[0], boxTopX) <= lowestX + kDoubleFramePairSpanBits) &
+           (std::max(map.top[1], boxTopY) <= lowestY + kDoubleFramePairSpanBits);
 }
 
 /// admitDoubleFrame for a map not prepared: its range, then the frame's.
