@@ -69,7 +69,9 @@ resolveMovingFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output,
     // The fast path, when the range test admits the frame: float frames on exact doubles,
     // double frames on exact pairs under a certified filter. The range test implies the frame
     // is valid, so isValid only runs for the frames it turns away.
-    const MapRange range = prepared != nullptr ? *prepared : mapRangeOf(input.map);
+    MapRange computed;
+    if (prepared == nullptr) computed = mapRangeOf(input.map);
+    const MapRange& range = prepared != nullptr ? *prepared : computed;
     bool admitted = false;
     if constexpr (std::is_same<T, float>::value) {
         admitted = admitFloatFrame(input, range);

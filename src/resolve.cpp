@@ -2,7 +2,6 @@
 #include "tilesweep/resolve.h"
 
 #include "frame_solve.h"
-#include "zero_move.h"
 
 // Move-and-slide over the tile grid: the entry point. A frame goes to the first of these that
 // settles it: the zero move (zero_move.h), the fast path on exact doubles or pairs
@@ -10,29 +9,6 @@
 // (lattice_frame.h). The last two run the same frame loop (frame_loop.h).
 
 namespace tilesweep {
-
-namespace detail {
-
-template <class T>
-ResolveResult<T> resolveFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output,
-                              ContactPositions positions, const MapRange* prepared) noexcept {
-    // A zero move: the start overlaps alone, from the cells under the box (zero_move.h).
-    if (input.displacement.x == 0 && input.displacement.y == 0) {
-        ResolveResult<T> result;
-        if (resolveZeroMove(input, output, result)) {
-            recordPath(output, DecisionPath::Fast);
-            return result;
-        }
-    }
-    return resolveMovingFrame(input, output, positions, prepared);
-}
-
-template ResolveResult<float> resolveFrame<float>(const ResolveInput<float>&, const ResolveOutput<float>&,
-                                                  ContactPositions, const MapRange*) noexcept;
-template ResolveResult<double> resolveFrame<double>(const ResolveInput<double>&, const ResolveOutput<double>&,
-                                                    ContactPositions, const MapRange*) noexcept;
-
-}  // namespace detail
 
 template <class T>
 ResolveResult<T> resolveMove(const ResolveInput<T>& input, const ResolveOutput<T>& output) noexcept {
