@@ -20,9 +20,9 @@ namespace {
 /// refinement (DecisionPath::Filtered).
 template <class T>
 [[gnu::always_inline]] inline bool solveFast(const ResolveInput<T>& input, const ResolveOutput<T>& output,
-                                             ContactPositions positions, ResolveResult<T>& result,
-                                             bool& refined) noexcept {
-    FastFrame<T> frame(input);
+                                             ContactPositions positions, const MapRange& range,
+                                             ResolveResult<T>& result, bool& refined) noexcept {
+    FastFrame<T> frame(input, range.inverseTile);
     const bool solved =
         FrameLoop<FastFrame<T>>(frame).run(output, result, positions == ContactPositions::Placed);
     refined = frame.refined();
@@ -81,7 +81,7 @@ resolveMovingFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output,
     if (admitted) {
         ResolveResult<T> result;
         bool refined = false;
-        if (solveFast(input, output, positions, result, refined)) {
+        if (solveFast(input, output, positions, range, result, refined)) {
             recordPath(output, refined ? DecisionPath::Filtered : DecisionPath::Fast);
             return result;
         }

@@ -102,6 +102,7 @@ template <class T>
         // origin reads field 0, below any tile's.
         r.top[a] = std::max(static_cast<int>(o >> 23), static_cast<int>(t >> 23) + cellBits) + 1;
         r.lowest[a] = leastField(std::min(o - 1, t - 1));
+        r.inverseTile[a] = 1 / static_cast<double>(tile[a]);
     }
     return r;
 }
@@ -218,6 +219,7 @@ template <class T>
         admitted &= inDoubleFrameRange(o) & inDoubleFrameRange(t) &
                     (r.top[a] <= r.lowest[a] + kFastSpanBits) &
                     (fieldOf(o) - fieldOf(t) <= kDoubleFrameOriginTileBits);  // |origin| / tile < 2^47
+        r.inverseTile[a] = 1 / tile[a];
     }
     r.admitted = admitted;
     return r;
