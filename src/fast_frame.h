@@ -258,7 +258,7 @@ private:
                            double inverseTile) noexcept {
         const auto p = static_cast<double>(pos);
         const auto d = static_cast<double>(disp);
-        const int dir = d > 0 ? 1 : (d < 0 ? -1 : 0);
+        const int dir = (d > 0) - (d < 0);  // without a branch: the sign is the data's
         const auto t = static_cast<double>(tile);
         const auto w = static_cast<double>(size);
         const auto o = static_cast<double>(origin);
