@@ -46,8 +46,12 @@ print(f"Medians of {reps} interleaved repetitions, CPU ns per frame; {started}, 
 print()
 print("| scenario | T | tilesweep | ts (view) | lean twin | lean grid | libm twin | ts / faster lean |")
 print("|---|---|---:|---:|---:|---:|---:|---:|")
+order = ["Random30", "FloorAndWalls", "RestingOnFloor", "FreeFlight", "FarRandom30", "ZeroMove"]
+def row_key(key):
+    scenario, speed = key
+    return (order.index(scenario) if scenario in order else len(order), scenario, int(speed[1:] or 0))
 ratios = []
-for (scenario, speed), by_scalar in times.items():
+for (scenario, speed), by_scalar in sorted(times.items(), key=lambda item: row_key(item[0])):
     for scalar in ("float", "double"):
         r = by_scalar.get(scalar)
         if not r or "Tilesweep" not in r:
