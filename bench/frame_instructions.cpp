@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Instructions per frame, counted rather than timed: every side-by-side scenario of the
-// benchmarks (tilesweep/scenarios/frames.h: kSideBySideScenarios) through tilesweep, the lean
-// twin and the lean grid, in float and double. Run under callgrind, the program zeroes the
-// counters before each scenario's frames and dumps them after, named "<impl> <scenario><T>[/speed]
-// <frames>"; scripts/instructions.sh divides each dump's instruction count by its frames. An
-// instruction count does not depend on the machine's load, so it is the measure to compare on a
-// shared machine, and the one that says where a ratio of run times comes from.
+// benchmarks (tilesweep/scenarios/frames.h: kSideBySideScenarios) through tilesweep (on its
+// prepared map, and on the bare view), the lean twin and the lean grid, in float and double. Run under
+// callgrind, the program zeroes the counters before each scenario's frames and dumps them after, named
+// "<impl> <scenario><T>[/speed] <frames>"; scripts/instructions.sh divides each dump's instruction count by
+// its frames. An instruction count does not depend on the machine's load, so it is the measure to compare on
+// a shared machine, and the one that says where a ratio of run times comes from.
 //
 //   valgrind --tool=callgrind tilesweep_frame_instructions [FRAMES [FILTER]]
 //
@@ -36,6 +36,8 @@ const char* nameOf(Impl impl) {
     switch (impl) {
         case Impl::Tilesweep:
             return "Tilesweep";
+        case Impl::TilesweepView:
+            return "TilesweepView";
         case Impl::Twin:
             return "Twin";
         case Impl::Grid:
@@ -54,12 +56,12 @@ template <class T, Impl I>
     tilesweep::Contact<T> contacts[64];
     tilesweep::Cell overlaps[64];
     const tilesweep::ResolveOutput<T> out{contacts, 64, overlaps, 64};
-    const tilesweep::baselines::TileReciprocal<T> reciprocal = tilesweep::baselines::reciprocalOf(view);
+    const tilesweep::bench::PerMap<T> perMap(view);
     double sum = 0;
     std::size_t k = 0;
     for (std::size_t n = 0; n < frames; ++n) {
         const tilesweep::ResolveInput<T> in{view, s.boxes[k], s.moves[k]};
-        const tilesweep::ResolveResult<T> r = tilesweep::bench::resolveWith<T, I>(in, out, reciprocal);
+        const tilesweep::ResolveResult<T> r = tilesweep::bench::resolveWith<T, I>(in, out, perMap);
         sum += static_cast<double>(r.position.x) + static_cast<double>(r.position.y);
         k = (k + 1) & (tilesweep::bench::kFrameCount - 1);
     }
@@ -83,6 +85,7 @@ void countScenario(FrameKind kind, int speedArg, const char* scalar, std::size_t
     if (label.find(filter) == std::string::npos) return;
     const FrameScenario<T> s = tilesweep::bench::makeFrameScenario<T>(kind, speedArg / 2.0);
     count<T, Impl::Tilesweep>(s, label, frames);
+    count<T, Impl::TilesweepView>(s, label, frames);
     count<T, Impl::Twin>(s, label, frames);
     count<T, Impl::Grid>(s, label, frames);
 }

@@ -238,11 +238,12 @@ BENCHMARK(BM_Box2D_TimeOfImpact_Pairs);
 // ---------------------------------------------------------------------------------------------
 // Side by side (issue 10): tilesweep's exact resolver against the baselines a game developer
 // would pick instead, on the same pre-generated frames (frame_scenarios.h, 65,536 per
-// scenario): the lean inexact twin (baselines/: tilesweep/baselines/twin_resolve.h, plain T
-// arithmetic, the same path-order walk, no libm call and the tile reciprocal computed once per
-// map) and the lean swept-bounds grid resolver (grid_resolve.h there); and TwinLibm, the first
-// twin, whose cell indices are std::floor/std::ceil of a quotient per cell, kept so that the
-// cost of those calls stays visible. Named BM_<Impl>_<Scenario><T>[/speed], registered
+// scenario), each with what it keeps per map (side_by_side.h): tilesweep on its PreparedMap
+// (and TilesweepView, on the bare view, redoing the map's checks each frame); the lean inexact twin
+// (baselines/: tilesweep/baselines/twin_resolve.h, plain T arithmetic, the same path-order walk, no libm call
+// and the tile reciprocal computed once per map) and the lean swept-bounds grid resolver (grid_resolve.h
+// there); and TwinLibm, the first twin, whose cell indices are std::floor/std::ceil of a quotient per cell,
+// kept so that the cost of those calls stays visible. Named BM_<Impl>_<Scenario><T>[/speed], registered
 // scenario by scenario so that the implementations run next to each other.
 // Why each scenario: Random30 and FloorAndWalls are the common cases at four speeds; resting
 // on a floor is what a platformer does most frames (a hit at t = 0 and a slide, every frame);
@@ -271,12 +272,12 @@ void frameLoop(benchmark::State& state, tilesweep::bench::FrameKind kind, int sp
     tilesweep::Contact<T> contacts[64];
     tilesweep::Cell overlaps[64];
     const tilesweep::ResolveOutput<T> out{contacts, 64, overlaps, 64};
-    // The baselines' tile reciprocal, once per map as a game keeps it beside its map.
-    const tilesweep::baselines::TileReciprocal<T> reciprocal = tilesweep::baselines::reciprocalOf(view);
+    // What each resolver keeps per map, once, as a game keeps it beside its map.
+    const tilesweep::bench::PerMap<T> perMap(view);
     std::size_t k = 0;
     for (auto _ : state) {
         const tilesweep::ResolveInput<T> in{view, s.boxes[k], s.moves[k]};
-        benchmark::DoNotOptimize(tilesweep::bench::resolveWith<T, I>(in, out, reciprocal));
+        benchmark::DoNotOptimize(tilesweep::bench::resolveWith<T, I>(in, out, perMap));
         benchmark::ClobberMemory();
         k = (k + 1) & (tilesweep::bench::kFrameCount - 1);
     }
@@ -295,6 +296,7 @@ void registerFrameBenchmark(const char* impl, const char* scalar, tilesweep::ben
 template <class T>
 void registerFrameBenchmarks(const char* scalar, tilesweep::bench::FrameKind kind, int speedArg) {
     registerFrameBenchmark<T, Impl::Tilesweep>("Tilesweep", scalar, kind, speedArg);
+    registerFrameBenchmark<T, Impl::TilesweepView>("TilesweepView", scalar, kind, speedArg);
     registerFrameBenchmark<T, Impl::Twin>("Twin", scalar, kind, speedArg);
     registerFrameBenchmark<T, Impl::Grid>("Grid", scalar, kind, speedArg);
     registerFrameBenchmark<T, Impl::TwinLibm>("TwinLibm", scalar, kind, speedArg);

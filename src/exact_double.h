@@ -80,7 +80,7 @@ using ExactPair = ExactSum<double>;
 
 /// a + b exactly, as a normalized pair (Knuth's TwoSum: six operations, no branch, exact for
 /// any finite floats or doubles whose sum does not overflow; no FMA: -ffp-contract=off). The
-/// one TwoSum of the library: the fast path, the zero and free moves and map validation use it.
+/// one TwoSum of the library: the fast path, the zero move and map validation use it.
 template <class T>
 [[nodiscard]] inline ExactSum<T> twoSum(T a, T b) noexcept {
     const T s = a + b;

@@ -68,11 +68,13 @@ public:
         double slope;   ///< secondary motion per unit of primary distance
     };
 
-    explicit FastFrame(const ResolveInput<T>& in) noexcept : map_(in.map) {
+    /// The frame `in`, with its map's reciprocals of the tile size (MapRange::inverseTile,
+    /// computed once per map when it was prepared).
+    FastFrame(const ResolveInput<T>& in, const double (&inverseTile)[2]) noexcept : map_(in.map) {
         axis_[0] = makeAxis(in.box.pos.x, in.box.size.x, in.displacement.x, in.map.origin.x,
-                            in.map.tileSize.x, in.map.columns);
+                            in.map.tileSize.x, in.map.columns, inverseTile[0]);
         axis_[1] = makeAxis(in.box.pos.y, in.box.size.y, in.displacement.y, in.map.origin.y,
-                            in.map.tileSize.y, in.map.rows);
+                            in.map.tileSize.y, in.map.rows, inverseTile[1]);
         start_[0] = in.box.pos.x;
         start_[1] = in.box.pos.y;
     }
@@ -252,18 +254,19 @@ private:
         return ulps * kUnitRoundoff * magnitude * invTile;
     }
 
-    static Motion makeAxis(T pos, T size, T disp, T origin, T tile, std::int32_t cells) noexcept {
+    static Motion makeAxis(T pos, T size, T disp, T origin, T tile, std::int32_t cells,
+                           double inverseTile) noexcept {
         const auto p = static_cast<double>(pos);
         const auto d = static_cast<double>(disp);
-        const int dir = d > 0 ? 1 : (d < 0 ? -1 : 0);
+        const int dir = (d > 0) - (d < 0);  // without a branch: the sign is the data's
         const auto t = static_cast<double>(tile);
         const auto w = static_cast<double>(size);
         const auto o = static_cast<double>(origin);
         const Coord high = sumOf<Coord>(p, w);
         if constexpr (std::is_same<Coord, ExactPair>::value) {
-            return {p, high.hi, d, std::fabs(d), dir, o, t, cells, 1 / t, w, high.lo};
+            return {p, high.hi, d, std::fabs(d), dir, o, t, cells, inverseTile, w, high.lo};
         } else {
-            return {p, high, d, std::fabs(d), dir, o, t, cells, 1 / t, w, 0};
+            return {p, high, d, std::fabs(d), dir, o, t, cells, inverseTile, w, 0};
         }
     }
 

@@ -20,9 +20,9 @@ namespace {
 /// refinement (DecisionPath::Filtered).
 template <class T>
 [[gnu::always_inline]] inline bool solveFast(const ResolveInput<T>& input, const ResolveOutput<T>& output,
-                                             ContactPositions positions, ResolveResult<T>& result,
-                                             bool& refined) noexcept {
-    FastFrame<T> frame(input);
+                                             ContactPositions positions, const MapRange& range,
+                                             ResolveResult<T>& result, bool& refined) noexcept {
+    FastFrame<T> frame(input, range.inverseTile);
     const bool solved =
         FrameLoop<FastFrame<T>>(frame).run(output, result, positions == ContactPositions::Placed);
     refined = frame.refined();
@@ -64,21 +64,24 @@ template <class T>
 __attribute__((noinline))
 #endif
 ResolveResult<T>
-resolveMovingFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output,
-                   ContactPositions positions) noexcept {
+resolveMovingFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output, ContactPositions positions,
+                   const MapRange* prepared) noexcept {
     // The fast path, when the range test admits the frame: float frames on exact doubles,
     // double frames on exact pairs under a certified filter. The range test implies the frame
     // is valid, so isValid only runs for the frames it turns away.
+    MapRange computed;
+    if (prepared == nullptr) computed = mapRangeOf(input.map);
+    const MapRange& range = prepared != nullptr ? *prepared : computed;
     bool admitted = false;
     if constexpr (std::is_same<T, float>::value) {
-        admitted = admitFloatFrame(input);
+        admitted = admitFloatFrame(input, range);
     } else {
-        admitted = admitDoubleFrame(input);
+        admitted = admitDoubleFrame(input, range);
     }
     if (admitted) {
         ResolveResult<T> result;
         bool refined = false;
-        if (solveFast(input, output, positions, result, refined)) {
+        if (solveFast(input, output, positions, range, result, refined)) {
             recordPath(output, refined ? DecisionPath::Filtered : DecisionPath::Fast);
             return result;
         }
@@ -96,10 +99,10 @@ resolveMovingFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output,
 }
 
 template ResolveResult<float> resolveMovingFrame<float>(const ResolveInput<float>&,
-                                                        const ResolveOutput<float>&,
-                                                        ContactPositions) noexcept;
+                                                        const ResolveOutput<float>&, ContactPositions,
+                                                        const MapRange*) noexcept;
 template ResolveResult<double> resolveMovingFrame<double>(const ResolveInput<double>&,
-                                                          const ResolveOutput<double>&,
-                                                          ContactPositions) noexcept;
+                                                          const ResolveOutput<double>&, ContactPositions,
+                                                          const MapRange*) noexcept;
 
 }  // namespace tilesweep::detail

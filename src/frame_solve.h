@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-// A moving frame, solved: the fast path when the range test admits the frame, else (or when the
-// fast path answers "undecided") the exact lattice. Both are the one frame loop (frame_loop.h)
-// on a different arithmetic. Defined in frame_solve.cpp, instantiated there for float and
-// double, so that the fast path inlines into its caller there.
+// One frame, solved: a zero move by resolveZeroMove when it settles it (zero_move.h); otherwise
+// the fast path when the range test admits the frame, else (or when the fast path answers
+// "undecided") the exact lattice. Both are the one frame loop (frame_loop.h) on a different
+// arithmetic. resolveMovingFrame is defined in frame_solve.cpp, instantiated there for float
+// and double, so that the fast path inlines into it there.
 
+#include "zero_move.h"
+
+#include "tilesweep/detail/map_range.h"
 #include "tilesweep/resolve.h"
 
 #include <cstdint>
@@ -23,29 +27,36 @@ inline void recordPath(const ResolveOutput<T>& output, DecisionPath path) noexce
 /// contacts, so that a frame resolved into their inline buffer pays nothing for them.
 enum class ContactPositions : std::uint8_t { Placed, Skipped };
 
-/// resolveMove, with the choice above (resolve.cpp): the zero moves resolveZeroMove settles, then
-/// resolveMovingFrame.
-template <class T>
-[[nodiscard]] ResolveResult<T> resolveFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output,
-                                            ContactPositions positions) noexcept;
-
-/// resolveMove for every frame but the zero moves resolveZeroMove settles (resolve.cpp).
+/// resolveMove for every frame but the zero moves resolveZeroMove settles (frame_solve.cpp).
 template <class T>
 [[nodiscard]] ResolveResult<T> resolveMovingFrame(const ResolveInput<T>& input,
-                                                  const ResolveOutput<T>& output,
-                                                  ContactPositions positions) noexcept;
+                                                  const ResolveOutput<T>& output, ContactPositions positions,
+                                                  const MapRange* prepared) noexcept;
 
-extern template ResolveResult<float> resolveFrame<float>(const ResolveInput<float>&,
-                                                         const ResolveOutput<float>&,
-                                                         ContactPositions) noexcept;
-extern template ResolveResult<double> resolveFrame<double>(const ResolveInput<double>&,
-                                                           const ResolveOutput<double>&,
-                                                           ContactPositions) noexcept;
+/// resolveMove, with the choice above: the zero moves resolveZeroMove settles (zero_move.h), then
+/// resolveMovingFrame. `prepared` is the map's range test (range_admission.h) when the map was
+/// prepared (PreparedMap), or null: it is then computed for the frame. Inline, so that each entry
+/// point (resolve.cpp, mover.cpp) goes straight to the zero move or to resolveMovingFrame.
+template <class T>
+[[nodiscard]] inline ResolveResult<T> resolveFrame(const ResolveInput<T>& input,
+                                                   const ResolveOutput<T>& output, ContactPositions positions,
+                                                   const MapRange* prepared) noexcept {
+    // A zero move: the start overlaps alone, from the cells under the box (zero_move.h).
+    if (input.displacement.x == 0 && input.displacement.y == 0) {
+        ResolveResult<T> result;
+        if (resolveZeroMove(input, output, result)) {
+            recordPath(output, DecisionPath::Fast);
+            return result;
+        }
+    }
+    return resolveMovingFrame(input, output, positions, prepared);
+}
+
 extern template ResolveResult<float> resolveMovingFrame<float>(const ResolveInput<float>&,
-                                                               const ResolveOutput<float>&,
-                                                               ContactPositions) noexcept;
+                                                               const ResolveOutput<float>&, ContactPositions,
+                                                               const MapRange*) noexcept;
 extern template ResolveResult<double> resolveMovingFrame<double>(const ResolveInput<double>&,
                                                                  const ResolveOutput<double>&,
-                                                                 ContactPositions) noexcept;
+                                                                 ContactPositions, const MapRange*) noexcept;
 
 }  // namespace tilesweep::detail

@@ -2,7 +2,7 @@
 #include "tilesweep/mover.h"
 
 #include "frame_solve.h"
-#include "free_move.h"
+#include "range_admission.h"
 #include "validity.h"
 
 #include <cmath>
@@ -17,12 +17,27 @@ using detail::isPositive;
 namespace {
 
 template <class T>
-void prepare(const TileMapView<T>& map, MapError& error, Vec2<double>& inverse,
+void prepare(const TileMapView<T>& map, MapError& error, Vec2<double>& inverse, detail::MapRange& range,
              TileMapView<T>& view) noexcept {
     error = validateTileMap(map);
     view = map;
-    if (error == MapError::None)
+    if (error == MapError::None) {
         inverse = {1.0 / static_cast<double>(map.tileSize.x), 1.0 / static_cast<double>(map.tileSize.y)};
+        range = detail::mapRangeOf(map);
+    }
+}
+
+template <class T>
+ResolveResult<T> resolveOnPrepared(const PreparedMap<T>& map, const Box<T>& box, Vec2<T> displacement,
+                                   const ResolveOutput<T>& output) noexcept {
+    if (!map.isValid()) {
+        ResolveResult<T> invalid;
+        invalid.status = ResolveStatus::InvalidInput;
+        invalid.position = isFinite(box.pos) ? box.pos : Vec2<T>{0, 0};
+        return invalid;
+    }
+    return detail::resolveFrame(ResolveInput<T>{map.view(), box, displacement}, output,
+                                detail::ContactPositions::Placed, &map.mapRange());
 }
 
 /// floor(fl(size / tile)) + 2 on one axis, in int64, saturated far above INT32_MAX.
@@ -54,21 +69,17 @@ MoveResult<T> refuse(const MoveInput<T>& input, MoveStatus status) noexcept {
 template <class T>
 MoveResult<T> moveAndSlideOf(const PreparedMap<T>& map, const MoveInput<T>& input, Contact<T>* contacts,
                              std::int32_t capacity) noexcept {
-    if (!map.isValid() || !isFinite(input.box.pos) || !isPositive(input.box.size) ||
-        !isFinite(input.displacement))
-        return refuse(input, MoveStatus::InvalidInput);
+    // The map was checked once, by prepareMap; the box and the move are checked by the resolver,
+    // whose InvalidInput is refused below. Every move goes to the resolver (a separate exit for
+    // moves whose swept cells are empty, free_move.h until issue 19, cost a move that is not free
+    // more than it saved a free one: 240 instructions against 150 in the batch's mix).
+    if (!map.isValid()) return refuse(input, MoveStatus::InvalidInput);
     MoveResult<T> r;
-    if (detail::tryFreeMove(map.view(), map.inverseTileSize(), input.box, input.displacement, r.position)) {
-        r.status = MoveStatus::Moved;
-        r.clippedDisplacement = input.displacement;
-        r.contactsStored = contacts != nullptr && capacity >= 0;  // no contacts: all of them stored
-        return r;
-    }
     // A buffer of maxContacts takes the contacts directly; otherwise they go to the stack, so that
     // the resolver keeps its short-move path (its capacity bounds the cells it lists), and are
     // copied out when they fit. The flags never depend on either: they come from the steps.
-    const std::int32_t bound = maxContactsOf(input.box.size, map.view().tileSize);
-    const bool direct = contacts != nullptr && capacity >= bound;
+    // (The bound takes two divisions and two floors: only a caller with a buffer pays for them.)
+    const bool direct = contacts != nullptr && capacity >= maxContactsOf(input.box.size, map.view().tileSize);
     Contact<T> local[kInlineContacts];
     Contact<T>* buffer = direct ? contacts : local;
     const std::int32_t bufferCapacity = direct ? capacity : kInlineContacts;
@@ -76,7 +87,7 @@ MoveResult<T> moveAndSlideOf(const PreparedMap<T>& map, const MoveInput<T>& inpu
     const bool wanted = direct || (contacts != nullptr && capacity > 0);
     const ResolveResult<T> s = detail::resolveFrame(
         ResolveInput<T>{map.view(), input.box, input.displacement}, ResolveOutput<T>{buffer, bufferCapacity},
-        wanted ? detail::ContactPositions::Placed : detail::ContactPositions::Skipped);
+        wanted ? detail::ContactPositions::Placed : detail::ContactPositions::Skipped, &map.mapRange());
     if (s.status == ResolveStatus::InvalidInput) return refuse(input, MoveStatus::InvalidInput);
     r.position = s.position;
     r.status = s.status == ResolveStatus::Blocked ? MoveStatus::Blocked : MoveStatus::Moved;
@@ -110,16 +121,24 @@ MoveResult<T> moveAndSlideOf(const PreparedMap<T>& map, const MoveInput<T>& inpu
 
 PreparedMap<float> prepareMap(const TileMapView<float>& map) noexcept {
     PreparedMap<float> p;
-    prepare(map, p.error_, p.inverseTileSize_, p.view_);
+    prepare(map, p.error_, p.inverseTileSize_, p.range_, p.view_);
     return p;
 }
 
 PreparedMap<double> prepareMap(const TileMapView<double>& map) noexcept {
     PreparedMap<double> p;
-    prepare(map, p.error_, p.inverseTileSize_, p.view_);
+    prepare(map, p.error_, p.inverseTileSize_, p.range_, p.view_);
     return p;
 }
 
+ResolveResult<float> resolveMove(const PreparedMap<float>& map, const Box<float>& box,
+                                 Vec2<float> displacement, const ResolveOutput<float>& output) noexcept {
+    return resolveOnPrepared(map, box, displacement, output);
+}
+ResolveResult<double> resolveMove(const PreparedMap<double>& map, const Box<double>& box,
+                                  Vec2<double> displacement, const ResolveOutput<double>& output) noexcept {
+    return resolveOnPrepared(map, box, displacement, output);
+}
 std::int32_t maxContacts(Vec2<float> boxSize, Vec2<float> tileSize) noexcept {
     return maxContactsOf(boxSize, tileSize);
 }

@@ -23,6 +23,7 @@
 #include "validity.h"
 
 #include "tilesweep/box_sweep.h"
+#include "tilesweep/detail/map_range.h"
 #include "tilesweep/resolve.h"
 
 #include <algorithm>
@@ -30,32 +31,6 @@
 #include <cstring>
 
 namespace tilesweep::detail {
-
-/// The biased exponent fields of `count` floats: |v| in [2^(f-127), 2^(f-126)) for field f, -1000
-/// for a zero. `lowest` is the least field of the nonzero ones; `subnormal` whether one is.
-struct FloatFields {
-    int field[10];
-    int lowest = 255;
-    bool subnormal = false;
-};
-
-[[nodiscard]] inline FloatFields readFloatFields(const float* values, int count) noexcept {
-    FloatFields r;
-    int lowest = 255;  // locals, not r's members, so that the loop keeps them in registers
-    bool subnormal = false;
-    for (int k = 0; k < count; ++k) {
-        std::uint32_t bits = 0;
-        std::memcpy(&bits, &values[k], sizeof bits);
-        const int f = static_cast<int>((bits >> 23) & 0xff);
-        const bool zero = (bits & 0x7fffffff) == 0;
-        subnormal |= f == 0 && !zero;
-        r.field[k] = zero ? -1000 : f;
-        if (!zero) lowest = std::min(lowest, f);
-    }
-    r.lowest = lowest;
-    r.subnormal = subnormal;
-    return r;
-}
 
 /// The float range test itself, for values below 2^(top - 126 + headroom) (2^C with C = top -
 /// 126 bounds the coordinates, `headroom` bits more the differences the solver takes) that are
@@ -72,27 +47,97 @@ struct FloatFields {
     return span <= kFastSpanBits && top - 126 + headroom <= kFloatFrameTopExponent;
 }
 
+/// The part of the range test that depends on the map alone (origin, tile size, dimensions,
+/// cells) is a MapRange (tilesweep/detail/map_range.h), so that a prepared map computes it once
+/// (mover.h, PreparedMap) and resolveMove once a frame. On each axis: `top`, an exponent bounding
+/// every tile edge origin + k*tile the solver forms, and `lowest`, an exponent every map input on
+/// the axis is a multiple of (float: biased fields, as the float test below reads them; double:
+/// unbiased exponents). `admitted` is false for a map the fast path cannot take at all (invalid
+/// shape, or outside the ranges below); its frames go to the lattice, which checks validity.
+
+/// The bits of a float.
+[[nodiscard, gnu::always_inline]] inline std::uint32_t bitsOf(float v) noexcept {
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    return bits;
+}
+
+/// The magnitude bits of a float (its sign cleared): as unsigned integers they order like |v|,
+/// and a magnitude's bits >> 23 are its biased exponent field (0 for zero and subnormals, 255 for
+/// infinities and NaNs).
+[[nodiscard, gnu::always_inline]] inline std::uint32_t magnitudeBits(float v) noexcept {
+    return bitsOf(v) & 0x7fffffffu;
+}
+
+/// The least field among nonzero magnitudes, given the least of their bits minus one (a zero's
+/// bits minus one wrap to the largest value, so zeros never count): 255 when all were zero.
+[[nodiscard, gnu::always_inline]] inline int leastField(std::uint32_t leastMinusOne) noexcept {
+    const std::uint32_t least = leastMinusOne + 1;
+    return least == 0 ? 255 : static_cast<int>(least >> 23);
+}
+
+/// The map's half of hasValidShape (validity.h): tile sizes > 0, dimensions sane, cells present.
+template <class T>
+[[nodiscard, gnu::always_inline]] inline bool mapHasValidShape(const TileMapView<T>& map) noexcept {
+    const std::int64_t cells = static_cast<std::int64_t>(map.columns) * map.rows;
+    return map.tileSize.x > 0 && map.tileSize.y > 0 && map.columns >= 0 && map.rows >= 0 &&
+           cells <= kMaxCells && (cells == 0 || map.solid != nullptr);
+}
+
+/// The float map's range (see the top of this file): top[a] is edgeTop on the axis, a biased
+/// field with |origin + k*tile| < 2^(top - 126) for |k| <= cells + 2; lowest[a] the least field
+/// of the axis's nonzero map inputs (255 when none is nonzero; 0 when one is subnormal, which
+/// the frame test turns away). NaNs and infinities read field 255 and fail the frame test's top.
+[[nodiscard]] inline MapRange floatMapRange(const TileMapView<float>& map) noexcept {
+    MapRange r;
+    r.admitted = mapHasValidShape(map) && map.columns < (1 << 24) && map.rows < (1 << 24);
+    const float origin[2] = {map.origin.x, map.origin.y};
+    const float tile[2] = {map.tileSize.x, map.tileSize.y};
+    const std::int32_t cells[2] = {map.columns, map.rows};
+    for (int a = 0; a < 2; ++a) {
+        const std::uint32_t o = magnitudeBits(origin[a]);
+        const std::uint32_t t = magnitudeBits(tile[a]);
+        const int cellBits = 32 - countLeadingZeros32(static_cast<std::uint32_t>(cells[a]) + 2);
+        // |origin + k*tile| < 2^(fo - 126) + 2^(ft - 126 + cellBits) <= 2^(top - 126). A zero
+        // origin reads field 0, below any tile's.
+        r.top[a] = std::max(static_cast<int>(o >> 23), static_cast<int>(t >> 23) + cellBits) + 1;
+        r.lowest[a] = leastField(std::min(o - 1, t - 1));
+        r.inverseTile[a] = 1 / static_cast<double>(tile[a]);
+    }
+    return r;
+}
+
 /// Whether the fast path holds every value of this float frame exactly (see the top of this
-/// file): all nonzero inputs normal, the frame valid, C + 1 - G <= 53, and no coordinate near
-/// the top of float's range.
-[[nodiscard]] inline bool admitFloatFrame(const ResolveInput<float>& in) noexcept {
-    const float values[10] = {in.box.pos.x,      in.box.pos.y,      in.box.size.x,   in.box.size.y,
-                              in.displacement.x, in.displacement.y, in.map.origin.x, in.map.origin.y,
-                              in.map.tileSize.x, in.map.tileSize.y};
-    const FloatFields f = readFloatFields(values, 10);
-    if (f.subnormal || !hasValidShape(in)) return false;
-    if (in.map.columns >= (1 << 24) || in.map.rows >= (1 << 24)) return false;
-    int boxTop = -1000;  // |box input| < 2^(boxTop - 126)
-    for (int k = 0; k < 6; ++k) boxTop = std::max(boxTop, f.field[k]);
-    const int cellBits[2] = {32 - countLeadingZeros32(static_cast<std::uint32_t>(in.map.columns) + 2),
-                             32 - countLeadingZeros32(static_cast<std::uint32_t>(in.map.rows) + 2)};
-    // |origin + k*tile| < 2^(fo - 126) + 2^(ft - 126 + cellBits) <= 2^(edgeTop - 126)
-    int edgeTop = -1000;
-    for (int a = 0; a < 2; ++a)
-        edgeTop = std::max(edgeTop, std::max(f.field[6 + a], f.field[8 + a] + cellBits[a]) + 1);
+/// file), given its map's range: all nonzero inputs normal, the frame valid, C + 1 - G <= 53,
+/// and no coordinate near the top of float's range. The six box inputs are read as integers in a
+/// tree of scalar minimums and maximums (a loop over an array invites a vectorization that needs
+/// SSE4.1 for unsigned minimums and costs twice the instructions without it).
+[[nodiscard, gnu::always_inline]] inline bool admitFloatFrame(const ResolveInput<float>& in,
+                                                              const MapRange& map) noexcept {
+    const std::uint32_t x = magnitudeBits(in.box.pos.x);
+    const std::uint32_t y = magnitudeBits(in.box.pos.y);
+    const std::uint32_t w = bitsOf(in.box.size.x);  // with the sign: a negative size is refused
+    const std::uint32_t h = bitsOf(in.box.size.y);
+    const std::uint32_t dx = magnitudeBits(in.displacement.x);
+    const std::uint32_t dy = magnitudeBits(in.displacement.y);
+    // Box sizes > 0: as signed integers, the bits are positive (a NaN passes here, fails the top).
+    const bool positiveSizes = static_cast<std::int32_t>(w) > 0 && static_cast<std::int32_t>(h) > 0;
+    const std::uint32_t largest = std::max(std::max(std::max(x, y), std::max(w, h)), std::max(dx, dy));
+    const std::uint32_t leastMinusOne =
+        std::min(std::min(std::min(x - 1, y - 1), std::min(w - 1, h - 1)), std::min(dx - 1, dy - 1));
+    // The least field among the nonzero inputs; 0 when one of them is subnormal (turned away).
+    const int lowest = std::min(std::min(map.lowest[0], map.lowest[1]), leastField(leastMinusOne));
     // |x| + |w| + |dx| < 3 * 2^(boxTop - 126) < 2^(boxTop + 2 - 126), and the sum of that and the
     // edges' bound is below twice the larger: C = max(boxTop + 2, edgeTop) - 126, headroom 1.
-    return floatSpanFits(std::max(boxTop + 2, edgeTop), 1, f.lowest);
+    // (A negative size makes `largest` a field above 255, refused here too.)
+    const int boxTop = static_cast<int>(largest >> 23);
+    const int top = std::max(boxTop + 2, std::max(map.top[0], map.top[1]));
+    return map.admitted & positiveSizes & (lowest != 0) & floatSpanFits(top, 1, lowest);
+}
+
+/// admitFloatFrame for a map not prepared: its range, then the frame's.
+[[nodiscard]] inline bool admitFloatFrame(const ResolveInput<float>& in) noexcept {
+    return admitFloatFrame(in, floatMapRange(in.map));
 }
 
 /// The same for one box against one tile (sweepBox), with the box's edges (sums of three
@@ -120,60 +165,117 @@ struct FloatFields {
     return floatSpanFits(std::max(boxTop + 2, tileTop), 1, lowest);
 }
 
-/// Whether the double fast path holds every value of this double frame (see the top of this
-/// file), which must be valid (hasValidShape, validity.h): nonzero inputs in [2^-250, 2^251), so that no
-/// product, TwoProduct error term or filter bound comes near overflow or underflow; every tile edge origin +
-/// k*tile with 0 <= k <= cells + 2 a multiple of 2^g (g the lowest set bit of origin and tile) below 2^(g +
-/// 53), so that k*tile and the sum are exact doubles; |origin| < 2^47 tile, so that a cell estimate from a
-/// rounded quotient is off by less than one cell; and a span of at most 104 bits between the largest
-/// coordinate and the lowest set bit of the box and grid inputs, so that the far box edge's distances to tile
-/// edges come out as exact pairs (farEdgeMinus).
-[[nodiscard]] inline bool admitDoubleFrame(const ResolveInput<double>& in) noexcept {
-    const double values[10] = {in.box.pos.x,      in.box.pos.y,      in.box.size.x,   in.box.size.y,
-                               in.displacement.x, in.displacement.y, in.map.origin.x, in.map.origin.y,
-                               in.map.tileSize.x, in.map.tileSize.y};
-    int field[10];
-    int lsb[10];
-    for (int k = 0; k < 10; ++k) {
-        std::uint64_t bits = 0;
-        std::memcpy(&bits, &values[k], sizeof bits);
-        const int f = static_cast<int>((bits >> 52) & 0x7ff);  // |v| in [2^(f-1023), 2^(f-1022))
-        const std::uint64_t fraction = bits & ((std::uint64_t{1} << 52) - 1);
-        if (f == 0 && fraction == 0) {
-            field[k] = -100000;
-            lsb[k] = 100000;
-            continue;
-        }
+/// The magnitude bits of a double (its sign cleared): as unsigned integers they order like |v|,
+/// and bits >> 52 is the biased exponent field (0 for zero and subnormals, 2047 for infinities
+/// and NaNs).
+[[nodiscard, gnu::always_inline]] inline std::uint64_t magnitudeBits(double v) noexcept {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    return bits & ~(std::uint64_t{1} << 63);
+}
+
+/// Whether a double (its magnitude bits) is zero or within [2^-250, 2^251)
+/// (kDoubleFrameExponentLimit): one unsigned comparison of the field's distance from the bottom.
+[[nodiscard, gnu::always_inline]] inline bool inDoubleFrameRange(std::uint64_t magnitude) noexcept {
+    const auto field = static_cast<unsigned>(magnitude >> 52);
 #if defined(TILESWEEP_FAULT_RANGE_NO_LOWER_BOUND)
-        if (f > 1023 + kDoubleFrameExponentLimit)
-            return false;  // deliberate fault: the lower bound 2^-250 forgotten
+    return magnitude == 0 || field <= 1023 + kDoubleFrameExponentLimit;  // deliberate fault: 2^-250 forgotten
 #else
-        if (f < 1023 - kDoubleFrameExponentLimit || f > 1023 + kDoubleFrameExponentLimit) return false;
+    return magnitude == 0 || field - (1023 - kDoubleFrameExponentLimit) <= 2 * kDoubleFrameExponentLimit;
 #endif
-        field[k] = f - 1023;
-        lsb[k] = f - 1023 - 52 + countTrailingZeros64(fraction | (std::uint64_t{1} << 52));
-    }
-    if (!hasValidShape(in)) return false;
-    const std::int32_t cells[2] = {in.map.columns, in.map.rows};
+}
+
+/// The unbiased exponent of a double's lowest set bit (its magnitude bits), 100000 for a zero so
+/// that a zero bounds nothing.
+[[nodiscard, gnu::always_inline]] inline int lowestBitOf(std::uint64_t magnitude) noexcept {
+    const int field = static_cast<int>(magnitude >> 52);
+    const std::uint64_t significand = (magnitude & ((std::uint64_t{1} << 52) - 1)) | (std::uint64_t{1} << 52);
+    return magnitude == 0 ? 100000 : field - 1023 - 52 + countTrailingZeros64(significand);
+}
+
+/// The unbiased exponent field of a double (its magnitude bits): |v| in [2^f, 2^(f+1)); -100000
+/// for a zero, so that a zero bounds nothing.
+[[nodiscard, gnu::always_inline]] inline int fieldOf(std::uint64_t magnitude) noexcept {
+    return magnitude == 0 ? -100000 : static_cast<int>(magnitude >> 52) - 1023;
+}
+
+/// The double map's range (see admitDoubleFrame): per axis, top[a] with |origin + k*tile| <
+/// 2^top[a] for |k| <= cells + 2, and lowest[a] the least set bit of origin and tile; admitted
+/// when the map is valid, both are in range, every such tile edge is a multiple of 2^lowest[a]
+/// below 2^(lowest[a] + 53), and |origin| < 2^47 tile.
+[[nodiscard]] inline MapRange doubleMapRange(const TileMapView<double>& map) noexcept {
+    MapRange r;
+    bool admitted = mapHasValidShape(map);
+    const double origin[2] = {map.origin.x, map.origin.y};
+    const double tile[2] = {map.tileSize.x, map.tileSize.y};
+    const std::int32_t cells[2] = {map.columns, map.rows};
     for (int a = 0; a < 2; ++a) {
-        const int o = 6 + a;
-        const int t = 8 + a;
+        const std::uint64_t o = magnitudeBits(origin[a]);
+        const std::uint64_t t = magnitudeBits(tile[a]);
         const int cellBits = 64 - countLeadingZeros64(static_cast<std::uint64_t>(cells[a]) + 3);
         // |origin| + (cells + 2) * tile < 2^(max(eo + 1, et + 1 + cellBits) + 1).
-        const int top = std::max(field[o] + 1, field[t] + 1 + cellBits) + 1;
-        if (top > std::min(lsb[o], lsb[t]) + kFastSpanBits) return false;
-        if (field[o] - field[t] > kDoubleFrameOriginTileBits)
-            return false;  // |origin| / tile < 2^(eo + 1 - et) <= 2^47
-        // The far edge's distances to tile edges (FastAxis::farEdgeMinus). With x, w the box's
-        // position and size, h = fl(x + w) and h + l = x + w: |h| <= |x| + |w| < 2^boxTop; for an
-        // edge e (|e| < 2^top), fl(h - e) = a with h - e = a + b, |a| < 2^(m + 1), m = max(top,
-        // boxTop), so |b| <= 2^(m - 52) and |l| <= 2^(boxTop - 53): |b + l| < 2^(m - 51). All of
-        // e, x, w, h, a, b, l are multiples of 2^lowest (the least set bit of x, w, origin and
-        // tile), so b + l is a double, exactly, when m - 51 <= lowest + 53.
-        const int boxTop = std::max(field[a], field[2 + a]) + 2;
-        const int lowest = std::min(std::min(lsb[a], lsb[2 + a]), std::min(lsb[o], lsb[t]));
-        if (std::max(top, boxTop) > lowest + kDoubleFramePairSpanBits) return false;
+        r.top[a] = std::max(fieldOf(o) + 1, fieldOf(t) + 1 + cellBits) + 1;
+        r.lowest[a] = std::min(lowestBitOf(o), lowestBitOf(t));
+        admitted &= inDoubleFrameRange(o) & inDoubleFrameRange(t) &
+                    (r.top[a] <= r.lowest[a] + kFastSpanBits) &
+                    (fieldOf(o) - fieldOf(t) <= kDoubleFrameOriginTileBits);  // |origin| / tile < 2^47
+        r.inverseTile[a] = 1 / tile[a];
     }
-    return true;
+    r.admitted = admitted;
+    return r;
 }
+
+/// Whether the double fast path holds every value of this double frame (see the top of this
+/// file), given its map's range (doubleMapRange): the frame valid; nonzero inputs in [2^-250,
+/// 2^251), so that no product, TwoProduct error term or filter bound comes near overflow or
+/// underflow; every tile edge origin + k*tile with 0 <= k <= cells + 2 a multiple of 2^g (g the
+/// lowest set bit of origin and tile) below 2^(g + 53), so that k*tile and the sum are exact
+/// doubles; |origin| < 2^47 tile, so that a cell estimate from a rounded quotient is off by less
+/// than one cell; and a span of at most 104 bits between the largest coordinate and the lowest
+/// set bit of the box and grid inputs, so that the far box edge's distances to tile edges come
+/// out as exact pairs (farEdgeMinus). Branch-free over the six box inputs.
+[[nodiscard, gnu::always_inline]] inline bool admitDoubleFrame(const ResolveInput<double>& in,
+                                                               const MapRange& map) noexcept {
+    const std::uint64_t x = magnitudeBits(in.box.pos.x);
+    const std::uint64_t y = magnitudeBits(in.box.pos.y);
+    const std::uint64_t w = magnitudeBits(in.box.size.x);
+    const std::uint64_t h = magnitudeBits(in.box.size.y);
+    const std::uint64_t dx = magnitudeBits(in.displacement.x);
+    const std::uint64_t dy = magnitudeBits(in.displacement.y);
+    // Every nonzero input in [2^-250, 2^251): the largest magnitude's field and the least nonzero
+    // one's (a zero's bits minus one wrap to the largest value, so zeros never count; a NaN or an
+    // infinity has the largest field).
+    const std::uint64_t largest = std::max(std::max(std::max(x, y), std::max(w, h)), std::max(dx, dy));
+    const std::uint64_t least =
+        std::min(std::min(std::min(x - 1, y - 1), std::min(w - 1, h - 1)), std::min(dx - 1, dy - 1)) + 1;
+    const bool inRange = inDoubleFrameRange(largest) && inDoubleFrameRange(least);
+    // The far edge's distances to tile edges (FastAxis::farEdgeMinus). With x, w the box's
+    // position and size, h = fl(x + w) and h + l = x + w: |h| <= |x| + |w| < 2^boxTop; for an
+    // edge e (|e| < 2^top), fl(h - e) = a with h - e = a + b, |a| < 2^(m + 1), m = max(top,
+    // boxTop), so |b| <= 2^(m - 52) and |l| <= 2^(boxTop - 53): |b + l| < 2^(m - 51). All of e, x,
+    // w, h, a, b, l are multiples of 2^lowest (the least set bit of x, w, origin and tile), so
+    // b + l is a double, exactly, when m - 51 <= lowest + 53. (The larger magnitude has the
+    // larger field; a zero position reads field 0, below the size's.)
+    const int boxTopX = static_cast<int>(std::max(x, w) >> 52) - 1023 + 2;
+    const int boxTopY = static_cast<int>(std::max(y, h) >> 52) - 1023 + 2;
+    const int lowestX = std::min(std::min(lowestBitOf(x), lowestBitOf(w)), map.lowest[0]);
+    const int lowestY = std::min(std::min(lowestBitOf(y), lowestBitOf(h)), map.lowest[1]);
+    return map.admitted & inRange & (in.box.size.x > 0) & (in.box.size.y > 0) &
+           (std::max(map.top[0], boxTopX) <= lowestX + kDoubleFramePairSpanBits) &
+           (std::max(map.top[1], boxTopY) <= lowestY + kDoubleFramePairSpanBits);
+}
+
+/// admitDoubleFrame for a map not prepared: its range, then the frame's.
+[[nodiscard]] inline bool admitDoubleFrame(const ResolveInput<double>& in) noexcept {
+    return admitDoubleFrame(in, doubleMapRange(in.map));
+}
+
+/// The map's range in either type.
+[[nodiscard]] inline MapRange mapRangeOf(const TileMapView<float>& map) noexcept {
+    return floatMapRange(map);
+}
+[[nodiscard]] inline MapRange mapRangeOf(const TileMapView<double>& map) noexcept {
+    return doubleMapRange(map);
+}
+
 }  // namespace tilesweep::detail

@@ -2,7 +2,6 @@
 #include "tilesweep/resolve.h"
 
 #include "frame_solve.h"
-#include "zero_move.h"
 
 // Move-and-slide over the tile grid: the entry point. A frame goes to the first of these that
 // settles it: the zero move (zero_move.h), the fast path on exact doubles or pairs
@@ -11,32 +10,9 @@
 
 namespace tilesweep {
 
-namespace detail {
-
-template <class T>
-ResolveResult<T> resolveFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output,
-                              ContactPositions positions) noexcept {
-    // A zero move: the start overlaps alone, from the cells under the box (zero_move.h).
-    if (input.displacement.x == 0 && input.displacement.y == 0) {
-        ResolveResult<T> result;
-        if (resolveZeroMove(input, output, result)) {
-            recordPath(output, DecisionPath::Fast);
-            return result;
-        }
-    }
-    return resolveMovingFrame(input, output, positions);
-}
-
-template ResolveResult<float> resolveFrame<float>(const ResolveInput<float>&, const ResolveOutput<float>&,
-                                                  ContactPositions) noexcept;
-template ResolveResult<double> resolveFrame<double>(const ResolveInput<double>&, const ResolveOutput<double>&,
-                                                    ContactPositions) noexcept;
-
-}  // namespace detail
-
 template <class T>
 ResolveResult<T> resolveMove(const ResolveInput<T>& input, const ResolveOutput<T>& output) noexcept {
-    return detail::resolveFrame(input, output, detail::ContactPositions::Placed);
+    return detail::resolveFrame(input, output, detail::ContactPositions::Placed, nullptr);
 }
 
 template ResolveResult<float> resolveMove<float>(const ResolveInput<float>&,

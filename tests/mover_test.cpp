@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -164,6 +165,18 @@ TYPED_TEST(Mover, clipVelocityZeroesWhatPushesIntoTheFacesHit) {
     EXPECT_EQ(clipVelocity(Vec2<T>{6, 1}, free), (Vec2<T>{6, 1}));
 }
 
+TEST(Mover, resolveMoveOnAMapNotPreparedIsInvalidInput) {
+    const std::uint8_t cells[4] = {0, 0, 0, 1};
+    const TileMapView<float> view{{0, 0}, {16, 16}, 2, 2, cells};
+    const ResolveResult<float> unprepared =
+        resolveMove(PreparedMap<float>{}, Box<float>{{1, 2}, {4, 4}}, {3, 3}, {});
+    EXPECT_EQ(unprepared.status, ResolveStatus::InvalidInput);
+    EXPECT_EQ(unprepared.position, (Vec2<float>{1, 2}));
+    const ResolveResult<float> moved = resolveMove(prepareMap(view), Box<float>{{1, 2}, {4, 4}}, {3, 3}, {});
+    EXPECT_EQ(moved.status, ResolveStatus::Moved);
+    EXPECT_EQ(moved.position, (Vec2<float>{4, 5}));
+}
+
 TEST(Mover, maxContactsOfInvalidSizesIsZero) {
     EXPECT_EQ(maxContacts(Vec2<float>{0, 1}, Vec2<float>{16, 16}), 0);
     EXPECT_EQ(maxContacts(Vec2<double>{1, 1}, Vec2<double>{std::nan(""), 16}), 0);
@@ -183,6 +196,34 @@ void expectSameAsResolveMove(const scenarios::RandomScene<T>& scene, std::uint64
         resolveMove<T>({scene.view(), scene.box, scene.move}, {expected.data(), 4096, nullptr, 0});
     const std::int32_t bound = maxContacts(scene.box.size, scene.view().tileSize);
     const std::string where = "case " + std::to_string(caseIndex) + ": " + scene.describe();
+
+    // resolveMove through the prepared map: the same frame, bit for bit, start overlaps too.
+    {
+        std::vector<Cell> overlaps(4096);
+        const ResolveResult<T> v = resolveMove<T>({scene.view(), scene.box, scene.move},
+                                                  {expected.data(), 4096, overlaps.data(), 4096});
+        std::vector<Contact<T>> contacts(4096);
+        std::vector<Cell> preparedOverlaps(4096);
+        const ResolveResult<T> p =
+            resolveMove(map, scene.box, scene.move, {contacts.data(), 4096, preparedOverlaps.data(), 4096});
+        EXPECT_EQ(std::memcmp(&p.position, &v.position, sizeof p.position), 0) << where << " prepared";
+        EXPECT_EQ(p.status, v.status) << where << " prepared";
+        EXPECT_EQ(p.blockedX, v.blockedX) << where << " prepared";
+        EXPECT_EQ(p.blockedY, v.blockedY) << where << " prepared";
+        ASSERT_EQ(p.contactCount, v.contactCount) << where << " prepared";
+        ASSERT_EQ(p.startOverlapCount, v.startOverlapCount) << where << " prepared";
+        for (std::int32_t k = 0; k < std::min<std::int32_t>(p.contactCount, 4096); ++k) {
+            const auto& a = contacts[static_cast<std::size_t>(k)];
+            const auto& b = expected[static_cast<std::size_t>(k)];
+            EXPECT_TRUE(a.tile == b.tile && a.normal == b.normal &&
+                        std::memcmp(&a.time, &b.time, sizeof a.time) == 0 &&
+                        std::memcmp(&a.position, &b.position, sizeof a.position) == 0)
+                << where << " prepared contact " << k;
+        }
+        for (std::int32_t k = 0; k < std::min<std::int32_t>(p.startOverlapCount, 4096); ++k)
+            EXPECT_EQ(preparedOverlaps[static_cast<std::size_t>(k)], overlaps[static_cast<std::size_t>(k)])
+                << where << " prepared start overlap " << k;
+    }
     // The documented bound: a buffer of maxContacts never truncates.
     ASSERT_LE(s.contactCount, bound) << where;
 

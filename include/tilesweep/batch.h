@@ -12,8 +12,7 @@
 //
 // Every mover's result is bit for bit the one moveAndSlide gives it alone (tests/batch_test.cpp
 // compares them), whatever the number of threads: movers are independent and each is resolved
-// by one thread. Movers whose swept bounds meet no solid cell take moveAndSlide's cheap exit, a
-// byte scan over those cells, before any exact work. A batch allocates nothing: the pool's
+// by one thread. A batch allocates nothing: the pool's
 // threads are made when the pool is, and the caller owns the inputs and the results.
 //
 // A game with its own job system runs the batch on it instead: a TaskSystem hands the batch's

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "tilesweep/detail/map_range.h"
 #include "tilesweep/math.h"
 #include "tilesweep/resolve.h"
 #include "tilesweep/tile_map.h"
@@ -58,6 +59,9 @@ public:
     [[nodiscard]] bool isValid() const noexcept { return error_ == MapError::None; }
     /// 1 / tile size, rounded: only for estimating cell ranges (always widened before use).
     [[nodiscard]] Vec2<double> inverseTileSize() const noexcept { return inverseTileSize_; }
+    /// Internal: the map's half of the resolver's range test, computed once here instead of
+    /// every frame (src/range_admission.h reads it).
+    [[nodiscard]] const detail::MapRange& mapRange() const noexcept { return range_; }
 
 private:
     friend PreparedMap<float> prepareMap(const TileMapView<float>& map) noexcept;
@@ -66,12 +70,25 @@ private:
     TileMapView<T> view_{};
     MapError error_ = MapError::NotPrepared;
     Vec2<double> inverseTileSize_{0, 0};
+    detail::MapRange range_{};
 };
 
 /// Validates `map` once (validateTileMap: O(columns + rows)) and keeps it for every frame.
 [[nodiscard]] PreparedMap<float> prepareMap(const TileMapView<float>& map) noexcept;
 /// Validates `map` once (validateTileMap: O(columns + rows)) and keeps it for every frame.
 [[nodiscard]] PreparedMap<double> prepareMap(const TileMapView<double>& map) noexcept;
+
+/// resolveMove (resolve.h) through a prepared map: the same result, bit for bit, as
+/// resolveMove({map.view(), box, displacement}, output), with the map's share of each frame's
+/// checks done once by prepareMap. This is the call for a game that resolves many frames through
+/// one map. A map that failed prepareMap gives ResolveStatus::InvalidInput.
+[[nodiscard]] ResolveResult<float> resolveMove(const PreparedMap<float>& map, const Box<float>& box,
+                                               Vec2<float> displacement,
+                                               const ResolveOutput<float>& output) noexcept;
+/// The same in double.
+[[nodiscard]] ResolveResult<double> resolveMove(const PreparedMap<double>& map, const Box<double>& box,
+                                                Vec2<double> displacement,
+                                                const ResolveOutput<double>& output) noexcept;
 
 /// One mover's frame: its box at the start and the motion it wants over the frame.
 template <class T>

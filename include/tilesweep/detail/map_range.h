@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+// Internal: what the fast path's range test needs from a map alone, kept by PreparedMap (mover.h)
+// so that it is computed once per map instead of once per frame. Not part of the API: its fields
+// and their meaning belong to src/range_admission.h, which computes and reads them.
+
+namespace tilesweep::detail {
+
+/// The map's half of the range test (src/range_admission.h, floatMapRange and doubleMapRange):
+/// whether the fast path can take frames through this map at all, and per axis an exponent above
+/// every tile edge the solver forms (`top`) and one every map input is a multiple of (`lowest`);
+/// and the tile size's reciprocal per axis, fl(1 / tile) in double, which the fast path's cell
+/// estimates multiply by (src/fast_frame.h; every estimate carries a certified margin).
+struct MapRange {
+    bool admitted = false;
+    int top[2] = {0, 0};
+    int lowest[2] = {0, 0};
+    double inverseTile[2] = {0, 0};
+};
+
+}  // namespace tilesweep::detail
