@@ -36,13 +36,28 @@ struct CellRange {
 }
 
 /// The cells of [0, cells) that an interval may touch whose ends lie in cell coordinates within
-/// `margin` of `low` and `high`: floor(low - margin) to floor(high + margin), clamped to the map
-/// (empty when the interval lies off it).
+/// `margin` of `low` and `high`: from floor(low - margin) to floor(high + margin), or one cell
+/// more at the high end (see below), clamped to the map (empty when the interval lies off it).
+///
+/// Branch-free: each end is clamped as a double, then truncated. The low end, clamped to
+/// [0, cells], truncates to its floor (truncation is the floor of a nonnegative value), which
+/// is already the clamp of floor(low - margin) to [0, cells]: cells gives an empty range. The
+/// high end v = high + margin is taken as trunc(clamp(v + 1, 0, cells)) - 1, which is
+/// min(floor(v), cells - 1) or one more, and -1 (empty) when v < -1 (v + 1 < 0): for v >= -1,
+/// v + 1 >= floor(v) + 1 exactly, so fl(v + 1) >= floor(v) + 1 as well (rounding is monotonic and
+/// the integer is a double: |v| < 2^53 wherever the clamp does not decide), and it can exceed it
+/// only by rounding up onto the next integer: a cell too many, which the callers' exact tests
+/// reject (the range is a superset either way). A NaN end gives an empty range.
 [[nodiscard, gnu::always_inline]] inline CellRange estimateCells(double low, double high, double margin,
                                                                  std::int64_t cells) noexcept {
-    const std::int64_t first = clampCell(low - margin, cells);
-    const std::int64_t last = clampCell(high + margin, cells);
-    return {first < 0 ? 0 : first, last > cells - 1 ? cells - 1 : last};
+    const auto limit = static_cast<double>(cells);
+    double from = low - margin;
+    from = from > 0 ? from : 0;  // NaN: 0, and the high end makes the range empty
+    from = from < limit ? from : limit;
+    double to = (high + margin) + 1;
+    to = to > 0 ? to : 0;  // NaN: 0, an empty range
+    to = to < limit ? to : limit;
+    return {static_cast<std::int64_t>(from), static_cast<std::int64_t>(to) - 1};
 }
 
 }  // namespace tilesweep::detail

@@ -16,7 +16,9 @@
 // power of two): a sum of nine exact doubles (remainderTerms); likewise below the midpoint under
 // c. The candidate comes from a double estimate of V and moves by one T at a time
 // until V lies between its two midpoints; on a midpoint the even one is taken. Each sign is
-// filtered (signOfSumFiltered) and settled exactly inside the filter's band.
+// filtered (signAgainst) and settled exactly inside the filter's band. Before that, a
+// shortcut per type settles most candidates from the rounded estimate and a certified bound on
+// its error (nearestFloatOfEstimate, nearestDoubleOfEstimate).
 //
 // Range. The range test (range_admission.h) keeps every product and TwoProduct error term of
 // the inputs far from overflow and underflow. A candidate below kPositionFloor in magnitude (or
@@ -136,6 +138,36 @@ template <class T>
     return true;
 }
 
+/// Double frames' shortcut: the double nearest V when a cheap estimate settles it; false when
+/// it does not, and the exact test decides. With q = fl(hi / den) and p = fl(q * d), TwoSum gives
+/// v + r = x0 + p exactly (v = fl(x0 + p)). p is within (2u + u^2) / (1 - u)^2 |p| < 2.01u|p| of
+/// hi * d / den (two roundings), and lo * d / den adds at most u|hi * d / den| < 1.01u|p| (|lo| <=
+/// u|hi|): V = v + r + e with |e| < 3.02u|p| < 4u|p|, the bound, exact as computed (a power of two
+/// times |p|, far above the subnormals in the range test's frames). v is the nearest double to V
+/// when r + e lies strictly between minus half the gap below v and half the gap above it (a
+/// quarter of the spacing above |v| on the side toward zero when |v| is a power of two), which
+/// r + bound < above and r - bound > -below imply: the half gaps are doubles, and rounding is
+/// monotonic, so a computed sum below one is below it exactly. A midpoint is never taken (the
+/// bound is positive), so ties go to the exact test. Near zero (|v| < kPositionFloor) too.
+[[nodiscard]] inline bool nearestDoubleOfEstimate(double x0, double d, double hi, double den,
+                                                  double& out) noexcept {
+    const double p = hi / den * d;
+    const ExactPair s = twoSum(x0, p);
+    if (!(std::fabs(s.hi) >= kPositionFloor)) return false;
+    const double bound = 4 * kUnitRoundoff * std::fabs(p);
+    const double spacing = ulpAbove(s.hi);
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &s.hi, sizeof bits);
+    const bool powerOfTwo = (bits & ((std::uint64_t{1} << 52) - 1)) == 0;
+    const double awayFromZero = 0.5 * spacing;
+    const double towardZero = powerOfTwo ? 0.25 * spacing : awayFromZero;
+    const double above = s.hi > 0 ? awayFromZero : towardZero;
+    const double below = s.hi > 0 ? towardZero : awayFromZero;
+    if (!(s.lo + bound < above && s.lo - bound > -below)) return false;
+    out = s.hi;
+    return true;
+}
+
 /// The coordinate V = x0 + (num / den) * d rounded to the nearest T, ties to even, into `out`;
 /// false when it is left to the lattice (a result near zero, or an estimate more than a few T
 /// away). x0 and d are the free axis's start and displacement, num / den the contact time
@@ -148,6 +180,8 @@ template <class T, class Coord>
     const double lo = lowPartOf(num);
     if constexpr (std::is_same<T, float>::value) {
         if (nearestFloatOfEstimate(x0, d, hi, den, out)) return true;
+    } else {
+        if (nearestDoubleOfEstimate(x0, d, hi, den, out)) return true;
     }
     T c = static_cast<T>(x0 + hi / den * d);
     for (int step = 0; step < 4; ++step) {

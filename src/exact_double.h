@@ -136,9 +136,11 @@ template <class T>
 }
 
 /// -1, 0 or 1 as A*s compares with B*t, exactly, for exact pairs A, B and doubles s, t >= 0.
-/// Pairs whose low parts are zero go to the product comparison above (exact by monotonic
-/// rounding and TwoProduct). Otherwise a semi-static filter decides (Shewchuk 1997; the CGAL
-/// filtered kernels): with p = fl(a.hi*s), q = fl(b.hi*t), S = |p| + |q| and D = fl(p - q),
+/// A semi-static filter decides first (Shewchuk 1997; the CGAL filtered kernels), whatever the
+/// low parts (a zero one meets its assumption |lo| <= u|hi| too), and only inside its band do
+/// pairs whose low parts are zero go to the product comparison above (exact by monotonic
+/// rounding and TwoProduct), the others to the exact expansion: the common case pays for one
+/// filter and no test of the low parts. With p = fl(a.hi*s), q = fl(b.hi*t), S = |p| + |q| and D = fl(p - q),
 ///   |(A*s - B*t) - D| <= u|p| + u|q| + u|D| + |a.lo*s| + |b.lo*t| <= (2u + u^2)S + u|D|
 /// (each rounding to nearest errs by at most u times its result; |lo| <= ulp(hi)/2 <= u|hi|), so
 /// the sign of D is exact once |D|(1 - u) > (2u + u^2)S. The bound (kPairProductErrorBound,
@@ -148,7 +150,6 @@ template <class T>
 /// every TwoProduct error term far from overflow and underflow.
 [[nodiscard, gnu::always_inline]] inline int compareProducts(ExactPair a, double s, ExactPair b, double t,
                                                              bool& refined) noexcept {
-    if (a.lo == 0 && b.lo == 0) return compareProducts(a.hi, s, b.hi, t, refined);
     const double p = a.hi * s;
     const double q = b.hi * t;
     const double d = p - q;
@@ -159,6 +160,8 @@ template <class T>
 #endif
     if (d > bound) return 1;
     if (d < -bound) return -1;
+    // Inside the band: pairs that are doubles compare exactly as products of doubles (above).
+    if (a.lo == 0 && b.lo == 0) return compareProducts(a.hi, s, b.hi, t, refined);
     refined = true;
 #if defined(TILESWEEP_FAULT_PAIR_REFINEMENT_SWAPPED)
     return signOfPairProducts(b, t, a, s, q, p);  // deliberate fault: the refinement's operands swapped

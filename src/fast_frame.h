@@ -240,11 +240,11 @@ public:
                     m.invTile +
                 kGridLineWidthFactor * (std::fabs(rounded - hi) + std::fabs(exact.lo)) * m.invTile;
             if (!(std::fabs(z) < kGridLineReachLimit)) return LineTest::Undecided;
-            const double from = z - reach;
-            const double to = z + reach;
-            const std::int64_t k = floorToInt(from);
-            if (static_cast<double>(k) == from || floorToInt(to) != k) return LineTest::Undecided;
-            return LineTest::No;
+            // No line when [z - reach, z + reach] lies inside one open cell (k, k + 1): then it
+            // holds no integer. With z in it, k can only be floor(z), so one floor decides.
+            const auto k = static_cast<double>(floorToInt(z));
+            if (z - reach > k && z + reach < k + 1) return LineTest::No;
+            return LineTest::Undecided;
         }
     }
 

@@ -73,21 +73,23 @@ public:
         // A short move: the solid cells of the swept bounds, listed once, serve the start
         // overlaps and both steps (collectNear); otherwise the walk.
         const bool nearOnly = collectNear(std::max<std::int32_t>(out.contactCapacity, 0));
-        result.startOverlapCount = nearOnly ? startOverlapsOfNear(out.startOverlaps, out.startOverlapCapacity)
-                                            : listStartOverlaps(out.startOverlaps, out.startOverlapCapacity);
+        const bool bothMove = m_.axis(0).dir != 0 && m_.axis(1).dir != 0;
+        Hits first{out.contacts, std::max<std::int32_t>(out.contactCapacity, 0)};
+        if (nearOnly && bothMove) {
+            result.startOverlapCount = testNear(out.startOverlaps, out.startOverlapCapacity, first);
+        } else {
+            result.startOverlapCount = nearOnly
+                                           ? startOverlapsOfNear(out.startOverlaps, out.startOverlapCapacity)
+                                           : listStartOverlaps(out.startOverlaps, out.startOverlapCapacity);
+        }
         result.position = {m_.start(0), m_.start(1)};
         if (m_.axis(0).dir == 0 && m_.axis(1).dir == 0) {
             result.status = ResolveStatus::Moved;
             return true;
         }
         Coord finalPos[2] = {m_.endOf(0), m_.endOf(1)};
-        Hits first{out.contacts, std::max<std::int32_t>(out.contactCapacity, 0)};
-        if (m_.axis(0).dir != 0 && m_.axis(1).dir != 0) {
-            if (nearOnly) {
-                for (std::int32_t n = 0; n < nearCount_; ++n) testAndRecord(near_[n].i, near_[n].j, first);
-            } else {
-                sweepBothAxes(first);
-            }
+        if (bothMove) {
+            if (!nearOnly) sweepBothAxes(first);
         } else {
             const int a = m_.axis(0).dir != 0 ? 0 : 1;
             sweepOneAxis(a, m_.nearEdge(1 - a), m_.farEdge(1 - a), m_.zeroTime(), nearOnly, first);
@@ -275,13 +277,15 @@ private:
         return range;
     }
 
-    void testAndRecord(std::int64_t i, std::int64_t j, Hits& hits) noexcept {
+    /// Tests tile (i, j) and records it when it blocks; true when the box overlaps it at the start.
+    bool testAndRecord(std::int64_t i, std::int64_t j, Hits& hits) noexcept {
         const auto test = m_.testTile(i, j);
         Axis axis = Axis::Y;
         switch (test.verdict) {
             case TileVerdict::Misses:
+                return false;
             case TileVerdict::StartsOverlapping:
-                return;
+                return true;  // the box overlaps the tile at t = 0
             case TileVerdict::BlocksOnX:
                 axis = Axis::X;
                 break;
@@ -299,6 +303,7 @@ private:
         const int a = axis == Axis::X ? 0 : 1;
         add(hits, {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)}, a, test.time,
             touchEdge(a, a == 0 ? i : j));
+        return false;
     }
 
     /// Whether the held span [heldLow, heldHigh] on axis `o` overlaps (open) cell k's span;
@@ -398,6 +403,23 @@ private:
         }
         nearCount_ = count;
         return true;
+    }
+
+    /// Step 1 of a short move on both axes, and its start overlaps from the same tests: every
+    /// listed cell (collectNear) gets the tile test, and with both axes moving its verdict
+    /// StartsOverlapping is exactly the start overlap (axis_sweep.h: both entry distances
+    /// negative and both exit distances positive, which on each axis says low < hi and high > lo,
+    /// the open overlap of the box's span with the tile's at t = 0). The list holds every start
+    /// overlap, in row-then-column order, so the count and the stored cells match
+    /// startOverlapsOfNear's.
+    std::int32_t testNear(Cell* store, std::int32_t capacity, Hits& hits) noexcept {
+        std::int32_t count = 0;
+        for (std::int32_t n = 0; n < nearCount_; ++n) {
+            if (!testAndRecord(near_[n].i, near_[n].j, hits)) continue;
+            if (count < capacity) store[count] = near_[n];
+            ++count;
+        }
+        return count;
     }
 
     /// The start overlaps among the listed cells (collectNear), which hold all of them, in the

@@ -243,6 +243,27 @@ TYPED_TEST(ContactPosition, halfwayPositionsRoundToEven) {
     }
 }
 
+// The double fast path's estimate shortcut (nearestDoubleOfEstimate) next to a power of two,
+// where the spacing below is half the one above. The box [x0, x0 + 8] x [y0, y0 + 6] hits the
+// wall of column 3 (x = 48) and slides on up; at the hit its y is just below 32, between 32 -
+// 2^-48 (the double below) and the midpoint 32 - 2^-49, so it rounds to 32 - 2^-48. The estimate
+// y0 + fl(fl(num / den) * dy) is exactly that midpoint and rounds (to even) to 32: the shortcut
+// must measure the distance below 32 against the smaller half gap and leave this one to the
+// exact test. The estimate's error bound (4u|p|, p = 1.26...) is below that half gap (2^-49), so
+// with the wrong gap the shortcut would settle it as 32. (Found by a search over such frames.)
+TEST(ContactPositionDouble, estimateAtAPowerOfTwoUsesTheSmallerGapBelow) {
+    const Scene<double> s{{"...#", "...#", "...#", "...#"},
+                          {{0x1.1fdce59ba2ba1p+2, 0x1.ebc3d98a69658p+4}, {8, 6}},
+                          {0x1.b643e3243a5d4p+5, 0x1.f39759f99bbfep+0}};
+    onBothPaths(s, [&](const Frame<double>& f, double k) {
+        ASSERT_GE(f.contacts.size(), 1u);
+        for (const Contact<double>& c : f.contacts) {
+            EXPECT_EQ(c.normal.x, -1);
+            EXPECT_TRUE(sameBits(c.position.y, (32 - 0x1p-48) * k)) << c.position.y;
+        }
+    });
+}
+
 // A frame with no contact buffer stores nothing and is otherwise the same.
 TYPED_TEST(ContactPosition, noBufferChangesNothingElse) {
     using T = TypeParam;
