@@ -3,10 +3,9 @@
 
 // The one cell-range estimator: which cells of one axis an interval may touch, from estimates
 // of its ends in cell coordinates ((v - origin) / tile) and a certified bound on their error.
-// The frame loop's start overlaps, swept bounds and walk (fast_frame.h) and the free move
-// (free_move.h) use it; each caller derives its margin (proof_constants.h). The range it gives
-// is a superset of the exact one; the callers test every cell in it exactly, or, for the free
-// move, need only that no solid cell lies in it.
+// The frame loop's start overlaps, swept bounds and walk (fast_frame.h) use it; each caller
+// derives its margin (proof_constants.h). The range it gives is a superset of the exact one; the
+// callers test every cell in it exactly.
 
 #include <cstdint>
 
