@@ -392,17 +392,19 @@ private:
             return false;
         range[1] = secondaryCandidates(range[1]);
         const TileMapView<T>& map = m_.map();
+        // Every cell is written at the next slot and kept when solid, without a branch on the byte
+        // (a map's bytes are its data: a branch on them mispredicts at random). The slots suffice:
+        // the count is below the cells visited, at most kNearArea.
         std::int32_t count = 0;
         for (std::int64_t j = range[1].first; j <= range[1].last; ++j) {
             const std::uint8_t* row = map.solid + j * map.columns;
             for (std::int64_t i = range[0].first; i <= range[0].last; ++i) {
-                if (row[i] == 0) continue;
-                if (count >= contactCapacity) return false;
-                near_[count++] = {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)};
+                near_[count] = {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)};
+                count += row[i] != 0 ? 1 : 0;
             }
         }
         nearCount_ = count;
-        return true;
+        return count <= contactCapacity;
     }
 
     /// Step 1 of a short move on both axes, and its start overlaps from the same tests: every

@@ -126,7 +126,10 @@ template <class T>
     const std::uint32_t leastMinusOne =
         std::min(std::min(std::min(x - 1, y - 1), std::min(w - 1, h - 1)), std::min(dx - 1, dy - 1));
     // The least field among the nonzero inputs; 0 when one of them is subnormal (turned away).
-    const int lowest = std::min(std::min(map.lowest[0], map.lowest[1]), leastField(leastMinusOne));
+    // (When all six are zero, the wrapped sum reads field 0 too; zero sizes are turned away
+    // anyway. No test for it, so that the minimums above stay conditional moves.)
+    const int lowest =
+        std::min(std::min(map.lowest[0], map.lowest[1]), static_cast<int>((leastMinusOne + 1) >> 23));
     // |x| + |w| + |dx| < 3 * 2^(boxTop - 126) < 2^(boxTop + 2 - 126), and the sum of that and the
     // edges' bound is below twice the larger: C = max(boxTop + 2, edgeTop) - 126, headroom 1.
     // (A negative size makes `largest` a field above 255, refused here too.)
@@ -174,15 +177,20 @@ template <class T>
     return bits & ~(std::uint64_t{1} << 63);
 }
 
-/// Whether a double (its magnitude bits) is zero or within [2^-250, 2^251)
+/// Whether a nonzero double (its magnitude bits) lies within [2^-250, 2^251)
 /// (kDoubleFrameExponentLimit): one unsigned comparison of the field's distance from the bottom.
-[[nodiscard, gnu::always_inline]] inline bool inDoubleFrameRange(std::uint64_t magnitude) noexcept {
+[[nodiscard, gnu::always_inline]] inline bool fieldInDoubleFrameRange(std::uint64_t magnitude) noexcept {
     const auto field = static_cast<unsigned>(magnitude >> 52);
 #if defined(TILESWEEP_FAULT_RANGE_NO_LOWER_BOUND)
-    return magnitude == 0 || field <= 1023 + kDoubleFrameExponentLimit;  // deliberate fault: 2^-250 forgotten
+    return field <= 1023 + kDoubleFrameExponentLimit;  // deliberate fault: 2^-250 forgotten
 #else
-    return magnitude == 0 || field - (1023 - kDoubleFrameExponentLimit) <= 2 * kDoubleFrameExponentLimit;
+    return field - (1023 - kDoubleFrameExponentLimit) <= 2 * kDoubleFrameExponentLimit;
 #endif
+}
+
+/// Whether a double (its magnitude bits) is zero or within [2^-250, 2^251).
+[[nodiscard, gnu::always_inline]] inline bool inDoubleFrameRange(std::uint64_t magnitude) noexcept {
+    return (magnitude == 0) | fieldInDoubleFrameRange(magnitude);
 }
 
 /// The unbiased exponent of a double's lowest set bit (its magnitude bits), 100000 for a zero so
@@ -190,7 +198,8 @@ template <class T>
 [[nodiscard, gnu::always_inline]] inline int lowestBitOf(std::uint64_t magnitude) noexcept {
     const int field = static_cast<int>(magnitude >> 52);
     const std::uint64_t significand = (magnitude & ((std::uint64_t{1} << 52) - 1)) | (std::uint64_t{1} << 52);
-    return magnitude == 0 ? 100000 : field - 1023 - 52 + countTrailingZeros64(significand);
+    const int bit = field - 1023 - 52 + countTrailingZeros64(significand);  // defined for a zero too
+    return magnitude == 0 ? 100000 : bit;
 }
 
 /// The unbiased exponent field of a double (its magnitude bits): |v| in [2^f, 2^(f+1)); -100000
@@ -248,7 +257,8 @@ template <class T>
     const std::uint64_t largest = std::max(std::max(std::max(x, y), std::max(w, h)), std::max(dx, dy));
     const std::uint64_t least =
         std::min(std::min(std::min(x - 1, y - 1), std::min(w - 1, h - 1)), std::min(dx - 1, dy - 1)) + 1;
-    const bool inRange = inDoubleFrameRange(largest) && inDoubleFrameRange(least);
+    // (All six zero would read field 0 and fail; zero sizes are turned away anyway.)
+    const bool inRange = fieldInDoubleFrameRange(largest) & fieldInDoubleFrameRange(least);
     // The far edge's distances to tile edges (FastAxis::farEdgeMinus). With x, w the box's
     // position and size, h = fl(x + w) and h + l = x + w: |h| <= |x| + |w| < 2^boxTop; for an
     // edge e (|e| < 2^top), fl(h - e) = a with h - e = a + b, |a| < 2^(m + 1), m = max(top,
