@@ -103,7 +103,7 @@ namespace tilesweep::detail {
         if (isInsideCell(f)) {
             range.first = k;
         } else if (f == 0 && exactA && isExactMultiple(k, t, p)) {
-            range.first = a >= p ? k : k - 1;  // Ql in (k - 1, k + 1): x on line k or just below
+            range.first = a >= p ? k : k - 1;  // Ql in (k - 1, k + 1): the sign of Ql - k decides
         } else {
             return false;
         }
@@ -117,7 +117,7 @@ namespace tilesweep::detail {
     if (isInsideCell(f)) {
         range.last = m;
     } else if (f == 0 && exactA && twoSum(a, w).lo == 0 && isExactMultiple(m, t, p)) {
-        range.last = b > p ? m : m - 1;  // Qh in (m - 1, m + 1): x + w on line m or just below
+        range.last = b > p ? m : m - 1;  // Qh in (m - 1, m + 1): the sign of Qh - m decides
     } else {
         return false;
     }
