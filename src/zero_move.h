@@ -23,7 +23,7 @@
 // (k, k + 1), so floor(Ql) = k, and likewise ceil(Qh) - 1 = m. A box away from grid lines (the
 // frames a game sees most) is settled there with no exact arithmetic.
 //
-// The settlement (settleZeroMoveRange, out of line, for the rest): on a line (a rounded
+// The settlement (settleZeroMoveRange, out of line, for an axis the estimate leaves): on a line (a rounded
 // quotient that is an integer k: a box resting on a floor or snapped to a wall) the band puts
 // the exact quotient in (k - 1, k + 1), and one exact comparison decides: x - o >= k*t for the
 // low end, x + w - o > k*t for the high one, made with the rounded a, b and p = fl(k*t) when all
@@ -34,21 +34,23 @@
 // box edge within 2^-20 cells of a line but not on it, inexact a, b or p there, quotients past
 // 2^31) takes the ordinary path, which settles it exactly.
 //
-// Validity is folded in: the estimate fails on every non-finite value (an infinite or NaN x, o
-// or w makes ql or qh infinite or NaN; an infinite t makes ql zero; a NaN t makes both NaN), so
-// only the signs of the sizes and the map's header are tested apart. The settlement checks
-// validity whole; invalid input always returns false and the ordinary path reports it.
+// Validity is folded in, so that invalid input always returns false (the ordinary path then
+// reports it): the map's header and the signs of the sizes (one minimum: a size <= 0 makes it
+// <= 0; a NaN may hide in it but fails below) are tested first; an infinite or NaN x, o or w
+// makes ql or qh infinite or NaN, which fails the estimate's range test and the settlement's; an
+// infinite t makes ql zero, which fails the estimate, and the settlement tests it; a NaN t makes
+// both quotients NaN. The displacement is zero.
 
 #include "cell_range.h"
 #include "exact_double.h"
 #include "proof_constants.h"
-#include "validity.h"
 
 #include "tilesweep/resolve.h"
 #include "tilesweep/tile_map.h"
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 
 namespace tilesweep::detail {
 
@@ -60,14 +62,12 @@ namespace tilesweep::detail {
 }
 
 /// One axis of a zero move, estimated (see the top of this file): the cells [first, last] whose
-/// open interior meets the box's, first >= 0, last not yet clamped to the map; false when an
-/// end lies within the band of a line, or outside (0, 2^31), or a value is not finite. The
-/// test 0 < ql and qh < 2^31 covers both quotients: w > 0 gives b >= a and qh >= ql.
-[[nodiscard, gnu::always_inline]] inline bool estimateZeroMoveRange(double x, double w, double o, double t,
+/// open interior meets the box's, first >= 0, last not yet clamped to the map, from a = fl(x -
+/// o), ql = fl(a / t) and qh = fl(fl(a + w) / t); false when an end lies within the band of a
+/// line, or outside (0, 2^31), or a value is not finite. The test 0 < ql and qh < 2^31 covers
+/// both quotients: w > 0 gives b >= a and qh >= ql.
+[[nodiscard, gnu::always_inline]] inline bool estimateZeroMoveRange(double ql, double qh,
                                                                     CellRange& range) noexcept {
-    const double a = x - o;
-    const double ql = a / t;
-    const double qh = (a + w) / t;
     if (!(ql > 0 && qh < kZeroMoveReach)) return false;  // NaN fails too
     range.first = static_cast<std::int64_t>(ql);         // truncation: floor, as ql > 0
     range.last = static_cast<std::int64_t>(qh);
@@ -84,16 +84,19 @@ namespace tilesweep::detail {
     return t > kZeroMoveProductGuard && t < 1 / kZeroMoveProductGuard && productError(kd, t, p) == 0;
 }
 
-/// One axis of a valid zero move, settled exactly where the estimate could not (see the top of
-/// this file): first clamped at 0, last possibly -1 or past the map; false when undecided.
+/// One axis of a zero move the estimate left undecided, settled exactly (see the top of this
+/// file): first clamped at 0, last possibly -1 or past the map; false when an end is undecided
+/// or a value of the axis is not finite. The caller has checked that w and t are > 0 or NaN.
 [[nodiscard]] inline bool settleZeroMoveRange(double x, double w, double o, double t,
                                               CellRange& range) noexcept {
     const double a = x - o;
     const double b = a + w;
     const double ql = a / t;
     const double qh = b / t;
-    if (!(ql > -kZeroMoveReach && qh < kZeroMoveReach)) return false;  // qh >= ql: both in reach
-    const bool exactA = twoSum(x, -o).lo == 0;
+    // Finite values: an infinite or NaN x, o or w makes ql or qh infinite or NaN; an infinite t
+    // makes them zero, so it is tested; a NaN t makes them NaN.
+    if (!(ql > -kZeroMoveReach && qh < kZeroMoveReach && t < std::numeric_limits<double>::infinity()))
+        return false;  // and, with qh >= ql, both in reach
     double p = 0;
     if (ql < 1) {
         range.first = 0;  // Ql < 1 by monotonic rounding: the map's first cell or one before it
@@ -102,7 +105,7 @@ namespace tilesweep::detail {
         const double f = ql - static_cast<double>(k);
         if (isInsideCell(f)) {
             range.first = k;
-        } else if (f == 0 && exactA && isExactMultiple(k, t, p)) {
+        } else if (f == 0 && twoSum(x, -o).lo == 0 && isExactMultiple(k, t, p)) {
             range.first = a >= p ? k : k - 1;  // Ql in (k - 1, k + 1): the sign of Ql - k decides
         } else {
             return false;
@@ -116,7 +119,7 @@ namespace tilesweep::detail {
     const double f = qh - static_cast<double>(m);
     if (isInsideCell(f)) {
         range.last = m;
-    } else if (f == 0 && exactA && twoSum(a, w).lo == 0 && isExactMultiple(m, t, p)) {
+    } else if (f == 0 && twoSum(x, -o).lo == 0 && twoSum(a, w).lo == 0 && isExactMultiple(m, t, p)) {
         range.last = b > p ? m : m - 1;  // Qh in (m - 1, m + 1): the sign of Qh - m decides
     } else {
         return false;
@@ -131,21 +134,27 @@ struct ZeroMoveRanges {
     CellRange y{};
 };
 
-/// Both axes of a zero move the estimate left undecided, settled exactly; not decided when the
-/// input is invalid or an end is undecided. Out of line, and returned by value so that the
-/// early exit keeps its own ranges in registers.
+/// Both axes of a zero move the estimate left undecided, settled exactly; not decided when an
+/// end is undecided or the input invalid (the caller has checked the map's header and that the
+/// sizes are > 0 or NaN). Out of line, and returned by value, so that the early exit stays
+/// small and keeps its own ranges in registers.
 template <class T>
-[[nodiscard, gnu::noinline, gnu::cold]] ZeroMoveRanges settleZeroMoveRanges(
-    const ResolveInput<T>& in) noexcept {
+[[nodiscard, gnu::noinline]] ZeroMoveRanges settleZeroMoveRanges(const ResolveInput<T>& in) noexcept {
     const TileMapView<T>& map = in.map;
     ZeroMoveRanges r;
     r.decided =
-        isValidInput(in) &&
         settleZeroMoveRange(static_cast<double>(in.box.pos.x), static_cast<double>(in.box.size.x),
                             static_cast<double>(map.origin.x), static_cast<double>(map.tileSize.x), r.x) &&
         settleZeroMoveRange(static_cast<double>(in.box.pos.y), static_cast<double>(in.box.size.y),
                             static_cast<double>(map.origin.y), static_cast<double>(map.tileSize.y), r.y);
     return r;
+}
+
+/// One axis of a zero move, estimated from its coordinates (estimateZeroMoveRange).
+[[nodiscard, gnu::always_inline]] inline bool estimateZeroMoveAxis(double x, double w, double o, double t,
+                                                                   CellRange& range) noexcept {
+    const double a = x - o;
+    return estimateZeroMoveRange(a / t, (a + w) / t, range);
 }
 
 /// The zero-move frame (see the top of this file); false when it must take the ordinary path
@@ -164,10 +173,10 @@ template <class T>
         return false;
     CellRange x{};
     CellRange y{};
-    if (!(estimateZeroMoveRange(static_cast<double>(in.box.pos.x), static_cast<double>(in.box.size.x),
-                                static_cast<double>(map.origin.x), static_cast<double>(map.tileSize.x), x) &&
-          estimateZeroMoveRange(static_cast<double>(in.box.pos.y), static_cast<double>(in.box.size.y),
-                                static_cast<double>(map.origin.y), static_cast<double>(map.tileSize.y), y))) {
+    if (!(estimateZeroMoveAxis(static_cast<double>(in.box.pos.x), static_cast<double>(in.box.size.x),
+                               static_cast<double>(map.origin.x), static_cast<double>(map.tileSize.x), x) &&
+          estimateZeroMoveAxis(static_cast<double>(in.box.pos.y), static_cast<double>(in.box.size.y),
+                               static_cast<double>(map.origin.y), static_cast<double>(map.tileSize.y), y))) {
         const ZeroMoveRanges settled = settleZeroMoveRanges(in);
         if (!settled.decided) return false;
         x = settled.x;

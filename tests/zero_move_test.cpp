@@ -84,14 +84,14 @@ Checked<T> checkZeroMove(const TileMap<T>& map, Box<T> box) {
     };
     c.failure = matches(resolveMove(in, out), "resolveMove");
     if (!c.failure.empty()) return c;
-    detail::CellRange x{};
-    detail::CellRange y{};
-    const bool estimated = detail::estimateZeroMoveRange(
-                               static_cast<double>(box.pos.x), static_cast<double>(box.size.x),
-                               static_cast<double>(map.origin.x), static_cast<double>(map.tileSize.x), x) &&
-                           detail::estimateZeroMoveRange(
-                               static_cast<double>(box.pos.y), static_cast<double>(box.size.y),
-                               static_cast<double>(map.origin.y), static_cast<double>(map.tileSize.y), y);
+    const auto estimated1 = [](T x, T w, T o, T t) {
+        const double a = static_cast<double>(x) - static_cast<double>(o);
+        detail::CellRange range{};
+        return detail::estimateZeroMoveRange(a / static_cast<double>(t),
+                                             (a + static_cast<double>(w)) / static_cast<double>(t), range);
+    };
+    const bool estimated = estimated1(box.pos.x, box.size.x, map.origin.x, map.tileSize.x) &&
+                           estimated1(box.pos.y, box.size.y, map.origin.y, map.tileSize.y);
     ResolveResult<T> early;
     if (detail::resolveZeroMove(in, out, early)) {
         c.exit = estimated ? Exit::Estimated : Exit::Settled;
