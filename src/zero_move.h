@@ -159,18 +159,24 @@ template <class T>
 
 /// The zero-move frame (see the top of this file); false when it must take the ordinary path
 /// (invalid input, or a box edge the settlement cannot decide). Only for a displacement of
-/// zeros.
+/// zeros. `mapValidated` when the map passed validateTileMap (a PreparedMap that isValid()):
+/// its header and tile sizes are then known good (cells present whenever there are any) and
+/// are not tested again.
 template <class T>
 [[nodiscard]] inline bool resolveZeroMove(const ResolveInput<T>& in, const ResolveOutput<T>& out,
-                                          ResolveResult<T>& result) noexcept {
+                                          ResolveResult<T>& result, bool mapValidated = false) noexcept {
     const TileMapView<T>& map = in.map;
     const std::int64_t columns = map.columns;
     const std::int64_t rows = map.rows;
     // The part of validity the estimates do not imply (see the top of this file). A size <= 0
     // makes the minimum <= 0; a NaN among them may hide in it, but fails the estimate.
-    if ((columns | rows) < 0 || columns * rows > kMaxCells || map.solid == nullptr) return false;
-    if (!(std::min(std::min(in.box.size.x, map.tileSize.x), std::min(in.box.size.y, map.tileSize.y)) > 0))
-        return false;
+    if (mapValidated) {
+        if (!(std::min(in.box.size.x, in.box.size.y) > 0)) return false;
+    } else {
+        if ((columns | rows) < 0 || columns * rows > kMaxCells || map.solid == nullptr) return false;
+        if (!(std::min(std::min(in.box.size.x, map.tileSize.x), std::min(in.box.size.y, map.tileSize.y)) > 0))
+            return false;
+    }
     CellRange x{};
     CellRange y{};
     if (!(estimateZeroMoveAxis(static_cast<double>(in.box.pos.x), static_cast<double>(in.box.size.x),

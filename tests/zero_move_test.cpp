@@ -9,6 +9,7 @@
 // from being vacuous. Invalid input must reach the ordinary path and come back InvalidInput.
 #include "zero_move.h"
 
+#include "tilesweep/mover.h"
 #include "tilesweep/oracle/exact/exact_resolve.h"
 #include "tilesweep/resolve.h"
 #include "tilesweep/scene/scene.h"
@@ -306,6 +307,42 @@ TEST(ZeroMoveFloat, matchesTheExactReferenceOnSubnormals) {
                     const Checked<float> c = checkZeroMove(map, Box<float>{{x, o + t}, {w, t}});
                     ASSERT_TRUE(c.failure.empty()) << c.failure;
                 }
+}
+
+// The same frames on a prepared map (resolveMove on a PreparedMap), where the early exit skips
+// the header and tile-size tests prepareMap made: the answers are the bare call's, bit for bit,
+// and a box size that is not finite and > 0 still comes back InvalidInput.
+TYPED_TEST(ZeroMove, aPreparedMapGivesTheBareCallsAnswers) {
+    using T = TypeParam;
+    const TileMap<T> map = makeMap<T>({-32, 8}, {16, 16}, 6, 5, 9);
+    const PreparedMap<T> prepared = prepareMap(map.view());
+    ASSERT_TRUE(prepared.isValid());
+    Cell bare[16];
+    Cell onPrepared[16];
+    for (int k = -2; k <= 14; ++k) {
+        const T x = static_cast<T>(-32 + 8 * k);
+        for (const Box<T> box : {Box<T>{{x, 24}, {16, 16}}, Box<T>{{x + T(0.5), 40}, {12, 32}},
+                                 Box<T>{{x, T(7.75)}, {T(20.5), T(40.25)}}}) {
+            const ResolveResult<T> a =
+                resolveMove(ResolveInput<T>{map.view(), box, {0, 0}}, {nullptr, 0, bare, 16});
+            const ResolveResult<T> b = resolveMove(prepared, box, {0, 0}, {nullptr, 0, onPrepared, 16});
+            ASSERT_EQ(a.status, b.status) << describe(map, box);
+            ASSERT_TRUE(sameBits(a.position.x, b.position.x) && sameBits(a.position.y, b.position.y));
+            ASSERT_EQ(a.startOverlapCount, b.startOverlapCount) << describe(map, box);
+            for (std::int32_t n = 0; n < a.startOverlapCount && n < 16; ++n) {
+                EXPECT_EQ(bare[n].i, onPrepared[n].i);
+                EXPECT_EQ(bare[n].j, onPrepared[n].j);
+            }
+        }
+    }
+    for (T v : {T(0), -T(0), T(-8), std::numeric_limits<T>::quiet_NaN(), std::numeric_limits<T>::infinity()})
+        for (int axis = 0; axis < 2; ++axis) {
+            Box<T> box{{8, 24}, {16, 16}};
+            (axis == 0 ? box.size.x : box.size.y) = v;
+            const ResolveResult<T> r = resolveMove(prepared, box, {0, 0}, {nullptr, 0, onPrepared, 16});
+            EXPECT_EQ(r.status, ResolveStatus::InvalidInput)
+                << "size " << static_cast<double>(v) << " on axis " << axis;
+        }
 }
 
 // Invalid input: every non-finite value, every size <= 0, a bad map header. The early exit must
