@@ -23,16 +23,15 @@
 // (k, k + 1), so floor(Ql) = k, and likewise ceil(Qh) - 1 = m. A box away from grid lines (the
 // frames a game sees most) is settled there with no exact arithmetic.
 //
-// The settlement (settleZeroMoveRange, out of line, for an axis the estimate leaves): on a line (a rounded
-// quotient that is an integer k: a box resting on a floor or snapped to a wall) the band puts
-// the exact quotient in (k - 1, k + 1), and one exact comparison decides: x - o >= k*t for the
-// low end, x + w - o > k*t for the high one, made with the rounded a, b and p = fl(k*t) when all
-// three are exact (TwoSum and TwoProduct say so). Two ends need no band at all, by monotonic
-// rounding alone: ql < 1 implies Ql < 1 (Ql >= 1 means x - o >= t, so a >= t and ql >= 1), so
-// the first cell is 0 or before the map; qh < 0 implies Qh < 0 (x + w - o >= 0 means x - o >=
-// -w, so a >= -w, b >= 0 and qh >= 0), so no cell of the map is overlapped. Anything else (a
-// box edge within 2^-20 cells of a line but not on it, inexact a, b or p there, quotients past
-// 2^31) takes the ordinary path, which settles it exactly.
+// The settlement (settleZeroMoveRanges, out of line, both axes again when the estimate leaves one): on a line
+// (a rounded quotient that is an integer k: a box resting on a floor or snapped to a wall) the band puts the
+// exact quotient in (k - 1, k + 1), and one exact comparison decides: x - o >= k*t for the low end, x + w - o
+// > k*t for the high one, made with the rounded a, b and p = fl(k*t) when all three are exact (TwoSum and
+// TwoProduct say so). Two ends need no band at all, by monotonic rounding alone: ql < 1 implies Ql < 1 (Ql >=
+// 1 means x - o >= t, so a >= t and ql >= 1), so the first cell is 0 or before the map; qh < 0 implies Qh < 0
+// (x + w - o >= 0 means x - o >= -w, so a >= -w, b >= 0 and qh >= 0), so no cell of the map is overlapped.
+// Anything else (a box edge within 2^-20 cells of a line but not on it, inexact a, b or p there, quotients
+// past 2^31) takes the ordinary path, which settles it exactly.
 //
 // Validity is folded in, so that invalid input always returns false (the ordinary path then
 // reports it): the map's header and the signs of the sizes (one minimum: a size <= 0 makes it
