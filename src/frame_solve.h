@@ -44,7 +44,7 @@ template <class T>
     // A zero move: the start overlaps alone, from the cells under the box (zero_move.h).
     if (input.displacement.x == 0 && input.displacement.y == 0) {
         ResolveResult<T> result;
-        if (resolveZeroMove(input, output, result)) {
+        if (resolveZeroMove(input, output, result, prepared != nullptr)) {  // prepared: a valid map
             recordPath(output, DecisionPath::Fast);
             return result;
         }

@@ -44,20 +44,19 @@ inline constexpr double kCellEstimateErrorUlps = 8;
 /// at most 5u low, still covers.
 inline constexpr double kSecondaryRangeErrorUlps = 10;
 
-/// Bands of the zero move's exact cell decision (zero_move.h), in units of u times the
-/// quotients' magnitude: the rounded quotients ql, qh are within 2.02u|ql| and 1.01u|ql| +
-/// 2.01u|qh| of the exact ones, and the fraction r = fl(q - floor(q)) adds 2^-54. Bands of
-/// 8u|ql| (+ 8u|qh|) + 2^-52, computed with two roundings, exceed those sums.
-inline constexpr double kZeroMoveBandUlps = kCellEstimateErrorUlps;
-/// The absolute part of the zero move's bands: 2^-52 covers the 2^-54 of r's own rounding with
-/// room for the roundings of the band.
-inline constexpr double kZeroMoveBandFloor = 0x1p-52;
-/// Quotients (cell coordinates) the zero move estimates: below 2^52 in magnitude, so that
-/// floor() of a double is exact and fits an int64; larger ones take the ordinary path.
-inline constexpr double kZeroMoveReach = 0x1p52;
-/// Below this magnitude a quotient may have underflowed and lost its relative error bound; the
-/// zero move then takes the ordinary path (and TwoProduct stays exact above it).
-inline constexpr double kZeroMoveUnderflowGuard = 0x1p-900;
+/// Reach of the zero move's estimates (zero_move.h): cell coordinates q = (v - origin) / tile
+/// below 2^31 in magnitude, so that every cell index fits the map's int32 range and the
+/// estimates' error stays under kZeroMoveBand. Larger ones take the ordinary path.
+inline constexpr double kZeroMoveReach = 0x1p31;
+/// Band of the zero move's cell decision (zero_move.h): a rounded cell coordinate q below
+/// kZeroMoveReach is within 3.01u * 2^31 < 0.76 * 2^-20 of the exact one (ql = fl(fl(x - o) / t)
+/// within (2u + u^2)|Ql|; qh = fl(fl(fl(x - o) + w) / t) within u(1 + u)^2 |Ql| + (2u + u^2)|Qh|;
+/// each division adds at most 2^-1075 where it underflows), so a q more than 2^-20 from every
+/// integer has the exact coordinate's floor. A q within it takes the exact settlement.
+inline constexpr double kZeroMoveBand = 0x1p-20;
+/// TwoProduct (exact_double.h) is exact for a tile size in (2^-900, 2^900) times a cell index
+/// below 2^31: nothing overflows and the error term does not underflow.
+inline constexpr double kZeroMoveProductGuard = 0x1p-900;
 
 /// The free move (free_move.h) widens its cell range by one whole cell on each side, which
 /// covers an estimate error below a quarter cell. The error is under 2^-50 M / tile (M the sum
