@@ -58,13 +58,6 @@ inline constexpr double kZeroMoveBand = 0x1p-20;
 /// below 2^31: nothing overflows and the error term does not underflow.
 inline constexpr double kZeroMoveProductGuard = 0x1p-900;
 
-/// The free move (free_move.h) widens its cell range by one whole cell on each side, which
-/// covers an estimate error below a quarter cell. The error is under 2^-50 M / tile (M the sum
-/// of the input magnitudes: at most two roundings of the ends, the difference, the reciprocal
-/// and the product), so M * 2^-48 < tile / 4 keeps it there (2^-50 M / tile < 2^-50 * 2^46 =
-/// 2^-4).
-inline constexpr double kFreeMoveMagnitudeScale = 0x1p-48;
-
 // ---- products and times ----------------------------------------------------------------------
 
 /// The semi-static error bound of compareProducts on exact pairs (exact_double.h), relative to
