@@ -32,7 +32,7 @@ template <class T, Impl I>
                                                            const ResolveOutput<T>& out,
                                                            const PerMap<T>& perMap) noexcept {
     if constexpr (I == Impl::Tilesweep) {
-        return resolveMove(perMap.prepared, in.box, in.displacement, out);
+        return resolveMove(perMap.prepared, {in.box, in.displacement}, out);
     } else if constexpr (I == Impl::TilesweepView) {
         return resolveMove<T>(in, out);
     } else if constexpr (I == Impl::Twin) {

@@ -27,16 +27,19 @@ void prepare(const TileMapView<T>& map, MapError& error, Vec2<double>& inverse, 
     }
 }
 
+/// The input by reference, not a box and a displacement by value: a Vec2<double> by value arrives
+/// in two registers, and storing them apart to read them back as one vector stalls the store
+/// forwarding (a prepared double zero move took 15 ns against the bare call's 10).
 template <class T>
-ResolveResult<T> resolveOnPrepared(const PreparedMap<T>& map, const Box<T>& box, Vec2<T> displacement,
+ResolveResult<T> resolveOnPrepared(const PreparedMap<T>& map, const MoveInput<T>& input,
                                    const ResolveOutput<T>& output) noexcept {
     if (!map.isValid()) {
         ResolveResult<T> invalid;
         invalid.status = ResolveStatus::InvalidInput;
-        invalid.position = isFinite(box.pos) ? box.pos : Vec2<T>{0, 0};
+        invalid.position = isFinite(input.box.pos) ? input.box.pos : Vec2<T>{0, 0};
         return invalid;
     }
-    return detail::resolveFrame(ResolveInput<T>{map.view(), box, displacement}, output,
+    return detail::resolveFrame(ResolveInput<T>{map.view(), input.box, input.displacement}, output,
                                 detail::ContactPositions::Placed, &map.mapRange());
 }
 
@@ -131,13 +134,13 @@ PreparedMap<double> prepareMap(const TileMapView<double>& map) noexcept {
     return p;
 }
 
-ResolveResult<float> resolveMove(const PreparedMap<float>& map, const Box<float>& box,
-                                 Vec2<float> displacement, const ResolveOutput<float>& output) noexcept {
-    return resolveOnPrepared(map, box, displacement, output);
+ResolveResult<float> resolveMove(const PreparedMap<float>& map, const MoveInput<float>& input,
+                                 const ResolveOutput<float>& output) noexcept {
+    return resolveOnPrepared(map, input, output);
 }
-ResolveResult<double> resolveMove(const PreparedMap<double>& map, const Box<double>& box,
-                                  Vec2<double> displacement, const ResolveOutput<double>& output) noexcept {
-    return resolveOnPrepared(map, box, displacement, output);
+ResolveResult<double> resolveMove(const PreparedMap<double>& map, const MoveInput<double>& input,
+                                  const ResolveOutput<double>& output) noexcept {
+    return resolveOnPrepared(map, input, output);
 }
 std::int32_t maxContacts(Vec2<float> boxSize, Vec2<float> tileSize) noexcept {
     return maxContactsOf(boxSize, tileSize);

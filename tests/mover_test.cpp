@@ -168,11 +168,10 @@ TYPED_TEST(Mover, clipVelocityZeroesWhatPushesIntoTheFacesHit) {
 TEST(Mover, resolveMoveOnAMapNotPreparedIsInvalidInput) {
     const std::uint8_t cells[4] = {0, 0, 0, 1};
     const TileMapView<float> view{{0, 0}, {16, 16}, 2, 2, cells};
-    const ResolveResult<float> unprepared =
-        resolveMove(PreparedMap<float>{}, Box<float>{{1, 2}, {4, 4}}, {3, 3}, {});
+    const ResolveResult<float> unprepared = resolveMove(PreparedMap<float>{}, {{{1, 2}, {4, 4}}, {3, 3}}, {});
     EXPECT_EQ(unprepared.status, ResolveStatus::InvalidInput);
     EXPECT_EQ(unprepared.position, (Vec2<float>{1, 2}));
-    const ResolveResult<float> moved = resolveMove(prepareMap(view), Box<float>{{1, 2}, {4, 4}}, {3, 3}, {});
+    const ResolveResult<float> moved = resolveMove(prepareMap(view), {{{1, 2}, {4, 4}}, {3, 3}}, {});
     EXPECT_EQ(moved.status, ResolveStatus::Moved);
     EXPECT_EQ(moved.position, (Vec2<float>{4, 5}));
 }
@@ -205,7 +204,7 @@ void expectSameAsResolveMove(const scenarios::RandomScene<T>& scene, std::uint64
         std::vector<Contact<T>> contacts(4096);
         std::vector<Cell> preparedOverlaps(4096);
         const ResolveResult<T> p =
-            resolveMove(map, scene.box, scene.move, {contacts.data(), 4096, preparedOverlaps.data(), 4096});
+            resolveMove(map, {scene.box, scene.move}, {contacts.data(), 4096, preparedOverlaps.data(), 4096});
         EXPECT_EQ(std::memcmp(&p.position, &v.position, sizeof p.position), 0) << where << " prepared";
         EXPECT_EQ(p.status, v.status) << where << " prepared";
         EXPECT_EQ(p.blockedX, v.blockedX) << where << " prepared";

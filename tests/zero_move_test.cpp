@@ -325,7 +325,7 @@ TYPED_TEST(ZeroMove, aPreparedMapGivesTheBareCallsAnswers) {
                                  Box<T>{{x, T(7.75)}, {T(20.5), T(40.25)}}}) {
             const ResolveResult<T> a =
                 resolveMove(ResolveInput<T>{map.view(), box, {0, 0}}, {nullptr, 0, bare, 16});
-            const ResolveResult<T> b = resolveMove(prepared, box, {0, 0}, {nullptr, 0, onPrepared, 16});
+            const ResolveResult<T> b = resolveMove(prepared, {box, {0, 0}}, {nullptr, 0, onPrepared, 16});
             ASSERT_EQ(a.status, b.status) << describe(map, box);
             ASSERT_TRUE(sameBits(a.position.x, b.position.x) && sameBits(a.position.y, b.position.y));
             ASSERT_EQ(a.startOverlapCount, b.startOverlapCount) << describe(map, box);
@@ -339,7 +339,7 @@ TYPED_TEST(ZeroMove, aPreparedMapGivesTheBareCallsAnswers) {
         for (int axis = 0; axis < 2; ++axis) {
             Box<T> box{{8, 24}, {16, 16}};
             (axis == 0 ? box.size.x : box.size.y) = v;
-            const ResolveResult<T> r = resolveMove(prepared, box, {0, 0}, {nullptr, 0, onPrepared, 16});
+            const ResolveResult<T> r = resolveMove(prepared, {box, {0, 0}}, {nullptr, 0, onPrepared, 16});
             EXPECT_EQ(r.status, ResolveStatus::InvalidInput)
                 << "size " << static_cast<double>(v) << " on axis " << axis;
         }

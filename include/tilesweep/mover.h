@@ -78,24 +78,24 @@ private:
 /// Validates `map` once (validateTileMap: O(columns + rows)) and keeps it for every frame.
 [[nodiscard]] PreparedMap<double> prepareMap(const TileMapView<double>& map) noexcept;
 
-/// resolveMove (resolve.h) through a prepared map: the same result, bit for bit, as
-/// resolveMove({map.view(), box, displacement}, output), with the map's share of each frame's
-/// checks done once by prepareMap. This is the call for a game that resolves many frames through
-/// one map. A map that failed prepareMap gives ResolveStatus::InvalidInput.
-[[nodiscard]] ResolveResult<float> resolveMove(const PreparedMap<float>& map, const Box<float>& box,
-                                               Vec2<float> displacement,
-                                               const ResolveOutput<float>& output) noexcept;
-/// The same in double.
-[[nodiscard]] ResolveResult<double> resolveMove(const PreparedMap<double>& map, const Box<double>& box,
-                                                Vec2<double> displacement,
-                                                const ResolveOutput<double>& output) noexcept;
-
 /// One mover's frame: its box at the start and the motion it wants over the frame.
 template <class T>
 struct MoveInput {
     Box<T> box;            ///< position and size (> 0) at the start of the frame, finite
     Vec2<T> displacement;  ///< motion over the whole frame (velocity * dt), finite; zero is valid
 };
+
+/// resolveMove (resolve.h) through a prepared map: the same result, bit for bit, as
+/// resolveMove({map.view(), input.box, input.displacement}, output), with the map's share of each
+/// frame's checks done once by prepareMap. This is the call for a game that resolves many frames
+/// through one map and wants resolveMove's lists. A map that failed prepareMap gives
+/// ResolveStatus::InvalidInput.
+[[nodiscard]] ResolveResult<float> resolveMove(const PreparedMap<float>& map, const MoveInput<float>& input,
+                                               const ResolveOutput<float>& output) noexcept;
+/// The same in double.
+[[nodiscard]] ResolveResult<double> resolveMove(const PreparedMap<double>& map,
+                                                const MoveInput<double>& input,
+                                                const ResolveOutput<double>& output) noexcept;
 
 /// How a move ended.
 enum class MoveStatus : std::uint8_t {
