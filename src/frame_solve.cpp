@@ -63,9 +63,8 @@ template <class T>
 #if defined(__GNUC__)
 __attribute__((noinline))
 #endif
-ResolveResult<T>
-resolveMovingFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output, ContactPositions positions,
-                   const MapRange* prepared) noexcept {
+void resolveMovingFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output, ContactPositions positions,
+                        const MapRange* prepared, ResolveResult<T>& result) noexcept {
     // The fast path, when the range test admits the frame: float frames on exact doubles,
     // double frames on exact pairs under a certified filter. The range test implies the frame
     // is valid, so isValid only runs for the frames it turns away.
@@ -79,30 +78,26 @@ resolveMovingFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output,
         admitted = admitDoubleFrame(input, range);
     }
     if (admitted) {
-        ResolveResult<T> result;
         bool refined = false;
         if (solveFast(input, output, positions, range, result, refined)) {
             recordPath(output, refined ? DecisionPath::Filtered : DecisionPath::Fast);
-            return result;
+            return;
         }
     } else if (!isValid(input)) {
-        ResolveResult<T> invalid;
-        invalid.status = ResolveStatus::InvalidInput;
-        invalid.position = input.box.pos;
-        if (!std::isfinite(invalid.position.x) || !std::isfinite(invalid.position.y))
-            invalid.position = {0, 0};
+        result = ResolveResult<T>{};
+        result.status = ResolveStatus::InvalidInput;
+        result.position = input.box.pos;
+        if (!std::isfinite(result.position.x) || !std::isfinite(result.position.y)) result.position = {0, 0};
         recordPath(output, DecisionPath::Exact);
-        return invalid;
+        return;
     }
     recordPath(output, DecisionPath::Exact);
-    return solveOnLattice(input, output, positions);
+    result = solveOnLattice(input, output, positions);  // over whatever the fast path wrote
 }
 
-template ResolveResult<float> resolveMovingFrame<float>(const ResolveInput<float>&,
-                                                        const ResolveOutput<float>&, ContactPositions,
-                                                        const MapRange*) noexcept;
-template ResolveResult<double> resolveMovingFrame<double>(const ResolveInput<double>&,
-                                                          const ResolveOutput<double>&, ContactPositions,
-                                                          const MapRange*) noexcept;
+template void resolveMovingFrame<float>(const ResolveInput<float>&, const ResolveOutput<float>&,
+                                        ContactPositions, const MapRange*, ResolveResult<float>&) noexcept;
+template void resolveMovingFrame<double>(const ResolveInput<double>&, const ResolveOutput<double>&,
+                                         ContactPositions, const MapRange*, ResolveResult<double>&) noexcept;
 
 }  // namespace tilesweep::detail

@@ -27,36 +27,41 @@ inline void recordPath(const ResolveOutput<T>& output, DecisionPath path) noexce
 /// contacts, so that a frame resolved into their inline buffer pays nothing for them.
 enum class ContactPositions : std::uint8_t { Placed, Skipped };
 
-/// resolveMove for every frame but the zero moves resolveZeroMove settles (frame_solve.cpp).
+/// resolveMove for every frame but the zero moves resolveZeroMove settles (frame_solve.cpp), into
+/// `result`, which must be as default-initialized.
 template <class T>
-[[nodiscard]] ResolveResult<T> resolveMovingFrame(const ResolveInput<T>& input,
-                                                  const ResolveOutput<T>& output, ContactPositions positions,
-                                                  const MapRange* prepared) noexcept;
+void resolveMovingFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output,
+                        ContactPositions positions, const MapRange* prepared,
+                        ResolveResult<T>& result) noexcept;
 
 /// resolveMove, with the choice above: the zero moves resolveZeroMove settles (zero_move.h), then
 /// resolveMovingFrame. `prepared` is the map's range test (range_admission.h) when the map was
 /// prepared (PreparedMap), or null: it is then computed for the frame. Inline, so that each entry
 /// point (resolve.cpp, mover.cpp) goes straight to the zero move or to resolveMovingFrame.
+///
+/// One result object, written in place by whichever path settles the frame and returned by name
+/// on every path, so that it is the caller's (NRVO): a copy at the end would read whole vectors
+/// of a struct just written field by field, which stalls the store forwarding.
 template <class T>
 [[nodiscard]] inline ResolveResult<T> resolveFrame(const ResolveInput<T>& input,
                                                    const ResolveOutput<T>& output, ContactPositions positions,
                                                    const MapRange* prepared) noexcept {
+    ResolveResult<T> result;
     // A zero move: the start overlaps alone, from the cells under the box (zero_move.h).
-    if (input.displacement.x == 0 && input.displacement.y == 0) {
-        ResolveResult<T> result;
-        if (resolveZeroMove(input, output, result, prepared != nullptr)) {  // prepared: a valid map
-            recordPath(output, DecisionPath::Fast);
-            return result;
-        }
+    if (input.displacement.x == 0 && input.displacement.y == 0 &&
+        resolveZeroMove(input, output, result, prepared != nullptr)) {  // prepared: a valid map
+        recordPath(output, DecisionPath::Fast);
+        return result;
     }
-    return resolveMovingFrame(input, output, positions, prepared);
+    resolveMovingFrame(input, output, positions, prepared, result);
+    return result;
 }
 
-extern template ResolveResult<float> resolveMovingFrame<float>(const ResolveInput<float>&,
-                                                               const ResolveOutput<float>&, ContactPositions,
-                                                               const MapRange*) noexcept;
-extern template ResolveResult<double> resolveMovingFrame<double>(const ResolveInput<double>&,
-                                                                 const ResolveOutput<double>&,
-                                                                 ContactPositions, const MapRange*) noexcept;
+extern template void resolveMovingFrame<float>(const ResolveInput<float>&, const ResolveOutput<float>&,
+                                               ContactPositions, const MapRange*,
+                                               ResolveResult<float>&) noexcept;
+extern template void resolveMovingFrame<double>(const ResolveInput<double>&, const ResolveOutput<double>&,
+                                                ContactPositions, const MapRange*,
+                                                ResolveResult<double>&) noexcept;
 
 }  // namespace tilesweep::detail
