@@ -135,6 +135,22 @@ template <class T>
     return signOfSum(terms, 8);
 }
 
+/// The filter of compareProducts on exact pairs below, from p = fl(a.hi*s) and q = fl(b.hi*t)
+/// alone: 1 or -1 when it settles the order of A*s and B*t (whatever the low parts), 0 when
+/// only the exact refinement can. It reads no low part, so a caller that holds only the high
+/// parts (the tile screen, fast_frame.h) gets the very answer compareProducts would.
+[[nodiscard, gnu::always_inline]] inline int pairProductFilter(double p, double q) noexcept {
+    const double d = p - q;
+#if defined(TILESWEEP_FAULT_FILTER_BOUND_HALVED)
+    const double bound = kPairProductErrorBound / 2 * (std::fabs(p) + std::fabs(q));  // deliberate fault
+#else
+    const double bound = kPairProductErrorBound * (std::fabs(p) + std::fabs(q));
+#endif
+    if (d > bound) return 1;
+    if (d < -bound) return -1;
+    return 0;
+}
+
 /// -1, 0 or 1 as A*s compares with B*t, exactly, for exact pairs A, B and doubles s, t >= 0.
 /// A semi-static filter decides first (Shewchuk 1997; the CGAL filtered kernels), whatever the
 /// low parts (a zero one meets its assumption |lo| <= u|hi| too), and only inside its band do
@@ -152,14 +168,8 @@ template <class T>
                                                              bool& refined) noexcept {
     const double p = a.hi * s;
     const double q = b.hi * t;
-    const double d = p - q;
-#if defined(TILESWEEP_FAULT_FILTER_BOUND_HALVED)
-    const double bound = kPairProductErrorBound / 2 * (std::fabs(p) + std::fabs(q));  // deliberate fault
-#else
-    const double bound = kPairProductErrorBound * (std::fabs(p) + std::fabs(q));
-#endif
-    if (d > bound) return 1;
-    if (d < -bound) return -1;
+    const int filtered = pairProductFilter(p, q);
+    if (filtered != 0) return filtered;
     // Inside the band: pairs that are doubles compare exactly as products of doubles (above).
     if (a.lo == 0 && b.lo == 0) return compareProducts(a.hi, s, b.hi, t, refined);
     refined = true;

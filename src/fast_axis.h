@@ -85,6 +85,23 @@ struct FastAxis {
     [[nodiscard, gnu::always_inline]] Coord exitDistance(double lo, double hi) const noexcept {
         return dir > 0 ? differenceOf<Coord>(hi, low) : farEdgeMinus(lo);
     }
+    /// The high parts of the pairs entryDistance and exitDistance return, bit for bit, without
+    /// their low parts (double frames; the tile screen of fast_frame.h). A pair's high part is
+    /// the last TwoSum's sum: fl(a - b) for a difference of doubles, and for the far edge
+    /// fl(high - e) when highLow == 0, otherwise fl(s.hi + (s.lo + highLow)) with s the TwoSum of
+    /// high and -e: the same operations on the same operands as farEdgeMinus, minus the error
+    /// terms. Negation is exact, so the sign flip of minusFarEdge commutes with it.
+    [[nodiscard, gnu::always_inline]] double farEdgeMinusHigh(double e) const noexcept {
+        if (highLow == 0) return high - e;
+        const ExactPair s = twoSum(high, -e);
+        return s.hi + (s.lo + highLow);
+    }
+    [[nodiscard, gnu::always_inline]] double entryDistanceHigh(double lo, double hi) const noexcept {
+        return dir > 0 ? -farEdgeMinusHigh(lo) : low - hi;
+    }
+    [[nodiscard, gnu::always_inline]] double exitDistanceHigh(double lo, double hi) const noexcept {
+        return dir > 0 ? hi - low : farEdgeMinusHigh(lo);
+    }
     /// Open overlap of the box's projection at t = 0 with [lo, hi] (overlapsOpen, axis_sweep.h).
     [[nodiscard, gnu::always_inline]] bool overlapsAtStart(double lo, double hi) const noexcept {
         return overlapsOpen([&] { return compare(low, hi); }, [&] { return compare(farEdge(), lo); });

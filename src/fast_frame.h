@@ -169,10 +169,27 @@ public:
         return estimateCells(lowAt, highAt, w.margin, ms.cells);
     }
 
+    /// axis_sweep.h's test of tile (i, j). On double frames whose box moves on both axes the
+    /// screen below answers first, from the distances' high parts alone; it builds an exact
+    /// pair only for the entry of a tile that blocks (its time is compared with other hits).
     TileTest<Coord, double> testTile(std::int64_t i, std::int64_t j) noexcept {
         const Motion& mx = axis_[0];
         const Motion& my = axis_[1];
-        return detail::testTile(mx, my, mx.edge(i), mx.edge(i + 1), my.edge(j), my.edge(j + 1), refined_);
+        const double xlo = mx.edge(i);
+        const double xhi = mx.edge(i + 1);
+        const double ylo = my.edge(j);
+        const double yhi = my.edge(j + 1);
+        if constexpr (std::is_same<Coord, ExactPair>::value) {
+            TileVerdict verdict = TileVerdict::Misses;
+            if (mx.dir != 0 && my.dir != 0 && screenTile(mx, my, xlo, xhi, ylo, yhi, verdict)) {
+                if (verdict == TileVerdict::BlocksOnX)
+                    return {verdict, {mx.entryDistance(xlo, xhi), mx.speed}};
+                if (verdict == TileVerdict::BlocksOnY)
+                    return {verdict, {my.entryDistance(ylo, yhi), my.speed}};
+                return {verdict, {}};
+            }
+        }
+        return detail::testTile(mx, my, xlo, xhi, ylo, yhi, refined_);
     }
 
     bool roundTime(const Time& t, T& out) noexcept {
@@ -249,6 +266,50 @@ public:
     }
 
 private:
+    /// The tile test of a double frame on a box that moves on both axes, screened: axis_sweep.h's
+    /// testTile evaluated on the high parts of its four distances (FastAxis::entryDistanceHigh,
+    /// exitDistanceHigh: bit for bit the high parts of the pairs it builds), up to the first
+    /// step where that test would read a low part; there the screen returns false and the exact
+    /// test runs from the start. Where it returns true, `verdict` is the exact test's, because
+    /// every step before is one the exact test decides from the same high parts:
+    ///   - signOf of a pair is the sign of its high part (hi = fl(value), which is zero only for
+    ///     a zero value);
+    ///   - compare(pair, speed) reads the low part only when hi == speed: hi > speed or
+    ///     hi < speed is the exact order (monotonic rounding), equality goes to the exact test;
+    ///   - compareProducts on pairs first runs pairProductFilter on fl(hi * speed), which reads
+    ///     no low part; its 0 (the band, where the exact refinement would run) goes to the exact
+    ///     test, so an exact tie (the Tie verdict) is never screened.
+    /// `refined` is untouched: the exact test sets it only beyond a step the screen defers.
+    /// No bound of its own: the only filter is compareProducts', derived in proof_constants.h.
+    /// Every fault of the tile test (axis_sweep.h) defers here, so that it reaches double frames.
+    static bool screenTile(const Motion& mx, const Motion& my, double xlo, double xhi, double ylo, double yhi,
+                           TileVerdict& verdict) noexcept {
+#if defined(TILESWEEP_FAULT_END_INCLUSIVE) || defined(TILESWEEP_FAULT_NO_CORNER_MISS) || \
+    defined(TILESWEEP_FAULT_DOUBLE_PREDICATE)
+        return false;
+#endif
+        const double ex = mx.entryDistanceHigh(xlo, xhi);
+        const double ey = my.entryDistanceHigh(ylo, yhi);
+        const double xx = mx.exitDistanceHigh(xlo, xhi);
+        const double xy = my.exitDistanceHigh(ylo, yhi);
+        verdict = TileVerdict::Misses;
+        if (ex < 0 && ey < 0) {
+            if (xx > 0 && xy > 0) verdict = TileVerdict::StartsOverlapping;
+            return true;
+        }
+        if (ex > mx.speed || ey > my.speed) return true;     // E > 1
+        if (ex == mx.speed || ey == my.speed) return false;  // the low part decides
+        // E < X on each axis (corner misses), then which axis enters later.
+        const int xAfterYExits = pairProductFilter(ex * my.speed, xy * mx.speed);
+        if (xAfterYExits >= 0) return xAfterYExits > 0;
+        const int yAfterXExits = pairProductFilter(ey * mx.speed, xx * my.speed);
+        if (yAfterXExits >= 0) return yAfterXExits > 0;
+        const int order = pairProductFilter(ex * my.speed, ey * mx.speed);
+        if (order == 0) return false;
+        verdict = order > 0 ? TileVerdict::BlocksOnX : TileVerdict::BlocksOnY;
+        return true;
+    }
+
     /// A margin of `ulps` units of u times `magnitude`, in cells (proof_constants.h).
     static double cellMargin(double ulps, double magnitude, double invTile) noexcept {
         return ulps * kUnitRoundoff * magnitude * invTile;
