@@ -135,7 +135,8 @@ template <class T>
     // (A negative size makes `largest` a field above 255, refused here too.)
     const int boxTop = static_cast<int>(largest >> 23);
     const int top = std::max(boxTop + 2, std::max(map.top[0], map.top[1]));
-    return map.admitted & positiveSizes & (lowest != 0) & floatSpanFits(top, 1, lowest);
+    const bool fits = floatSpanFits(top, 1, lowest);
+    return map.admitted & positiveSizes & (lowest != 0) & fits;
 }
 
 /// admitFloatFrame for a map not prepared: its range, then the frame's.
@@ -190,7 +191,8 @@ template <class T>
 
 /// Whether a double (its magnitude bits) is zero or within [2^-250, 2^251).
 [[nodiscard, gnu::always_inline]] inline bool inDoubleFrameRange(std::uint64_t magnitude) noexcept {
-    return (magnitude == 0) | fieldInDoubleFrameRange(magnitude);
+    const bool inRange = fieldInDoubleFrameRange(magnitude);
+    return (magnitude == 0) | inRange;
 }
 
 /// The unbiased exponent of a double's lowest set bit (its magnitude bits), 100000 for a zero so
@@ -225,9 +227,11 @@ template <class T>
         // |origin| + (cells + 2) * tile < 2^(max(eo + 1, et + 1 + cellBits) + 1).
         r.top[a] = std::max(fieldOf(o) + 1, fieldOf(t) + 1 + cellBits) + 1;
         r.lowest[a] = std::min(lowestBitOf(o), lowestBitOf(t));
-        admitted &= inDoubleFrameRange(o) & inDoubleFrameRange(t) &
-                    (r.top[a] <= r.lowest[a] + kFastSpanBits) &
-                    (fieldOf(o) - fieldOf(t) <= kDoubleFrameOriginTileBits);  // |origin| / tile < 2^47
+        const bool inRange = inDoubleFrameRange(o) && inDoubleFrameRange(t);
+        const bool exactEdges = r.top[a] <= r.lowest[a] + kFastSpanBits;
+        const bool nearOrigin =
+            fieldOf(o) - fieldOf(t) <= kDoubleFrameOriginTileBits;  // |origin| / tile < 2^47
+        admitted = admitted && inRange && exactEdges && nearOrigin;
         r.inverseTile[a] = 1 / tile[a];
     }
     r.admitted = admitted;
@@ -258,7 +262,9 @@ template <class T>
     const std::uint64_t least =
         std::min(std::min(std::min(x - 1, y - 1), std::min(w - 1, h - 1)), std::min(dx - 1, dy - 1)) + 1;
     // (All six zero would read field 0 and fail; zero sizes are turned away anyway.)
-    const bool inRange = fieldInDoubleFrameRange(largest) & fieldInDoubleFrameRange(least);
+    const bool largestInRange = fieldInDoubleFrameRange(largest);
+    const bool leastInRange = fieldInDoubleFrameRange(least);
+    const bool inRange = largestInRange & leastInRange;
     // The far edge's distances to tile edges (FastAxis::farEdgeMinus). With x, w the box's
     // position and size, h = fl(x + w) and h + l = x + w: |h| <= |x| + |w| < 2^boxTop; for an
     // edge e (|e| < 2^top), fl(h - e) = a with h - e = a + b, |a| < 2^(m + 1), m = max(top,
@@ -270,9 +276,10 @@ template <class T>
     const int boxTopY = static_cast<int>(std::max(y, h) >> 52) - 1023 + 2;
     const int lowestX = std::min(std::min(lowestBitOf(x), lowestBitOf(w)), map.lowest[0]);
     const int lowestY = std::min(std::min(lowestBitOf(y), lowestBitOf(h)), map.lowest[1]);
-    return map.admitted & inRange & (in.box.size.x > 0) & (in.box.size.y > 0) &
-           (std::max(map.top[0], boxTopX) <= lowestX + kDoubleFramePairSpanBits) &
-           (std::max(map.top[1], boxTopY) <= lowestY + kDoubleFramePairSpanBits);
+    const bool positiveSizes = (in.box.size.x > 0) & (in.box.size.y > 0);
+    const bool spanX = std::max(map.top[0], boxTopX) <= lowestX + kDoubleFramePairSpanBits;
+    const bool spanY = std::max(map.top[1], boxTopY) <= lowestY + kDoubleFramePairSpanBits;
+    return map.admitted & inRange & positiveSizes & spanX & spanY;
 }
 
 /// admitDoubleFrame for a map not prepared: its range, then the frame's.
