@@ -17,14 +17,11 @@ using detail::isPositive;
 namespace {
 
 template <class T>
-void prepare(const TileMapView<T>& map, MapError& error, Vec2<double>& inverse, detail::MapRange& range,
+void prepare(const TileMapView<T>& map, MapError& error, detail::MapRange& range,
              TileMapView<T>& view) noexcept {
     error = validateTileMap(map);
     view = map;
-    if (error == MapError::None) {
-        inverse = {1.0 / static_cast<double>(map.tileSize.x), 1.0 / static_cast<double>(map.tileSize.y)};
-        range = detail::mapRangeOf(map);
-    }
+    if (error == MapError::None) range = detail::mapRangeOf(map);
 }
 
 /// The input by reference, not a box and a displacement by value: a Vec2<double> by value arrives
@@ -124,13 +121,13 @@ MoveResult<T> moveAndSlideOf(const PreparedMap<T>& map, const MoveInput<T>& inpu
 
 PreparedMap<float> prepareMap(const TileMapView<float>& map) noexcept {
     PreparedMap<float> p;
-    prepare(map, p.error_, p.inverseTileSize_, p.range_, p.view_);
+    prepare(map, p.error_, p.range_, p.view_);
     return p;
 }
 
 PreparedMap<double> prepareMap(const TileMapView<double>& map) noexcept {
     PreparedMap<double> p;
-    prepare(map, p.error_, p.inverseTileSize_, p.range_, p.view_);
+    prepare(map, p.error_, p.range_, p.view_);
     return p;
 }
 

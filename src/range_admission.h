@@ -76,14 +76,6 @@ namespace tilesweep::detail {
     return least == 0 ? 255 : static_cast<int>(least >> 23);
 }
 
-/// The map's half of hasValidShape (validity.h): tile sizes > 0, dimensions sane, cells present.
-template <class T>
-[[nodiscard, gnu::always_inline]] inline bool mapHasValidShape(const TileMapView<T>& map) noexcept {
-    const std::int64_t cells = static_cast<std::int64_t>(map.columns) * map.rows;
-    return map.tileSize.x > 0 && map.tileSize.y > 0 && map.columns >= 0 && map.rows >= 0 &&
-           cells <= kMaxCells && (cells == 0 || map.solid != nullptr);
-}
-
 /// The float map's range (see the top of this file): top[a] is edgeTop on the axis, a biased
 /// field with |origin + k*tile| < 2^(top - 126) for |k| <= cells + 2; lowest[a] the least field
 /// of the axis's nonzero map inputs (255 when none is nonzero; 0 when one is subnormal, which

@@ -28,12 +28,18 @@ template <class T>
 /// The parts of validity that are not finiteness: box and tile sizes > 0, map dimensions sane,
 /// cells present. (The fast path's range tests imply finiteness: a NaN or an infinity has an
 /// exponent field of all ones.)
+/// The map's half of hasValidShape: tile sizes > 0, dimensions sane, cells present (the range
+/// test's map half, range_admission.h, uses it alone).
+template <class T>
+[[nodiscard]] inline bool mapHasValidShape(const TileMapView<T>& map) noexcept {
+    const std::int64_t cells = static_cast<std::int64_t>(map.columns) * map.rows;
+    return map.tileSize.x > 0 && map.tileSize.y > 0 && map.columns >= 0 && map.rows >= 0 &&
+           cells <= kMaxCells && (cells == 0 || map.solid != nullptr);
+}
+
 template <class T>
 [[nodiscard]] inline bool hasValidShape(const ResolveInput<T>& in) noexcept {
-    const TileMapView<T>& map = in.map;
-    const std::int64_t cells = static_cast<std::int64_t>(map.columns) * map.rows;
-    return in.box.size.x > 0 && in.box.size.y > 0 && map.tileSize.x > 0 && map.tileSize.y > 0 &&
-           map.columns >= 0 && map.rows >= 0 && cells <= kMaxCells && (cells == 0 || map.solid != nullptr);
+    return in.box.size.x > 0 && in.box.size.y > 0 && mapHasValidShape(in.map);
 }
 
 /// Whether every number of the input is finite, without a libm call: v - v is +0 for a finite v

@@ -58,7 +58,9 @@ public:
     /// True when the map passed validateTileMap: moves through it can be resolved.
     [[nodiscard]] bool isValid() const noexcept { return error_ == MapError::None; }
     /// 1 / tile size, rounded: only for estimating cell ranges (always widened before use).
-    [[nodiscard]] Vec2<double> inverseTileSize() const noexcept { return inverseTileSize_; }
+    [[nodiscard]] Vec2<double> inverseTileSize() const noexcept {
+        return {range_.inverseTile[0], range_.inverseTile[1]};
+    }
     /// Internal: the map's half of the resolver's range test, computed once here instead of
     /// every frame (src/range_admission.h reads it).
     [[nodiscard]] const detail::MapRange& mapRange() const noexcept { return range_; }
@@ -69,8 +71,7 @@ private:
 
     TileMapView<T> view_{};
     MapError error_ = MapError::NotPrepared;
-    Vec2<double> inverseTileSize_{0, 0};
-    detail::MapRange range_{};
+    detail::MapRange range_{};  // with the tile reciprocals (inverseTileSize)
 };
 
 /// Validates `map` once (validateTileMap: O(columns + rows)) and keeps it for every frame.
