@@ -180,20 +180,57 @@ template <class T>
 #endif
 }
 
-/// The next float or double above (up = true) or below a finite one, by its bits (the least
-/// subnormal, with its sign, from a zero); never crosses the largest finite value (the callers'
-/// ranges keep well inside it).
+/// v moved by `steps` (-1, 0 or 1) representable values: the next float or double above (1) or
+/// below (-1) a finite one (the least subnormal, with its sign, from a zero), or v itself (0).
+/// By integer arithmetic alone, without a branch: the bits map to integers that order like the
+/// values (a magnitude's bits, negated for a negative value, so that both zeros map to 0), which
+/// move by `steps` and map back; no step keeps v's bits (a -0 too). Past the largest finite value it gives
+/// the infinity of that sign (final_rounding.h tests for it).
 template <class T>
-[[nodiscard]] inline T stepScalar(T v, bool up) noexcept {
+[[nodiscard, gnu::always_inline]] inline T stepBy(T v, int steps) noexcept {
     using Bits = std::conditional_t<sizeof(T) == sizeof(std::uint32_t), std::uint32_t, std::uint64_t>;
+    using Ordered = std::make_signed_t<Bits>;
     static_assert(sizeof(Bits) == sizeof(T), "float or double");
-    if (v == 0) return up ? std::numeric_limits<T>::denorm_min() : -std::numeric_limits<T>::denorm_min();
+    constexpr int kSignShift = 8 * sizeof(Bits) - 1;
+    constexpr Bits kSign = Bits{1} << kSignShift;
     Bits bits = 0;
     std::memcpy(&bits, &v, sizeof bits);
-    const bool away = (v > 0) == up;  // magnitude grows
-    bits = away ? bits + 1 : bits - 1;
+    const auto magnitude = static_cast<Ordered>(bits & ~kSign);
+    const auto negative = static_cast<Ordered>(Bits{0} - (bits >> kSignShift));  // all ones or zero
+    const Ordered next = ((magnitude ^ negative) - negative) + steps;
+    const auto nextNegative = static_cast<Ordered>(Bits{0} - (static_cast<Bits>(next) >> kSignShift));
+    // A zero reached from a negative value is -0 (as std::nextafter has it).
+    const Bits zeroFromBelow = (Bits{0} - static_cast<Bits>(next == 0)) & static_cast<Bits>(negative);
+    const Bits moved = static_cast<Bits>((next ^ nextNegative) - nextNegative) |
+                       ((static_cast<Bits>(nextNegative) | zeroFromBelow) & kSign);
+    const Bits kept = Bits{0} - static_cast<Bits>(steps == 0);  // no step: v itself, -0 too
+    bits = (bits & kept) | (moved & ~kept);
     std::memcpy(&v, &bits, sizeof bits);
     return v;
+}
+
+/// stepBy for a nonzero v (or steps = 0), in three operations: the bits themselves move by
+/// `steps`, negated for a negative v (whose bits grow with its magnitude). Past the largest
+/// finite value it gives the infinity, and one step toward zero from an infinity the largest
+/// finite value; a step onto zero gives the zero of v's sign. From a zero it is wrong, which is
+/// why final_rounding.h's neighbors are never zero when they are stepped.
+template <class T>
+[[nodiscard, gnu::always_inline]] inline T stepFromNonzero(T v, int steps) noexcept {
+    using Bits = std::conditional_t<sizeof(T) == sizeof(std::uint32_t), std::uint32_t, std::uint64_t>;
+    static_assert(sizeof(Bits) == sizeof(T), "float or double");
+    constexpr int kSignShift = 8 * sizeof(Bits) - 1;
+    Bits bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    const Bits negative = Bits{0} - (bits >> kSignShift);  // all ones or zero
+    bits += (static_cast<Bits>(steps) ^ negative) - negative;
+    std::memcpy(&v, &bits, sizeof bits);
+    return v;
+}
+
+/// The next float or double above (up = true) or below a finite one (stepBy).
+template <class T>
+[[nodiscard, gnu::always_inline]] inline T stepScalar(T v, bool up) noexcept {
+    return stepBy(v, up ? 1 : -1);
 }
 /// stepScalar on a double.
 [[nodiscard]] inline double stepDouble(double v, bool up) noexcept { return stepScalar(v, up); }
@@ -218,13 +255,33 @@ template <class T>
     return u;
 }
 
+/// `a` when `choose` holds, else `b`, by a mask on their bits: no branch on `choose` (a
+/// comparison of values the data decide, which a branch would mispredict at random).
+template <class T>
+[[nodiscard, gnu::always_inline]] inline T selectValue(bool choose, T a, T b) noexcept {
+    using Bits = std::conditional_t<sizeof(T) == sizeof(std::uint32_t), std::uint32_t, std::uint64_t>;
+    static_assert(sizeof(Bits) == sizeof(T), "float or double");
+    Bits x = 0;
+    Bits y = 0;
+    std::memcpy(&x, &a, sizeof x);
+    std::memcpy(&y, &b, sizeof y);
+    const Bits mask = Bits{0} - static_cast<Bits>(choose);
+    const Bits chosen = (x & mask) | (y & ~mask);
+    T v;
+    std::memcpy(&v, &chosen, sizeof v);
+    return v;
+}
+
 /// The exact double v rounded to float toward minus infinity (down) or plus infinity. The
-/// conversion rounds to nearest, correctly (IEEE 754); one step fixes the direction.
-[[nodiscard]] inline float roundToFloat(double v, bool up) noexcept {
+/// conversion rounds to nearest, correctly (IEEE 754); one step fixes the direction, taken by
+/// arithmetic (stepBy), without a branch: the side of v its nearest float falls on is the data's.
+[[nodiscard, gnu::always_inline]] inline float roundToFloat(double v, bool up) noexcept {
     const auto f = static_cast<float>(v);
     const auto back = static_cast<double>(f);
-    if (up ? back < v : back > v) return stepFloat(f, up);
-    return f;
+    const int below = static_cast<int>(back < v);  // the nearest float is below v: up steps up
+    const int above = static_cast<int>(back > v);  // above v: down steps down
+    const int upward = static_cast<int>(up);
+    return stepBy(f, (upward & below) - ((1 - upward) & above));
 }
 
 }  // namespace tilesweep::detail

@@ -210,18 +210,34 @@ public:
         return roundPositionAtTime<T>(axis_[a].low, axis_[a].disp, t.num, t.den, refined_, out);
     }
 
-    // The final rounding (final_rounding.h). A zero reads +0 (exact + 0.0), as the lattice's
-    // zero does.
+    // The final rounding (final_rounding.h), without a branch on the data: which side of the
+    // start the end lies on, which side of it its nearest value lies on, and where the grid
+    // lines are are the data's, and a branch on each would mispredict at random. A zero reads
+    // +0 (exact + 0.0), as the lattice's zero does.
     int compareWithStart(const Coord& exact, int a) const noexcept {
-        return compare(exact, static_cast<double>(start_[a]));
-    }
-    T roundDirected(const Coord& exact, bool up) const noexcept {
+        const auto start = static_cast<double>(start_[a]);
         if constexpr (std::is_same<T, float>::value) {
-            return roundToFloat(exact + 0.0, up);
+            return static_cast<int>(exact > start) - static_cast<int>(exact < start);
         } else {
-            const double hi = exact.hi + 0.0;
-            if (up) return exact.lo > 0 ? stepDouble(hi, true) : hi;
-            return exact.lo < 0 ? stepDouble(hi, false) : hi;
+            // The high parts first (monotonic rounding, the start representable); on a tie, the low part.
+            const int byHigh = static_cast<int>(exact.hi > start) - static_cast<int>(exact.hi < start);
+            const int byLow = static_cast<int>(exact.lo > 0) - static_cast<int>(exact.lo < 0);
+            return byHigh + static_cast<int>(byHigh == 0) * byLow;
+        }
+    }
+    /// The nearest value, and its side of the exact one: float frames convert the exact double
+    /// (rounding to nearest, correctly) and compare back; double frames have it in the pair (the
+    /// high part, the low part's sign the other way). Nonzero when not exact: a nonzero exact
+    /// double of a float frame is at least 2^-149 in magnitude (a multiple of the least input's
+    /// ulp), so its nearest float is not zero; a pair whose high part is zero is zero.
+    Neighbor<T> neighborOf(const Coord& exact) const noexcept {
+        if constexpr (std::is_same<T, float>::value) {
+            const double v = exact + 0.0;
+            const auto nearest = static_cast<float>(v);
+            const auto back = static_cast<double>(nearest);
+            return {nearest, static_cast<int>(back > v) - static_cast<int>(back < v)};
+        } else {
+            return {exact.hi + 0.0, static_cast<int>(exact.lo < 0) - static_cast<int>(exact.lo > 0)};
         }
     }
     T roundNearest(const Coord& exact) const noexcept {
@@ -231,37 +247,39 @@ public:
             return exact.hi + 0.0;
         }
     }
-    bool isExactly(const Coord& exact, T v) const noexcept {
-        if constexpr (std::is_same<T, float>::value) {
-            return static_cast<double>(v) == exact;
-        } else {
-            (void)v;
-            return exact.lo == 0;  // the pair's high part is the rounded value
-        }
-    }
-    /// Whether a grid line lies in [exact + size, rounded + size). Float frames: every value is
-    /// an exact double, and FastAxis::hasLineIn decides. Double frames: filtered. The grid
-    /// coordinate of the far edge is estimated and widened by a reach (kGridLineReachUlps and
-    /// the width terms, derived in proof_constants.h); when the widened interval holds no
-    /// integer there is no line (decided); otherwise the lattice settles it.
-    LineTest gridLineAhead(const Coord& exact, T rounded, int a) const noexcept {
+    /// Whether a grid line lies in [exact + size, up + size), up the value just above exact, read
+    /// only when `needed`. A filter answers first, on every axis: z, the far edge's grid
+    /// coordinate, estimated, and the reach of that estimate plus the interval's width (in
+    /// cells); when the nearest integer to z lies beyond the reach, no line is in the interval.
+    /// Otherwise, when needed (rarely: the far edge ends within the reach of a line), float
+    /// frames take FastAxis::hasLineIn, exact on their exact doubles, and double frames go to the
+    /// lattice (Undecided).
+    ///   Float frames: exact + size and its difference with the origin are exact doubles, so z
+    ///   errs by the reciprocal's and the product's roundings alone (kFloatLineReachRelative).
+    ///   Double frames: the pair's low part is left out (kGridLineReachUlps).
+    LineTest gridLineAhead(const Coord& exact, int a, bool needed) const noexcept {
         const Motion& m = axis_[a];
         if constexpr (std::is_same<T, float>::value) {
-            return m.hasLineIn(exact + m.size, static_cast<double>(rounded) + m.size) ? LineTest::Yes
-                                                                                      : LineTest::No;
+            const double far = exact + m.size;
+            const double fromOrigin = far - m.origin;
+            const double z = fromOrigin * m.invTile;
+            const double reach =
+                (kFloatLineReachRelative * ((std::fabs(far) + m.size) + std::fabs(fromOrigin)) +
+                 kFloatLineReachLeast) *
+                m.invTile;
+            const bool clear = lineFree(z, reach);
+            if (needed & !clear) {
+                const auto up = static_cast<double>(roundToFloat(exact + 0.0, true));
+                return m.hasLineIn(far, up + m.size) ? LineTest::Yes : LineTest::No;
+            }
+            return LineTest::No;
         } else {
             const double hi = exact.hi + 0.0;
             const double z = ((hi + m.size) - m.origin) * m.invTile;
-            const double reach =
-                kGridLineReachUlps * kUnitRoundoff * ((std::fabs(hi) + m.size) + std::fabs(m.origin)) *
-                    m.invTile +
-                kGridLineWidthFactor * (std::fabs(rounded - hi) + std::fabs(exact.lo)) * m.invTile;
-            if (!(std::fabs(z) < kGridLineReachLimit)) return LineTest::Undecided;
-            // No line when [z - reach, z + reach] lies inside one open cell (k, k + 1): then it
-            // holds no integer. With z in it, k can only be floor(z), so one floor decides.
-            const auto k = static_cast<double>(floorToInt(z));
-            if (z - reach > k && z + reach < k + 1) return LineTest::No;
-            return LineTest::Undecided;
+            const double reach = kGridLineReachUlps * kUnitRoundoff *
+                                 ((std::fabs(hi) + m.size) + std::fabs(m.origin)) * m.invTile;
+            const bool clear = lineFree(z, reach);
+            return (needed & !clear) ? LineTest::Undecided : LineTest::No;
         }
     }
 
@@ -308,6 +326,17 @@ private:
         if (order == 0) return false;
         verdict = order > 0 ? TileVerdict::BlocksOnX : TileVerdict::BlocksOnY;
         return true;
+    }
+
+    /// Whether [z - reach, z + reach] holds no integer, for |z| below kGridLineReachLimit (false
+    /// beyond it, and for a NaN): the integer nearest z, by the shift that rounds |z| < 2^51 to
+    /// an integer (kNearestIntegerShift), lies farther than reach from z. Exact comparisons of
+    /// exact values (z - nearest is exact: they are within half a unit of each other).
+    [[gnu::always_inline]] static bool lineFree(double z, double reach) noexcept {
+        const double nearest = (z + kNearestIntegerShift) - kNearestIntegerShift;
+        const bool inLimit = std::fabs(z) < kGridLineReachLimit;
+        const bool beyondReach = std::fabs(z - nearest) > reach;
+        return inLimit & beyondReach;
     }
 
     /// A margin of `ulps` units of u times `magnitude`, in cells (proof_constants.h).

@@ -10,11 +10,14 @@
 // does not. When nothing finite lies at or below the exact value, the rounding toward the start
 // stands.
 //
-// The arithmetic provides start(a) and compareWithStart(exact, a) (the sign of exact - start),
-// roundDirected(exact, up) and roundNearest(exact) to the scalar type, isExactly(exact, v), and
-// gridLineAhead(exact, rounded, a): whether a grid line lies in [exact + size, rounded + size),
-// as LineTest (Undecided sends the frame to the lattice).
+// The arithmetic provides start(a), compareWithStart(exact, a) (the sign of exact - start),
+// neighborOf(exact) (a Neighbor: a value next to the exact one) and, for a deliberate fault,
+// roundNearest(exact), and gridLineAhead(exact, a, needed): whether a grid line lies in
+// [exact + size, up + size), up being exact rounded toward plus infinity, as LineTest. Its
+// answer is read only when `needed`; it must then be No, Yes or Undecided (which sends the frame
+// to the lattice), and otherwise No.
 
+#include "exact_double.h"
 #include "fault_injection.h"
 
 #include <cmath>
@@ -24,35 +27,51 @@ namespace tilesweep::detail {
 /// The answer of a grid-line test that may be filtered.
 enum class LineTest { No, Yes, Undecided };
 
+/// A representable value next to an exact one: `value` is the exact value itself (side 0), or
+/// one of the two values on either side of it (side +1 when above it, -1 when below), so that
+/// the other one is stepFromNonzero(value, -side) (exact_double.h): then it is never zero.
+template <class T>
+struct Neighbor {
+    T value;
+    int side;
+};
+
 /// The exact final coordinate `exact` on axis `a`, rounded as the contract asks, into `out`;
 /// false when the arithmetic could not decide the grid-line test.
+///
+/// Written without a branch on the data: the side of the start, the side of the exact value
+/// its neighbor lies on and where the grid lines are are the data's, and a branch on each would
+/// mispredict at random on a game's frames. The grid-line test is asked on every axis (cheap,
+/// with its exact part behind a rare branch inside the arithmetic); the rounding is then the
+/// neighbor moved by at most one step.
 template <class Arith, class Coord, class T>
 [[nodiscard, gnu::always_inline]] inline bool roundFinal(const Arith& m, const Coord& exact, int a,
                                                          T& out) noexcept {
     const int side = m.compareWithStart(exact, a);
-    if (side == 0) {
-        out = m.start(a);
-        return true;
-    }
 #if defined(TILESWEEP_FAULT_ROUND_NEAREST)
-    const T towardStart = m.roundNearest(exact);  // deliberate fault: to nearest, not toward the start
+    const Neighbor<T> near{m.roundNearest(exact), 0};  // deliberate fault: to nearest, not toward the start
 #else
-    const T towardStart = m.roundDirected(exact, side < 0);
+    const Neighbor<T> near = m.neighborOf(exact);
 #endif
-    out = towardStart;
-#if !defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE)  // the fault keeps the rule before the amendment
-    if (side > 0 || m.isExactly(exact, towardStart)) return true;  // not toward -inf, or exact
-    switch (m.gridLineAhead(exact, towardStart, a)) {
-        case LineTest::No:
-            return true;
-        case LineTest::Undecided:
-            return false;
-        case LineTest::Yes:
-            break;
-    }
-    const T down = m.roundDirected(exact, false);
-    if (std::isfinite(down)) out = down;
+    const int above = static_cast<int>(near.side > 0);  // down is then one step below it
+    const int below = static_cast<int>(near.side < 0);  // up is then one step above it
+#if defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE)
+    const int useDown = static_cast<int>(side > 0);  // the fault keeps the rule before the amendment
+#else
+    // Toward the start: down when the end lies above it, up when below; the amended rule applies
+    // on an axis that moved toward minus infinity, to an end no value represents.
+    const bool ruleApplies = (side < 0) & (near.side != 0);
+    const LineTest line = m.gridLineAhead(exact, a, ruleApplies);
+    if (line == LineTest::Undecided) return false;
+    const int useDown = static_cast<int>(side > 0) |
+                        (static_cast<int>(ruleApplies) & static_cast<int>(line == LineTest::Yes));
 #endif
+    const int steps = (-useDown & -above) | ((useDown - 1) & below);
+    T rounded = stepFromNonzero(near.value, steps);  // no step (0) unless near.value is nonzero
+    // Nothing finite at or below the exact value: the rounding toward the start (up) stands.
+    if (!std::isfinite(rounded)) rounded = stepFromNonzero(near.value, below);
+    // At the start (side 0) the start itself: the same value, with the start's sign of zero.
+    out = selectValue(side == 0, m.start(a), rounded);
     return true;
 }
 

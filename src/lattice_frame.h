@@ -175,22 +175,28 @@ public:
 
     // The final rounding (final_rounding.h).
     int compareWithStart(const Num& exact, int a) const noexcept { return compare(exact, motion_[a].low); }
+    /// The rounding away from zero: nonzero whenever exact is not representable.
+    Neighbor<T> neighborOf(const Num& exact) const noexcept {
+        const T away = roundLattice<T>(exact, exponent_, MagnitudeRounding::AwayFromZero);
+        if (roundLattice<T>(exact, exponent_, MagnitudeRounding::TowardZero) == away) return {away, 0};
+        return {away, exact.isNegative() ? -1 : 1};
+    }
+    T roundNearest(const Num& exact) const noexcept {
+        return roundLattice<T>(exact, exponent_, MagnitudeRounding::NearestEven);
+    }
+    LineTest gridLineAhead(const Num& exact, int a, bool needed) const noexcept {
+        if (!needed) return LineTest::No;
+        const Num size = motion_[a].high - motion_[a].low;
+        const Num up = lattice(decompose(roundDirected(exact, true)));
+        return grid_[a].hasLineIn(exact + size, up + size) ? LineTest::Yes : LineTest::No;
+    }
+
+private:
     T roundDirected(const Num& exact, bool up) const noexcept {
         return roundLattice<T>(
             exact, exponent_,
             up != exact.isNegative() ? MagnitudeRounding::AwayFromZero : MagnitudeRounding::TowardZero);
     }
-    T roundNearest(const Num& exact) const noexcept {
-        return roundLattice<T>(exact, exponent_, MagnitudeRounding::NearestEven);
-    }
-    bool isExactly(const Num& exact, T v) const noexcept { return lattice(decompose(v)) == exact; }
-    LineTest gridLineAhead(const Num& exact, T rounded, int a) const noexcept {
-        const Num size = motion_[a].high - motion_[a].low;
-        return grid_[a].hasLineIn(exact + size, lattice(decompose(rounded)) + size) ? LineTest::Yes
-                                                                                    : LineTest::No;
-    }
-
-private:
     Num lattice(Dyadic v) const noexcept { return toLattice<Num>(v, exponent_); }
     CellRange clamped(int a, const Num& low, const Num& high) const noexcept {
         const GridAxis<Num>& g = grid_[a];

@@ -87,26 +87,46 @@ inline constexpr double kTimeRemainderErrorUlps = 3;
 
 // ---- the grid-line test of a double frame's final position -----------------------------------
 
-/// Reach of the filtered grid-line test of roundFinal on exact pairs (time_rounding.h), in
-/// units of u times A / tile, A = |hi| + size + |origin|. The grid coordinate of the far edge,
+/// Reach of the filtered grid-line test of roundFinal on exact pairs (FastFrame::gridLineAhead),
+/// in units of u times A / tile, A = |hi| + size + |origin|. The grid coordinate of the far edge,
 /// z = fl(fl(fl(hi + size) - origin) * fl(1 / tile)), is within 4.1uA / tile of (hi + size -
 /// origin) / tile (two rounded sums, the reciprocal and the product), and the pair's low part lo
-/// (left out) moves the exact value by |lo| / tile more. The interval to search, [exact,
-/// rounded) + size, spans (|rounded - hi| + |lo|) / tile from there. So the reach must be at
-/// least 4.1uA / tile + (|rounded - hi| + 2|lo|) / tile, plus the roundings of the reach itself
-/// (six operations, relative 6.1u of it) and of z -+ reach (u|z| + u reach <= 1.01uA / tile +
-/// u reach). The code takes 16u A / tile + 2(|rounded - hi| + |lo|) / tile: 16 against the
-/// 5.2 needed, and the factor 2 on the widths against the 1 (|rounded - hi|) and 2 (|lo|)
-/// needed, covering the reach's own roundings. A larger reach only sends more frames to the
-/// lattice (the test then says "may hold a line"); it never changes a result.
-inline constexpr double kGridLineReachUlps = 16;
-/// The width terms of the same reach: twice (|rounded - hi| + |lo|) / tile (see above).
-inline constexpr double kGridLineWidthFactor = 2;
-/// The same test only runs for |z| < 2^40. Since |origin| < 2^47 tiles (admitDoubleFrame), it
-/// keeps A / tile below 2^48, so the reach stays below 2 cells and z -+ reach inside floorToInt's
-/// |v| < 2^62, and the doubles near z still resolve 2^-12 of a cell. Any limit up to 2^52 would
-/// be as sound; a larger z (or a NaN) goes to the lattice.
+/// (left out) moves the exact value by |lo| / tile more. The interval to search, [exact, up) +
+/// size, up the double just above the exact value, spans at most (|up - hi| + |lo|) / tile from
+/// there. With |lo| <= u|hi| <= uA and |up - hi| <= ulp(hi) <= 2u|hi| <= 2uA, the reach must be
+/// at least (4.1 + 2 + 2)uA / tile = 8.1uA / tile; the test (FastFrame::lineFree) compares it
+/// exactly with z's distance to the nearest integer. The code takes 20uA / tile, computed in five
+/// operations (at least (1 - 5.1u) of its exact value). A larger reach only sends more frames to
+/// the lattice (the test then says "may hold a line"); it never changes a result.
+inline constexpr double kGridLineReachUlps = 20;
+/// The same test, and the float frames' (kFloatLineReachRelative), only run for |z| < 2^40, where
+/// the shift below finds the nearest integer exactly, and the doubles near z still resolve 2^-12
+/// of a cell (for double frames, |origin| < 2^47 tiles by admitDoubleFrame keeps A / tile below
+/// 2^48, so the reach stays below 2 cells). Any limit up to 2^51 would be as sound; a larger z
+/// (or a NaN) is not filtered: double frames go to the lattice, float frames to the exact test.
 inline constexpr double kGridLineReachLimit = 0x1p40;
+
+/// 1.5 * 2^52: for |z| < 2^51, fl(z + shift) lies in [2^52, 2^53), where the doubles are the
+/// integers, so it is shift + (z rounded to an integer, to nearest), and subtracting the shift is
+/// exact. The grid-line filters (FastFrame::lineFree) take the integer nearest z this way, for
+/// |z| < kGridLineReachLimit, without a conversion to an integer register.
+inline constexpr double kNearestIntegerShift = 0x1.8p52;
+
+/// The reach of a float frame's grid-line filter (FastFrame::gridLineAhead), in cells: R =
+/// (2^-22 (|far| + size + |far - origin|) + 2^-148) / tile, computed with the reciprocal. There
+/// far = exact + size and far - origin are exact doubles (range_admission.h), so the estimate
+/// z = fl((far - origin) * fl(1 / tile)) is within (2u + u^2)|far - origin| / tile of the exact
+/// grid coordinate Z. The interval searched, [far, up + size), is W = (up - exact) / tile wide,
+/// up being the float just above an exact value no float represents, so up - exact is below the
+/// float spacing there: 2^-23|exact| + 2^-149 at most (2^-149 below float's normal range), with
+/// |exact| <= |far| + size. When no integer lies within R' = (2u + u^2)|far - origin| / tile + W
+/// of z, every integer m has |m - Z| > W, so none lies in [Z, Z + W]: no line. The code's R, computed by
+/// three rounded sums and a rounded product (at least (1 - u)^4 of its exact value), exceeds R' with room:
+/// 2^-22 (1 - u)^4 > 2^-23 + 2u + u^2, and 2^-148 (1 - u)^4 > 2^-149. A larger reach only sends more frames
+/// to the exact test (FastAxis::hasLineIn); it never changes a result.
+inline constexpr double kFloatLineReachRelative = 0x1p-22;
+/// The least term of the same reach, for ends below float's normal range (see above).
+inline constexpr double kFloatLineReachLeast = 0x1p-148;
 
 // ---- range admission -------------------------------------------------------------------------
 

@@ -18,7 +18,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <random>
+#include <vector>
 
 namespace tilesweep::detail {
 namespace {
@@ -320,6 +322,89 @@ TEST(ExactPrimitives, roundsDoubleTimesNextToAFloatMidpointCorrectly) {
         refinedCount += refined ? 1 : 0;
     }
     EXPECT_GT(refinedCount, 3000) << "too few times landed on a float midpoint";
+}
+
+/// The bits of a float or a double, to compare values with their sign of zero.
+template <class T>
+std::uint64_t bitsOf(T v) {
+    if constexpr (sizeof(T) == 4) {
+        std::uint32_t b = 0;
+        std::memcpy(&b, &v, sizeof b);
+        return b;
+    } else {
+        std::uint64_t b = 0;
+        std::memcpy(&b, &v, sizeof b);
+        return b;
+    }
+}
+
+/// stepBy and stepFromNonzero (the branch-free steps of the rounding) against std::nextafter, on values of
+/// every kind its callers can meet and some they cannot: zeros of both signs, subnormals, both
+/// signs of normal values, and the largest finite value (one step past it is the infinity).
+template <class T>
+void stepByMatchesNextafter() {
+    std::mt19937_64 rng(91);
+    constexpr T inf = std::numeric_limits<T>::infinity();
+    std::vector<T> values = {T(0),
+                             -T(0),
+                             std::numeric_limits<T>::denorm_min(),
+                             -std::numeric_limits<T>::denorm_min(),
+                             std::numeric_limits<T>::min(),
+                             -std::numeric_limits<T>::min(),
+                             std::numeric_limits<T>::max(),
+                             -std::numeric_limits<T>::max(),
+                             T(1),
+                             T(-1)};
+    for (int k = 0; k < 20000; ++k) {
+        const double v = randomDouble(rng, sizeof(T) == 4 ? -150 : -1075, sizeof(T) == 4 ? 126 : 1022);
+        values.push_back(static_cast<T>(v));
+    }
+    // From the infinities, one step toward zero is the largest finite value.
+    ASSERT_EQ(stepFromNonzero(inf, -1), std::numeric_limits<T>::max());
+    ASSERT_EQ(stepFromNonzero(-inf, 1), -std::numeric_limits<T>::max());
+    int negatives = 0;
+    int zeros = 0;
+    for (const T v : values) {
+        ASSERT_EQ(bitsOf(stepBy(v, 0)), bitsOf(v)) << std::hexfloat << v;
+        ASSERT_EQ(bitsOf(stepBy(v, 1)), bitsOf(std::nextafter(v, inf))) << std::hexfloat << v;
+        ASSERT_EQ(bitsOf(stepBy(v, -1)), bitsOf(std::nextafter(v, -inf))) << std::hexfloat << v;
+        // The final rounding's step, from a nonzero value (and no step from any).
+        ASSERT_EQ(bitsOf(stepFromNonzero(v, 0)), bitsOf(v)) << std::hexfloat << v;
+        if (v != 0) {
+            ASSERT_EQ(bitsOf(stepFromNonzero(v, 1)), bitsOf(std::nextafter(v, inf))) << std::hexfloat << v;
+            ASSERT_EQ(bitsOf(stepFromNonzero(v, -1)), bitsOf(std::nextafter(v, -inf))) << std::hexfloat << v;
+        }
+        negatives += std::signbit(v) ? 1 : 0;
+        zeros += v == 0 ? 1 : 0;
+    }
+    EXPECT_GT(negatives, 5000);
+    EXPECT_GE(zeros, 2);
+}
+
+TEST(Step, MatchesNextafterOnFloats) { stepByMatchesNextafter<float>(); }
+TEST(Step, MatchesNextafterOnDoubles) { stepByMatchesNextafter<double>(); }
+
+/// roundToFloat (the fast path's directed rounding of an exact double) against the exact order:
+/// rounded up, the float is at or above v and the float below it is below v; rounded down, the
+/// mirror. On doubles with full significands (nearly all inexact as floats) and on floats
+/// (exact), of both signs, across float's normal and subnormal ranges.
+TEST(RoundToFloat, IsTheDirectedRounding) {
+    std::mt19937_64 rng(17);
+    int inexact = 0;
+    for (int k = 0; k < 200000; ++k) {
+        double v = randomDouble(rng, -140, 120);
+        if (k % 4 == 0) v = static_cast<double>(static_cast<float>(v));  // a float: exact either way
+        const float up = roundToFloat(v, true);
+        const float down = roundToFloat(v, false);
+        ASSERT_GE(static_cast<double>(up), v) << std::hexfloat << v;
+        ASSERT_LT(static_cast<double>(std::nextafter(up, -std::numeric_limits<float>::infinity())), v)
+            << std::hexfloat << v;
+        ASSERT_LE(static_cast<double>(down), v) << std::hexfloat << v;
+        ASSERT_GT(static_cast<double>(std::nextafter(down, std::numeric_limits<float>::infinity())), v)
+            << std::hexfloat << v;
+        inexact += up != down ? 1 : 0;
+    }
+    EXPECT_GT(inexact, 140000);
 }
 
 }  // namespace

@@ -377,6 +377,25 @@ TYPED_TEST(Resolve, diagonalIntoCornerHitsFloorThenWall) {
 }
 
 // Bad input never yields a result: NaN, infinities, non-positive sizes.
+// The sign of zero (the oracle's rule, oracle/README.md): an axis whose exact end equals its start
+// gives the start's own bits, so a box at x = -0 that moves on y alone stays at -0; any other zero
+// end is +0 (1 - 1 = +0 exactly, below the start: rounded toward it, the zero itself).
+TYPED_TEST(Resolve, keepsTheStartsSignOfZeroOnAStillAxis) {
+    using T = TypeParam;
+    Level<T> level({"....", "....", "...."});
+    const Frame<T> still = resolve<T>(level, {{-T(0), 5}, {4, 4}}, {0, 3});
+    EXPECT_EQ(still.result.status, ResolveStatus::Moved);
+    EXPECT_EQ(still.result.position.x, T(0));
+    EXPECT_TRUE(std::signbit(still.result.position.x));
+    EXPECT_EQ(still.result.position.y, T(8));
+    const Frame<T> stillY = resolve<T>(level, {{5, -T(0)}, {4, 4}}, {-2, 0});
+    EXPECT_TRUE(std::signbit(stillY.result.position.y));
+    EXPECT_EQ(stillY.result.position.x, T(3));
+    const Frame<T> toZero = resolve<T>(level, {{1, 5}, {4, 4}}, {-1, 1});
+    EXPECT_EQ(toZero.result.position.x, T(0));
+    EXPECT_FALSE(std::signbit(toZero.result.position.x));
+}
+
 TYPED_TEST(Resolve, rejectsInvalidInput) {
     using T = TypeParam;
     Level<T> level({"..", ".."});

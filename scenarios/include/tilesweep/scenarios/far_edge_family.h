@@ -43,8 +43,12 @@ rc::Gen<GeneratedScene<T>> genFarEdgeScene() {
         const double ulp =
             static_cast<double>(std::nextafter(static_cast<T>(line), std::numeric_limits<T>::infinity())) -
             static_cast<double>(static_cast<T>(line));
-        const T w =
-            static_cast<T>(*rc::gen::inRange(101, 400) / 100.0 * tile / 4);  // decimal: off the lattice
+        // Decimal: off the lattice. In double, half the sizes keep 8 fractional bits, so that the
+        // frame's span fits the fast path (with a full significand it goes to the lattice, and
+        // only the fast path's filtered grid-line test would be left untried).
+        const double width = *rc::gen::inRange(101, 400) / 100.0 * tile / 4;
+        const bool shortWidth = !isFloat && *rc::gen::arbitrary<bool>();
+        const T w = static_cast<T>(shortWidth ? std::ldexp(std::round(std::ldexp(width, 8)), -8) : width);
         const T h = static_cast<T>(*rc::gen::inRange(1, 9) * tile / 8.0);
         // Far edge a few ulps past the line; bottom a little above the tile's top.
         const T x = static_cast<T>(line + *rc::gen::inRange(1, 5) * ulp - static_cast<double>(w));
@@ -52,10 +56,11 @@ rc::Gen<GeneratedScene<T>> genFarEdgeScene() {
         const T y = static_cast<T>(oy + 3 * tile - static_cast<double>(h) - gapY);
         const Box<T> box{{x, y}, {w, h}};
         // Away by the far edge's offset past the line and a fraction of an ulp more, so that the
-        // exact far edge ends just short of the line (where rounding back up would cross it);
+        // exact far edge ends just short of the line (where rounding back up would cross it), up
+        // to nearly an ulp short (what a filter whose reach is too small misses);
         // now and then a plain quarter of an ulp to four ulps.
         const double offset = static_cast<double>(x) + static_cast<double>(w) - line;
-        const double fraction = *rc::gen::element(1.0 / 16, 1.0 / 8, 1.0 / 4, 1.0 / 2);
+        const double fraction = *rc::gen::element(1.0 / 16, 1.0 / 8, 1.0 / 4, 1.0 / 2, 3.0 / 4, 15.0 / 16);
         const T away = *rc::gen::arbitrary<bool>() || *rc::gen::arbitrary<bool>()
                            ? static_cast<T>(-(offset + fraction * ulp))
                            : static_cast<T>(-*rc::gen::inRange(1, 17) * ulp / 4);
@@ -66,7 +71,11 @@ rc::Gen<GeneratedScene<T>> genFarEdgeScene() {
         Grid<T> cleared = g;
         clearUnder(cleared, ox, oy, tile, box);
         cleared.set(3, 3, true);  // the box starts above it, never in it
-        Scene<T> scene = makeScene(cleared, ox, oy, tile, box, moves);
+        // One scene in four puts the map at the origin, far from the box: its tiles are out of
+        // reach, and the rule acts on the same grid line (ox is a multiple of the tile), now with
+        // nothing but the box's own coordinates to bound the rounding's error (no origin as large).
+        const bool mapAtOrigin = *rc::gen::inRange(0, 4) == 0;
+        Scene<T> scene = makeScene(cleared, mapAtOrigin ? 0.0 : ox, oy, tile, box, moves);
         if (*rc::gen::arbitrary<bool>()) scene = transposed(scene);  // the same on y
         return GeneratedScene<T>{scene, Family::FarEdge, true};
     });
