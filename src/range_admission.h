@@ -202,6 +202,20 @@ namespace tilesweep::detail {
     return magnitude == 0 ? -100000 : static_cast<int>(magnitude >> 52) - 1023;
 }
 
+/// The short form of admitDoubleFrame, for the frames of a game: every nonzero box input in
+/// [2^-20, 2^30). Then the full test's conditions on the box hold: the inputs are within
+/// [2^-250, 2^251); boxTop (the field of max(|x|, |w|) plus 2) is at most kCommonBoxTop = 31; and
+/// each nonzero input's lowest set bit is at or above its ulp, 2^(field - 52) >= 2^-72
+/// (kCommonLowestBit), so the span test max(top, boxTop) <= min(lowest bits, map's lowest) + 104
+/// holds when max(top, 31) <= min(-72, map's lowest) + 104 on each axis: the map's half of that
+/// is MapRange::common, computed once per map. A frame the short form does not admit takes the
+/// full test, which decides.
+inline constexpr int kCommonBoxTop = 31;
+inline constexpr int kCommonLowestBit = -72;
+/// 2^30 and 2^-20, as the magnitude bits of doubles.
+inline constexpr std::uint64_t kCommonLargestBits = std::uint64_t{1023 + 30} << 52;
+inline constexpr std::uint64_t kCommonLeastBits = std::uint64_t{1023 - 20} << 52;
+
 /// The double map's range (see admitDoubleFrame): per axis, top[a] with |origin + k*tile| <
 /// 2^top[a] for |k| <= cells + 2, and lowest[a] the least set bit of origin and tile; admitted
 /// when the map is valid, both are in range, every such tile edge is a multiple of 2^lowest[a]
@@ -209,6 +223,7 @@ namespace tilesweep::detail {
 [[nodiscard]] inline MapRange doubleMapRange(const TileMapView<double>& map) noexcept {
     MapRange r;
     bool admitted = mapHasValidShape(map);
+    bool common = true;  // see admitDoubleFrame's short form
     const double origin[2] = {map.origin.x, map.origin.y};
     const double tile[2] = {map.tileSize.x, map.tileSize.y};
     const std::int32_t cells[2] = {map.columns, map.rows};
@@ -224,9 +239,12 @@ namespace tilesweep::detail {
         const bool nearOrigin =
             fieldOf(o) - fieldOf(t) <= kDoubleFrameOriginTileBits;  // |origin| / tile < 2^47
         admitted = admitted && inRange && exactEdges && nearOrigin;
+        const int spanned = std::max(r.top[a], kCommonBoxTop);
+        common = common && spanned <= std::min(kCommonLowestBit, r.lowest[a]) + kDoubleFramePairSpanBits;
         r.inverseTile[a] = 1 / tile[a];
     }
     r.admitted = admitted;
+    r.common = admitted && common;
     return r;
 }
 
@@ -254,6 +272,10 @@ namespace tilesweep::detail {
     const std::uint64_t least =
         std::min(std::min(std::min(x - 1, y - 1), std::min(w - 1, h - 1)), std::min(dx - 1, dy - 1)) + 1;
     // (All six zero would read field 0 and fail; zero sizes are turned away anyway.)
+    const bool positiveSizes = (in.box.size.x > 0) & (in.box.size.y > 0);
+    // The short form (above): a game's frame is decided here, on one predictable branch.
+    const bool commonBox = (largest < kCommonLargestBits) & (least >= kCommonLeastBits);
+    if (map.common & commonBox & positiveSizes) return true;
     const bool largestInRange = fieldInDoubleFrameRange(largest);
     const bool leastInRange = fieldInDoubleFrameRange(least);
     const bool inRange = largestInRange & leastInRange;
@@ -268,7 +290,6 @@ namespace tilesweep::detail {
     const int boxTopY = static_cast<int>(std::max(y, h) >> 52) - 1023 + 2;
     const int lowestX = std::min(std::min(lowestBitOf(x), lowestBitOf(w)), map.lowest[0]);
     const int lowestY = std::min(std::min(lowestBitOf(y), lowestBitOf(h)), map.lowest[1]);
-    const bool positiveSizes = (in.box.size.x > 0) & (in.box.size.y > 0);
     const bool spanX = std::max(map.top[0], boxTopX) <= lowestX + kDoubleFramePairSpanBits;
     const bool spanY = std::max(map.top[1], boxTopY) <= lowestY + kDoubleFramePairSpanBits;
     return map.admitted & inRange & positiveSizes & spanX & spanY;

@@ -12,8 +12,10 @@ namespace tilesweep::detail {
 /// every tile edge the solver forms (`top`) and one every map input is a multiple of (`lowest`);
 /// and the tile size's reciprocal per axis, fl(1 / tile) in double, which the fast path's cell
 /// estimates multiply by (src/fast_frame.h; every estimate carries a certified margin).
+/// `common` (double maps): whether the range test's short form may decide this map's frames.
 struct MapRange {
     bool admitted = false;
+    bool common = false;
     int top[2] = {0, 0};
     int lowest[2] = {0, 0};
     double inverseTile[2] = {0, 0};
