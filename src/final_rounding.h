@@ -39,11 +39,12 @@ struct Neighbor {
 /// The exact final coordinate `exact` on axis `a`, rounded as the contract asks, into `out`;
 /// false when the arithmetic could not decide the grid-line test.
 ///
-/// Written without a branch on the data: the side of the start, the side of the exact value
-/// its neighbor lies on and where the grid lines are are the data's, and a branch on each would
-/// mispredict at random on a game's frames. The grid-line test is asked on every axis (cheap,
-/// with its exact part behind a rare branch inside the arithmetic); the rounding is then the
-/// neighbor moved by at most one step.
+/// An inexact end is rounded without a branch on the data: the side of the start, the side of
+/// the exact value its neighbor lies on and where the grid lines are are the data's, and a branch
+/// on each would mispredict at random on a game's frames. The grid-line test is asked on every
+/// such axis (cheap, with its exact part behind a rare branch inside the arithmetic); the
+/// rounding is then the neighbor moved by at most one step. A representable end takes one
+/// branch out first: that one a game predicts.
 template <class Arith, class Coord, class T>
 [[nodiscard, gnu::always_inline]] inline bool roundFinal(const Arith& m, const Coord& exact, int a,
                                                          T& out) noexcept {
@@ -53,25 +54,31 @@ template <class Arith, class Coord, class T>
 #else
     const Neighbor<T> near = m.neighborOf(exact);
 #endif
+    // A representable end is its own rounding (at the start, the start itself, its sign of zero
+    // too). A branch, but one a game predicts: a box at rest on an axis, or moving by whole
+    // pixels, stays so from frame to frame, and ends of arbitrary fractions are nearly all inexact.
+    if (near.side == 0) {
+        out = side == 0 ? m.start(a) : near.value;
+        return true;
+    }
     const int above = static_cast<int>(near.side > 0);  // down is then one step below it
     const int below = static_cast<int>(near.side < 0);  // up is then one step above it
 #if defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE)
     const int useDown = static_cast<int>(side > 0);  // the fault keeps the rule before the amendment
 #else
     // Toward the start: down when the end lies above it, up when below; the amended rule applies
-    // on an axis that moved toward minus infinity, to an end no value represents.
-    const bool ruleApplies = (side < 0) & (near.side != 0);
+    // on an axis that moved toward minus infinity (the end, here, is not representable).
+    const bool ruleApplies = side < 0;
     const LineTest line = m.gridLineAhead(exact, a, ruleApplies);
     if (line == LineTest::Undecided) return false;
     const int useDown = static_cast<int>(side > 0) |
                         (static_cast<int>(ruleApplies) & static_cast<int>(line == LineTest::Yes));
 #endif
     const int steps = (-useDown & -above) | ((useDown - 1) & below);
-    T rounded = stepFromNonzero(near.value, steps);  // no step (0) unless near.value is nonzero
+    T rounded = stepFromNonzero(near.value, steps);  // nonzero: the end is not representable
     // Nothing finite at or below the exact value: the rounding toward the start (up) stands.
     if (!std::isfinite(rounded)) rounded = stepFromNonzero(near.value, below);
-    // At the start (side 0) the start itself: the same value, with the start's sign of zero.
-    out = selectValue(side == 0, m.start(a), rounded);
+    out = rounded;
     return true;
 }
 
