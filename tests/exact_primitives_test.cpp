@@ -6,6 +6,8 @@
 // are the cases that double frames reach rarely (issue 20, class 1); each test counts how many
 // of its draws took the exact refinement and asserts a floor, so none of them is vacuous.
 #include "exact_double.h"
+#include "fast_frame.h"
+#include "range_admission.h"
 #include "time_rounding.h"
 
 #include "tilesweep/oracle/exact/rational.h"
@@ -405,6 +407,74 @@ TEST(RoundToFloat, IsTheDirectedRounding) {
         inexact += up != down ? 1 : 0;
     }
     EXPECT_GT(inexact, 140000);
+}
+
+/// The range test's promise to double frames (admitDoubleFrame, range_admission.h): every frame
+/// it admits, by its short form or its full test, gets the far box edge's distances to the tile
+/// edges as exact pairs (FastAxis::farEdgeMinus: a three-term sum made a pair again, exact only
+/// while the box's and the grid's bits span at most kDoubleFramePairSpanBits), and exact tile
+/// edges. The draws aim at that span's limit: a box far out (up to 2^62) with a size whose
+/// lowest bit lies 90 to 125 bits below the box's top on a map of tiles of a few bits, and in a
+/// quarter of the draws a tiny map of 50-bit tiles at the origin with a box of a game's range far
+/// from it (the span then lies in the map's bits). Every
+/// admitted frame's distances to the edges of cells -1 to cells + 1 are checked against the exact
+/// rational; the test counts the admitted frames whose span exceeds 100 bits and asserts a floor,
+/// so that the limit is reached, not only approached.
+TEST(DoubleFrameRange, AdmitsOnlyFramesWithExactFarEdgeDistances) {
+    std::mt19937_64 rng(2026);
+    std::vector<std::uint8_t> solid(64 * 2, 0);
+    int admitted = 0;
+    int nearTheLimit = 0;
+    int shortForm = 0;
+    for (int draw = 0; draw < 40000; ++draw) {
+        double tile = 0;
+        double origin = 0;
+        std::int32_t cells = 0;
+        int boxExponent = 0;
+        int sizeExponent = 0;
+        int span = 0;
+        if (draw % 4 == 0) {
+            // A tiny map at the origin (50-bit tiles near 2^-35, a few cells: its edges are exact,
+            // their lowest bits near 2^-84) and a box of a game's range far from it (2^20 to 2^30,
+            // size 2^-20 to 1): the span lies in the map's bits, which the short form must check.
+            tile = shortDouble(rng, 50, -40, -30);
+            cells = static_cast<std::int32_t>(4 + rng() % 3);
+            boxExponent = std::uniform_int_distribution<int>(20, 29)(rng);
+            sizeExponent = std::uniform_int_distribution<int>(-20, 0)(rng);
+            span = boxExponent + 2 + 84;
+        } else {
+            tile = shortDouble(rng, 3, -4, 8);
+            origin = tile * static_cast<double>(static_cast<std::int64_t>(rng() % 1000) - 500);
+            cells = static_cast<std::int32_t>(4 + rng() % 60);
+            boxExponent = std::uniform_int_distribution<int>(10, 62)(rng);
+            span = std::uniform_int_distribution<int>(90, 125)(rng);
+            sizeExponent = boxExponent + 54 - span;
+        }
+        const double x = randomDouble(rng, boxExponent, boxExponent);
+        const double w = std::fabs(randomDouble(rng, sizeExponent, sizeExponent));
+        const TileMapView<double> map{{origin, 0}, {tile, 1}, cells, 2, solid.data()};
+        const ResolveInput<double> in{map, {{x, 0.5}, {w, 0.5}}, {-w, 0.25}};
+        const MapRange range = doubleMapRange(map);
+        if (!admitDoubleFrame(in, range)) continue;
+        ++admitted;
+        nearTheLimit += span > 100 ? 1 : 0;
+        shortForm += range.common && std::fabs(x) < 0x1p30 && w >= 0x1p-20 ? 1 : 0;
+        const FastFrame<double> frame(in, range.inverseTile);
+        const auto& axis = frame.axis(0);
+        const Rational farEdge = exactly(x) + exactly(w);
+        for (std::int64_t k : {std::int64_t{-1}, std::int64_t{0}, std::int64_t{1}, std::int64_t{cells / 2},
+                               std::int64_t{cells}, std::int64_t{cells + 1}}) {
+            const double e = axis.edge(k);
+            ASSERT_EQ(exactly(e), exactly(origin) + Rational(k) * exactly(tile))
+                << "edge " << k << " of tile " << std::hexfloat << tile << " origin " << origin;
+            const ExactPair d = axis.farEdgeMinus(e);
+            ASSERT_EQ(exactly(d.hi) + exactly(d.lo), farEdge - exactly(e))
+                << std::hexfloat << "box " << x << " size " << w << " edge " << e << " (span " << span << ")";
+        }
+    }
+    EXPECT_GT(admitted, 5000);
+    EXPECT_GT(nearTheLimit, 1000) << "too few admitted frames beyond a 100-bit span";
+    EXPECT_GT(shortForm, 500) << "too few frames the short form admits";
 }
 
 }  // namespace
