@@ -180,12 +180,11 @@ template <class T>
 #endif
 }
 
-/// v moved by `steps` (-1, 0 or 1) representable values: the next float or double above (1) or
-/// below (-1) a finite one (the least subnormal, with its sign, from a zero), or v itself (0).
-/// By integer arithmetic alone, without a branch: the bits map to integers that order like the
+/// v moved by `steps` (-1, 0 or 1) representable values, as std::nextafter toward plus or minus
+/// infinity (the least subnormal, with its sign, from a zero), or v itself, its bits kept (0). By
+/// integer arithmetic alone, without a branch: the bits map to integers that order like the
 /// values (a magnitude's bits, negated for a negative value, so that both zeros map to 0), which
-/// move by `steps` and map back; no step keeps v's bits (a -0 too). Past the largest finite value it gives
-/// the infinity of that sign (final_rounding.h tests for it).
+/// move by `steps` and map back. Past the largest finite value it gives the infinity of that sign.
 template <class T>
 [[nodiscard, gnu::always_inline]] inline T stepBy(T v, int steps) noexcept {
     using Bits = std::conditional_t<sizeof(T) == sizeof(std::uint32_t), std::uint32_t, std::uint64_t>;
@@ -253,23 +252,6 @@ template <class T>
     double u = 0;
     std::memcpy(&u, &bits, sizeof bits);
     return u;
-}
-
-/// `a` when `choose` holds, else `b`, by a mask on their bits: no branch on `choose` (a
-/// comparison of values the data decide, which a branch would mispredict at random).
-template <class T>
-[[nodiscard, gnu::always_inline]] inline T selectValue(bool choose, T a, T b) noexcept {
-    using Bits = std::conditional_t<sizeof(T) == sizeof(std::uint32_t), std::uint32_t, std::uint64_t>;
-    static_assert(sizeof(Bits) == sizeof(T), "float or double");
-    Bits x = 0;
-    Bits y = 0;
-    std::memcpy(&x, &a, sizeof x);
-    std::memcpy(&y, &b, sizeof y);
-    const Bits mask = Bits{0} - static_cast<Bits>(choose);
-    const Bits chosen = (x & mask) | (y & ~mask);
-    T v;
-    std::memcpy(&v, &chosen, sizeof v);
-    return v;
 }
 
 /// The exact double v rounded to float toward minus infinity (down) or plus infinity. The

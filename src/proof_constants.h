@@ -112,18 +112,20 @@ inline constexpr double kGridLineReachLimit = 0x1p40;
 /// |z| < kGridLineReachLimit, without a conversion to an integer register.
 inline constexpr double kNearestIntegerShift = 0x1.8p52;
 
-/// The reach of a float frame's grid-line filter (FastFrame::gridLineAhead), in cells: R =
-/// (2^-22 (|far| + size + |far - origin|) + 2^-148) / tile, computed with the reciprocal. There
-/// far = exact + size and far - origin are exact doubles (range_admission.h), so the estimate
-/// z = fl((far - origin) * fl(1 / tile)) is within (2u + u^2)|far - origin| / tile of the exact
-/// grid coordinate Z. The interval searched, [far, up + size), is W = (up - exact) / tile wide,
-/// up being the float just above an exact value no float represents, so up - exact is below the
-/// float spacing there: 2^-23|exact| + 2^-149 at most (2^-149 below float's normal range), with
-/// |exact| <= |far| + size. When no integer lies within R' = (2u + u^2)|far - origin| / tile + W
-/// of z, every integer m has |m - Z| > W, so none lies in [Z, Z + W]: no line. The code's R, computed by
-/// three rounded sums and a rounded product (at least (1 - u)^4 of its exact value), exceeds R' with room:
-/// 2^-22 (1 - u)^4 > 2^-23 + 2u + u^2, and 2^-148 (1 - u)^4 > 2^-149. A larger reach only sends more frames
-/// to the exact test (FastAxis::hasLineIn); it never changes a result.
+/// The reach of a float frame's grid-line filter (FastFrame::gridLineAhead), in cells:
+///   R = (2^-22 (|far| + size + |far - origin|) + 2^-148) / tile, computed with the reciprocal.
+/// There far = exact + size and far - origin are exact doubles (range_admission.h), so the
+/// estimate z = fl((far - origin) * fl(1 / tile)) is within (2u + u^2)|far - origin| / tile of
+/// the exact grid coordinate Z. The interval searched, [far, up + size), is W = (up - exact) /
+/// tile wide, up being the float just above an exact value no float represents, so up - exact is
+/// below the float spacing there: 2^-23|exact| + 2^-149 at most (2^-149 below float's normal
+/// range), with |exact| <= |far| + size. When no integer lies within
+///   R' = (2u + u^2)|far - origin| / tile + W
+/// of z, every integer m has |m - Z| > W, so none lies in [Z, Z + W]: no line. The code's R,
+/// computed by three rounded sums and a rounded product (at least (1 - u)^4 of its exact value),
+/// exceeds R' with room, term by term: 2^-22 (1 - u)^4 > 2^-23 + 2u + u^2, and
+/// 2^-148 (1 - u)^4 > 2^-149. A larger reach only sends more frames to the exact test
+/// (FastAxis::hasLineIn); it never changes a result.
 inline constexpr double kFloatLineReachRelative = 0x1p-22;
 /// The least term of the same reach, for ends below float's normal range (see above).
 inline constexpr double kFloatLineReachLeast = 0x1p-148;
