@@ -211,8 +211,9 @@ template <class T>
 /// stepBy for a nonzero v (or steps = 0), in three operations: the bits themselves move by
 /// `steps`, negated for a negative v (whose bits grow with its magnitude). Past the largest
 /// finite value it gives the infinity, and one step toward zero from an infinity the largest
-/// finite value; a step onto zero gives the zero of v's sign. From a zero it is wrong, which is
-/// why final_rounding.h's neighbors are never zero when they are stepped.
+/// finite value; a step onto zero gives the zero of v's sign. From a zero it is wrong: the final
+/// rounding of double frames (FastFrame::roundToward) steps a pair's high part only when its low
+/// part is nonzero, and then the high part is not zero.
 template <class T>
 [[nodiscard, gnu::always_inline]] inline T stepFromNonzero(T v, int steps) noexcept {
     using Bits = std::conditional_t<sizeof(T) == sizeof(std::uint32_t), std::uint32_t, std::uint64_t>;
@@ -254,10 +255,30 @@ template <class T>
     return u;
 }
 
-/// The exact double v rounded to float toward minus infinity (down) or plus infinity. The
-/// conversion rounds to nearest, correctly (IEEE 754); one step fixes the direction, taken by
-/// arithmetic (stepBy), without a branch: the side of v its nearest float falls on is the data's.
+/// The exact double v rounded to float toward minus infinity (down) or plus infinity (up), without
+/// a branch on `up` or on v's bits in float's normal range, [2^-126, 2^128) in magnitude: there a
+/// float is a double whose 29 lowest significand bits are zero, so the rounding toward zero clears
+/// them, and the rounding away from zero adds one unit at bit 29 to that when any was set (a carry
+/// into the exponent is right, and 2^128 converts to the infinity, the rounding up of a value above
+/// the largest float). Elsewhere (zero, subnormal floats, beyond 2^128: rare in a game) the nearest
+/// float is stepped by stepBy toward v's side, as the arithmetic of the rounding asks.
 [[nodiscard, gnu::always_inline]] inline float roundToFloat(double v, bool up) noexcept {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    constexpr std::uint64_t kFloatNormalLeast = 1023 - 126;  // the biased exponent of 2^-126
+    constexpr std::uint64_t kFloatBinades = 254;             // 2^-126 to 2^127
+    if ((((bits >> 52) & 0x7ff) - kFloatNormalLeast) < kFloatBinades) {
+        constexpr std::uint64_t kDropped = (std::uint64_t{1} << 29) - 1;
+        const std::uint64_t dropped = bits & kDropped;
+        const std::uint64_t negative = bits >> 63;
+        // Away from zero when rounding a positive v up or a negative one down, and v is no float.
+        const std::uint64_t away =
+            (negative ^ static_cast<std::uint64_t>(up)) & static_cast<std::uint64_t>(dropped != 0);
+        bits = (bits - dropped) + (away << 29);
+        double rounded = 0;
+        std::memcpy(&rounded, &bits, sizeof bits);
+        return static_cast<float>(rounded);  // exact, or the infinity from 2^128
+    }
     const auto f = static_cast<float>(v);
     const auto back = static_cast<double>(f);
     const int below = static_cast<int>(back < v);  // the nearest float is below v: up steps up

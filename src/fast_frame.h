@@ -39,6 +39,7 @@
 #include "final_rounding.h"
 #include "pair_arithmetic.h"
 #include "proof_constants.h"
+#include "range_admission.h"
 #include "time_rounding.h"
 
 #include "tilesweep/resolve.h"
@@ -68,17 +69,22 @@ public:
         double slope;   ///< secondary motion per unit of primary distance
     };
 
-    /// The frame `in`, with its map's reciprocals of the tile size (MapRange::inverseTile,
-    /// computed once per map when it was prepared).
-    FastFrame(const ResolveInput<T>& in, const double (&inverseTile)[2]) noexcept : map_(in.map) {
+    /// The frame `in`, with its map's range (range_admission.h: the reciprocals of the tile size
+    /// and the grid lines' lowest bit, computed once per map when it was prepared).
+    FastFrame(const ResolveInput<T>& in, const MapRange& range) noexcept : map_(in.map) {
         axis_[0] = makeAxis(in.box.pos.x, in.box.size.x, in.displacement.x, in.map.origin.x,
-                            in.map.tileSize.x, in.map.columns, inverseTile[0]);
+                            in.map.tileSize.x, in.map.columns, range.inverseTile[0]);
         axis_[1] = makeAxis(in.box.pos.y, in.box.size.y, in.displacement.y, in.map.origin.y,
-                            in.map.tileSize.y, in.map.rows, inverseTile[1]);
+                            in.map.tileSize.y, in.map.rows, range.inverseTile[1]);
         start_[0] = in.box.pos.x;
         start_[1] = in.box.pos.y;
+        linesClear_[0] = linesClearOf(in.box.pos.x, in.displacement.x, in.box.size.x, range.lineBit[0]);
+        linesClear_[1] = linesClearOf(in.box.pos.y, in.displacement.y, in.box.size.y, range.lineBit[1]);
     }
 
+    /// Whether no grid line can fall between an end on axis `a` and the value above it
+    /// (linesClearOf): the amended rule's test is then skipped.
+    bool linesClear(int a) const noexcept { return linesClear_[a]; }
     /// Whether some predicate needed its exact refinement (DecisionPath::Filtered).
     [[nodiscard]] bool refined() const noexcept { return refined_; }
 
@@ -210,34 +216,38 @@ public:
         return roundPositionAtTime<T>(axis_[a].low, axis_[a].disp, t.num, t.den, refined_, out);
     }
 
-    // The final rounding (final_rounding.h), without a branch on the data: which side of the
-    // start the end lies on, which side of it its nearest value lies on, and where the grid
-    // lines are are the data's, and a branch on each would mispredict at random. A zero reads
-    // +0 (exact + 0.0), as the lattice's zero does.
+    // The final rounding (final_rounding.h), without a branch on the data in its common case. A
+    // zero reads +0 (exact + 0.0), as the lattice's zero does.
     int compareWithStart(const Coord& exact, int a) const noexcept {
         const auto start = static_cast<double>(start_[a]);
         if constexpr (std::is_same<T, float>::value) {
-            return static_cast<int>(exact > start) - static_cast<int>(exact < start);
+            return compare(exact, start);
         } else {
             // The high parts first (monotonic rounding, the start representable); on a tie, the low part.
-            const int byHigh = static_cast<int>(exact.hi > start) - static_cast<int>(exact.hi < start);
-            const int byLow = static_cast<int>(exact.lo > 0) - static_cast<int>(exact.lo < 0);
-            return byHigh + static_cast<int>(byHigh == 0) * byLow;
+            const int byHigh = compare(exact.hi, start);
+            return byHigh != 0 ? byHigh : signOf(exact.lo);
         }
     }
-    /// The nearest value, and its side of the exact one: float frames convert the exact double
-    /// (rounding to nearest, correctly) and compare back; double frames have it in the pair (the
-    /// high part, the low part's sign the other way). Nonzero when not exact: a nonzero exact
-    /// double of a float frame is at least 2^-149 in magnitude (a multiple of the least input's
-    /// ulp), so its nearest float is not zero; a pair whose high part is zero is zero.
-    Neighbor<T> neighborOf(const Coord& exact) const noexcept {
+    /// Float frames: whether the exact double survives the trip to float and back; double frames:
+    /// whether the pair's low part is zero.
+    bool isRepresentable(const Coord& exact) const noexcept {
         if constexpr (std::is_same<T, float>::value) {
-            const double v = exact + 0.0;
-            const auto nearest = static_cast<float>(v);
-            const auto back = static_cast<double>(nearest);
-            return {nearest, static_cast<int>(back > v) - static_cast<int>(back < v)};
+            return static_cast<double>(static_cast<float>(exact)) == exact;
         } else {
-            return {exact.hi + 0.0, static_cast<int>(exact.lo < 0) - static_cast<int>(exact.lo > 0)};
+            return exact.lo == 0;
+        }
+    }
+    /// Float frames: roundToFloat (exact_double.h), on the bits of the exact double. Double frames:
+    /// the high part (fl(value), to nearest), moved one step down when `down` and the low part is
+    /// negative, up when rounding up and it is positive (the high part is then nonzero).
+    T roundToward(const Coord& exact, bool down) const noexcept {
+        if constexpr (std::is_same<T, float>::value) {
+            return roundToFloat(exact + 0.0, !down);
+        } else {
+            const int downward = static_cast<int>(down);
+            const int steps = (static_cast<int>(exact.lo > 0) & (1 - downward)) -
+                              (static_cast<int>(exact.lo < 0) & downward);
+            return stepFromNonzero(exact.hi + 0.0, steps);
         }
     }
     T roundNearest(const Coord& exact) const noexcept {
@@ -257,7 +267,9 @@ public:
     ///   Float frames: exact + size and its difference with the origin are exact doubles, so z
     ///   errs by the reciprocal's and the product's roundings alone (kFloatLineReachRelative).
     ///   Double frames: the pair's low part is left out (kGridLineReachUlps).
-    LineTest gridLineAhead(const Coord& exact, int a, bool needed) const noexcept {
+    [[gnu::always_inline]] LineTest gridLineAhead(const Coord& exact, int a, bool needed) const noexcept {
+        // One branch, which a game predicts: its boxes' sizes and its map stay the same.
+        if (linesClear_[a]) return LineTest::No;
         const Motion& m = axis_[a];
         if constexpr (std::is_same<T, float>::value) {
             const double far = exact + m.size;
@@ -339,6 +351,41 @@ private:
         return inLimit & beyondReach;
     }
 
+    /// Whether no grid line can lie in [exact + size, up + size) for any end `exact` of this axis
+    /// (up: exact rounded toward plus infinity), so that the amended rule never applies on it.
+    /// Every grid line g = origin + k*tile is a multiple of 2^lineBit (MapRange), the size one of
+    /// its lowest set bit, so g - size is a multiple of 2^q, q the lesser of the two. A line in
+    /// the interval has exact <= g - size < up, and as up is the least T at or above exact,
+    /// g - size is then no T. But a multiple of 2^q at most 2^(q + p) in magnitude is a T (p = 24
+    /// for float, 53 for double; q is at least the least input's ulp exponent, -149 or above in
+    /// float frames and -302 or above in double frames by the range test), and |g - size| <= max(|exact|,
+    /// |up|) <= 2^E when every end is below 2^E in magnitude (2^E is a T, so |up| <= 2^E too). Ends lie
+    /// between the start and the start plus the displacement (final_rounding.h), so |exact| <= |x| + |dx| <
+    /// 2^E with E one above the larger one's binade. So E <= q + p suffices. It holds for the boxes of a
+    /// pixel game (sizes of whole or half pixels, maps of whole tiles), and for them the grid-line filter
+    /// costs one predicted branch.
+    static bool linesClearOf(T pos, T disp, T size, int lineBit) noexcept {
+        if constexpr (std::is_same<T, float>::value) {
+            const std::uint32_t larger = std::max(magnitudeBits(pos), magnitudeBits(disp));
+            const int ends = static_cast<int>(larger >> 23) - 125;  // |x|, |dx| < 2^(field - 126)
+#if defined(TILESWEEP_FAULT_LINES_CLEAR_SIZE_IGNORED)
+            static_cast<void>(size);
+            return ends <= lineBit + 24;  // deliberate fault: the size's bits left out
+#else
+            return ends <= std::min(lineBit, lowestSetBitOf(size)) + 24;
+#endif
+        } else {
+            const std::uint64_t larger = std::max(magnitudeBits(pos), magnitudeBits(disp));
+            const int ends = static_cast<int>(larger >> 52) - 1021;  // |x|, |dx| < 2^(field - 1022)
+#if defined(TILESWEEP_FAULT_LINES_CLEAR_SIZE_IGNORED)
+            static_cast<void>(size);
+            return ends <= lineBit + 53;  // deliberate fault: the size's bits left out
+#else
+            return ends <= std::min(lineBit, lowestBitOf(magnitudeBits(size))) + 53;
+#endif
+        }
+    }
+
     /// A margin of `ulps` units of u times `magnitude`, in cells (proof_constants.h).
     static double cellMargin(double ulps, double magnitude, double invTile) noexcept {
         return ulps * kUnitRoundoff * magnitude * invTile;
@@ -363,6 +410,7 @@ private:
     const TileMapView<T>& map_;
     Motion axis_[2];
     T start_[2];
+    bool linesClear_[2];  ///< linesClearOf, per axis
     bool refined_ = false;
 };
 

@@ -30,6 +30,9 @@
 //                      valid map, a far face 2^G past a grid line read as on it (kFastSpanBits,
 //                      proof_constants.h: one binade wider cannot change an answer) (range_admission.h)
 //   FAST_RANGE_FAR_TOO_WIDE  the same six binades too generous
+//   LINES_CLEAR_SIZE_IGNORED  the fast path's proof that no grid line can fall between an end
+//                      and the value above it reads the grid's lowest bit alone, not the box
+//                      size's, so it skips the amended rule's test where it applies (fast_frame.h)
 // Issue 20's four classes, one fault standing for each:
 //   PAIR_REFINEMENT_SWAPPED  double near-ties: the exact refinement of the pair comparison called
 //                      with its two sides swapped, so a nonzero sign inside the filter's band
@@ -49,6 +52,7 @@
     defined(TILESWEEP_FAULT_NARROW_TIER) || defined(TILESWEEP_FAULT_FILTER_BOUND_HALVED) ||              \
     defined(TILESWEEP_FAULT_FAST_RANGE_TOO_WIDE) || defined(TILESWEEP_FAULT_FAST_RANGE_FAR_TOO_WIDE) ||  \
     defined(TILESWEEP_FAULT_PAIR_REFINEMENT_SWAPPED) || defined(TILESWEEP_FAULT_RANGE_NO_LOWER_BOUND) || \
-    defined(TILESWEEP_FAULT_INLINE_LIMIT_EXCLUSIVE) || defined(TILESWEEP_FAULT_C_ERROR_CODES_SWAPPED)
+    defined(TILESWEEP_FAULT_INLINE_LIMIT_EXCLUSIVE) || defined(TILESWEEP_FAULT_C_ERROR_CODES_SWAPPED) || \
+    defined(TILESWEEP_FAULT_LINES_CLEAR_SIZE_IGNORED)
 #define TILESWEEP_FAULT_INJECTED 1
 #endif

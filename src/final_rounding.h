@@ -10,10 +10,15 @@
 // does not. When nothing finite lies at or below the exact value, the rounding toward the start
 // stands.
 //
-// The arithmetic provides start(a), compareWithStart(exact, a) (the sign of exact - start),
-// neighborOf(exact) (a Neighbor: a value next to the exact one) and, for a deliberate fault,
-// roundNearest(exact), and gridLineAhead(exact, a, needed): whether a grid line lies in
-// [exact + size, up + size), up being exact rounded toward plus infinity, as LineTest. Its
+// Every final coordinate lies between the start and the start plus the displacement (the box moves
+// monotonically on each axis), so an end that is not representable lies on the side of the start
+// the axis moved to: its direction alone says which way "toward the start" is.
+//
+// The arithmetic provides start(a), axis(a).dir, compareWithStart(exact, a) (the sign of exact -
+// start), isRepresentable(exact), roundToward(exact, down) (exact rounded toward minus infinity
+// when `down`, plus infinity otherwise: without a branch on `down`, which is the data's) and, for a
+// deliberate fault, roundNearest(exact), and gridLineAhead(exact, a, needed): whether a grid line
+// lies in [exact + size, up + size), up being exact rounded toward plus infinity, as LineTest. Its
 // answer is read only when `needed`; it must then be No, Yes or Undecided (which sends the frame
 // to the lattice), and otherwise No.
 
@@ -27,59 +32,46 @@ namespace tilesweep::detail {
 /// The answer of a grid-line test that may be filtered.
 enum class LineTest { No, Yes, Undecided };
 
-/// A representable value next to an exact one: `value` is the exact value itself (side 0), or
-/// one of the two values on either side of it (side +1 when above it, -1 when below), so that
-/// the other one is stepFromNonzero(value, -side) (exact_double.h): then it is never zero.
-template <class T>
-struct Neighbor {
-    T value;
-    int side;
-};
-
 /// The exact final coordinate `exact` on axis `a`, rounded as the contract asks, into `out`;
 /// false when the arithmetic could not decide the grid-line test.
 ///
-/// An inexact end is rounded without a branch on the data: the side of the start, the side of
-/// the exact value its neighbor lies on and where the grid lines are are the data's, and a branch
-/// on each would mispredict at random on a game's frames. The grid-line test is asked on every
-/// such axis (cheap, with its exact part behind a rare branch inside the arithmetic); the
-/// rounding is then the neighbor moved by at most one step. A representable end takes one
-/// branch out first: that one a game predicts.
+/// A representable end takes one branch out first: one a game predicts (a box at rest on an axis,
+/// or moving by whole pixels, stays so from frame to frame, and ends of arbitrary fractions are
+/// nearly all inexact). Any other end is rounded without a branch on the data: the direction of
+/// the move and where the grid lines are are the data's, and a branch on either would mispredict
+/// at random on a game's frames. The grid-line test is asked on every such axis (cheap, with its
+/// exact part behind a rare branch inside the arithmetic).
 template <class Arith, class Coord, class T>
 [[nodiscard, gnu::always_inline]] inline bool roundFinal(const Arith& m, const Coord& exact, int a,
                                                          T& out) noexcept {
-    const int side = m.compareWithStart(exact, a);
 #if defined(TILESWEEP_FAULT_ROUND_NEAREST)
-    const Neighbor<T> near{m.roundNearest(exact), 0};  // deliberate fault: to nearest, not toward the start
+    out = m.roundNearest(exact);  // deliberate fault: to nearest, not toward the start
+    static_cast<void>(a);
+    return true;
 #else
-    const Neighbor<T> near = m.neighborOf(exact);
-#endif
-    // A representable end is its own rounding (at the start, the start itself, its sign of zero
-    // too). A branch, but one a game predicts: a box at rest on an axis, or moving by whole
-    // pixels, stays so from frame to frame, and ends of arbitrary fractions are nearly all inexact.
-    if (near.side == 0) {
-        out = side == 0 ? m.start(a) : near.value;
+    // A representable end is its own rounding (at the start, the start itself, its sign of zero too).
+    if (m.isRepresentable(exact)) {
+        out = m.compareWithStart(exact, a) == 0 ? m.start(a) : m.roundToward(exact, true);
         return true;
     }
-    const int above = static_cast<int>(near.side > 0);  // down is then one step below it
-    const int below = static_cast<int>(near.side < 0);  // up is then one step above it
+    // Not representable, so not the start: it lies on the side the axis moved to.
+    const int dir = m.axis(a).dir;
 #if defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE)
-    const int useDown = static_cast<int>(side > 0);  // the fault keeps the rule before the amendment
+    const bool down = dir > 0;  // the fault keeps the rule before the amendment
 #else
-    // Toward the start: down when the end lies above it, up when below; the amended rule applies
-    // on an axis that moved toward minus infinity (the end, here, is not representable).
-    const bool ruleApplies = side < 0;
+    // Toward the start: down when the axis moved up, up when it moved down; the amended rule
+    // applies on an axis that moved toward minus infinity.
+    const bool ruleApplies = dir < 0;
     const LineTest line = m.gridLineAhead(exact, a, ruleApplies);
     if (line == LineTest::Undecided) return false;
-    const int useDown = static_cast<int>(side > 0) |
-                        (static_cast<int>(ruleApplies) & static_cast<int>(line == LineTest::Yes));
+    const bool down = (dir > 0) | (ruleApplies & (line == LineTest::Yes));
 #endif
-    const int steps = (-useDown & -above) | ((useDown - 1) & below);
-    T rounded = stepFromNonzero(near.value, steps);  // nonzero: the end is not representable
+    T rounded = m.roundToward(exact, down);
     // Nothing finite at or below the exact value: the rounding toward the start (up) stands.
-    if (!std::isfinite(rounded)) rounded = stepFromNonzero(near.value, below);
+    if (!std::isfinite(rounded)) rounded = m.roundToward(exact, false);
     out = rounded;
     return true;
+#endif
 }
 
 }  // namespace tilesweep::detail

@@ -22,7 +22,7 @@ template <class T>
 [[gnu::always_inline]] inline bool solveFast(const ResolveInput<T>& input, const ResolveOutput<T>& output,
                                              ContactPositions positions, const MapRange& range,
                                              ResolveResult<T>& result, bool& refined) noexcept {
-    FastFrame<T> frame(input, range.inverseTile);
+    FastFrame<T> frame(input, range);
     const bool solved =
         FrameLoop<FastFrame<T>>(frame).run(output, result, positions == ContactPositions::Placed);
     refined = frame.refined();

@@ -175,12 +175,11 @@ public:
 
     // The final rounding (final_rounding.h).
     int compareWithStart(const Num& exact, int a) const noexcept { return compare(exact, motion_[a].low); }
-    /// The rounding away from zero: nonzero whenever exact is not representable.
-    Neighbor<T> neighborOf(const Num& exact) const noexcept {
-        const T away = roundLattice<T>(exact, exponent_, MagnitudeRounding::AwayFromZero);
-        if (roundLattice<T>(exact, exponent_, MagnitudeRounding::TowardZero) == away) return {away, 0};
-        return {away, exact.isNegative() ? -1 : 1};
+    bool isRepresentable(const Num& exact) const noexcept {
+        return roundLattice<T>(exact, exponent_, MagnitudeRounding::TowardZero) ==
+               roundLattice<T>(exact, exponent_, MagnitudeRounding::AwayFromZero);
     }
+    T roundToward(const Num& exact, bool down) const noexcept { return roundDirected(exact, !down); }
     T roundNearest(const Num& exact) const noexcept {
         return roundLattice<T>(exact, exponent_, MagnitudeRounding::NearestEven);
     }

@@ -76,6 +76,15 @@ namespace tilesweep::detail {
     return least == 0 ? 255 : static_cast<int>(least >> 23);
 }
 
+/// The exponent of the lowest set bit of a float, 100000 for a zero so that a zero bounds nothing
+/// (a subnormal reads as if its field were 1, as its ulp is).
+[[nodiscard, gnu::always_inline]] inline int lowestSetBitOf(float v) noexcept {
+    const std::uint32_t magnitude = magnitudeBits(v);
+    const int field = static_cast<int>(magnitude >> 23);
+    const std::uint32_t significand = (magnitude & 0x7fffffu) | (field == 0 ? 0u : 0x800000u);
+    return magnitude == 0 ? 100000 : std::max(field, 1) - 150 + countTrailingZeros64(significand);
+}
+
 /// The float map's range (see the top of this file): top[a] is edgeTop on the axis, a biased
 /// field with |origin + k*tile| < 2^(top - 126) for |k| <= cells + 2; lowest[a] the least field
 /// of the axis's nonzero map inputs (255 when none is nonzero; 0 when one is subnormal, which
@@ -94,6 +103,7 @@ namespace tilesweep::detail {
         // origin reads field 0, below any tile's.
         r.top[a] = std::max(static_cast<int>(o >> 23), static_cast<int>(t >> 23) + cellBits) + 1;
         r.lowest[a] = leastField(std::min(o - 1, t - 1));
+        r.lineBit[a] = std::min(lowestSetBitOf(origin[a]), lowestSetBitOf(tile[a]));
         r.inverseTile[a] = 1 / static_cast<double>(tile[a]);
     }
     return r;
@@ -234,6 +244,7 @@ inline constexpr std::uint64_t kCommonLeastBits = std::uint64_t{1023 - 20} << 52
         // |origin| + (cells + 2) * tile < 2^(max(eo + 1, et + 1 + cellBits) + 1).
         r.top[a] = std::max(fieldOf(o) + 1, fieldOf(t) + 1 + cellBits) + 1;
         r.lowest[a] = std::min(lowestBitOf(o), lowestBitOf(t));
+        r.lineBit[a] = r.lowest[a];
         const bool inRange = inDoubleFrameRange(o) && inDoubleFrameRange(t);
         const bool exactEdges = r.top[a] <= r.lowest[a] + kFastSpanBits;
         const bool nearOrigin =

@@ -394,8 +394,9 @@ TEST(RoundToFloat, IsTheDirectedRounding) {
     std::mt19937_64 rng(17);
     int inexact = 0;
     for (int k = 0; k < 200000; ++k) {
-        double v = randomDouble(rng, -140, 120);
-        if (k % 4 == 0) v = static_cast<double>(static_cast<float>(v));  // a float: exact either way
+        double v = randomDouble(rng, -140, 129);  // past 2^128 too: the rounding up overflows
+        if (k % 4 == 0 && std::fabs(v) < 0x1p127)
+            v = static_cast<double>(static_cast<float>(v));  // a float: exact either way
         const float up = roundToFloat(v, true);
         const float down = roundToFloat(v, false);
         ASSERT_GE(static_cast<double>(up), v) << std::hexfloat << v;
@@ -459,7 +460,7 @@ TEST(DoubleFrameRange, AdmitsOnlyFramesWithExactFarEdgeDistances) {
         ++admitted;
         nearTheLimit += span > 100 ? 1 : 0;
         shortForm += range.common && std::fabs(x) < 0x1p30 && w >= 0x1p-20 ? 1 : 0;
-        const FastFrame<double> frame(in, range.inverseTile);
+        const FastFrame<double> frame(in, range);
         const auto& axis = frame.axis(0);
         const Rational farEdge = exactly(x) + exactly(w);
         for (std::int64_t k : {std::int64_t{-1}, std::int64_t{0}, std::int64_t{1}, std::int64_t{cells / 2},
@@ -476,6 +477,103 @@ TEST(DoubleFrameRange, AdmitsOnlyFramesWithExactFarEdgeDistances) {
     EXPECT_GT(nearTheLimit, 1000) << "too few admitted frames beyond a 100-bit span";
     EXPECT_GT(shortForm, 500) << "too few frames the short form admits";
 }
+
+/// The fast path's shortcut for the amended rule (FastFrame::linesClearOf): where it says no grid
+/// line can fall between an end and the value above it, none does. Each draw aims at the line the
+/// shortcut must see: a box size and a grid whose lowest set bit is 2^q, and an end 2^(q - 5)
+/// short of g - size for a grid line g, at magnitudes from 2^(q + p - 2) to 2^(q + p + 2) (p = 24
+/// for float, 53 for double), where g - size stops being representable. In half the draws g - size
+/// lies just above a power of two and the start just below it, so that the end crosses into the
+/// next binade: the case an off-by-one in the bound would clear. Every end the draw can give (the
+/// free end, a touch position e - size or e) is checked against the exact rationals (the interval
+/// [exact + size, up + size), up the rounding up of the exact end, and oracle::gridLineIn).
+/// Floors: frames the shortcut clears at the limit (g - size at or above 2^(q + p - 1)), frames it
+/// does not clear with a line in the interval, and of those, ends that crossed a power of two.
+template <class T>
+void checkLinesClear(std::uint64_t seed) {
+    constexpr int p = std::numeric_limits<T>::digits;
+    std::mt19937_64 rng(seed);
+    std::vector<std::uint8_t> solid(8, 0);
+    int admitted = 0;
+    int clearAtTheLimit = 0;
+    int lineWhereNotClear = 0;
+    int lineAcrossABinade = 0;
+    for (int draw = 0; draw < 20000; ++draw) {
+        const int q = std::uniform_int_distribution<int>(-12, 6)(rng);
+        // A size and a tile with a few bits, one of them with its lowest bit at 2^q.
+        const double size =
+            std::ldexp(static_cast<double>(2 * (rng() % 64) + 1), q + static_cast<int>(rng() % 2));
+        const double tile =
+            std::ldexp(static_cast<double>(2 * (rng() % 8) + 1), q + 2 + static_cast<int>(rng() % 3));
+        const double origin =
+            (rng() % 2) ? 0.0 : tile * static_cast<double>(static_cast<std::int64_t>(rng() % 64) - 32);
+        const bool acrossABinade = (draw % 2) == 0;
+        const int magnitude = std::uniform_int_distribution<int>(q + p - 2, q + p + 1)(rng);
+        const double power = std::ldexp(1.0, magnitude);
+        // A grid line g: the first one with g - size above 2^magnitude, or one near 1.5 times it.
+        const double k =
+            acrossABinade ? std::ceil((power + size - origin) / tile) : std::floor(1.5 * power / tile);
+        const Rational lineExactly = exactly(origin) + exactly(k) * exactly(tile);
+        const double line = origin + k * tile;
+        if (exactly(line) != lineExactly) continue;  // not a double: another draw
+        const double target = line - size;           // exact: a multiple of 2^q below 2^(q + p + 3)
+        const double offset =
+            acrossABinade
+                ? -std::ldexp(static_cast<double>(rng() % 64 + 1), q)
+                : std::ldexp(static_cast<double>(static_cast<std::int64_t>(rng() % 2048) - 1024), q);
+        const double start =
+            static_cast<double>(static_cast<T>(acrossABinade ? power + offset : target + offset));
+        const double disp = (target - start) - std::ldexp(1.0, q - 5);  // the end 2^(q - 5) short of g - size
+        if (static_cast<double>(static_cast<T>(disp)) != disp ||
+            static_cast<double>(static_cast<T>(size)) != size ||
+            static_cast<double>(static_cast<T>(tile)) != tile ||
+            static_cast<double>(static_cast<T>(origin)) != origin)
+            continue;
+        const TileMapView<T> map{{static_cast<T>(origin), 0}, {static_cast<T>(tile), 1}, 4, 2, solid.data()};
+        const ResolveInput<T> in{map,
+                                 {{static_cast<T>(start), T(0.5)}, {static_cast<T>(size), T(0.5)}},
+                                 {static_cast<T>(disp), T(0.25)}};
+        const MapRange range = mapRangeOf(map);
+        bool fits = false;
+        if constexpr (std::is_same<T, float>::value) {
+            fits = admitFloatFrame(in, range);
+        } else {
+            fits = admitDoubleFrame(in, range);
+        }
+        if (!fits) continue;
+        ++admitted;
+        const FastFrame<T> frame(in, range);
+        const Rational low = exactly(start);
+        const Rational high = low + exactly(disp);
+        std::vector<Rational> ends{high};
+        for (std::int64_t n = -2; n <= 2; ++n) {  // touch positions next to the free end
+            const Rational e = lineExactly + Rational(n) * exactly(tile);
+            for (const Rational& end : {e, e - exactly(size)})
+                if ((end - low) * (end - high) <= 0) ends.push_back(end);
+        }
+        bool lineFound = false;
+        for (const Rational& end : ends) {
+            const T up = oracle::fromRational<T>(end, oracle::Rounding::TowardPositive);
+            const bool hasLine = oracle::gridLineIn(
+                end + exactly(size), oracle::toRational(up) + exactly(size), exactly(origin), exactly(tile));
+            if (frame.linesClear(0)) {
+                ASSERT_FALSE(hasLine) << std::hexfloat << "start " << start << " disp " << disp << " size "
+                                      << size << " origin " << origin << " tile " << tile;
+            }
+            lineFound = lineFound || hasLine;
+        }
+        clearAtTheLimit += frame.linesClear(0) && std::fabs(target) >= std::ldexp(1.0, q + p - 1) ? 1 : 0;
+        lineWhereNotClear += !frame.linesClear(0) && lineFound ? 1 : 0;
+        lineAcrossABinade += !frame.linesClear(0) && lineFound && std::fabs(start) < power ? 1 : 0;
+    }
+    EXPECT_GT(admitted, 10000);
+    EXPECT_GT(clearAtTheLimit, 500) << "too few frames cleared at the bound's limit";
+    EXPECT_GT(lineWhereNotClear, 1000) << "too few frames with a line between an end and the value above it";
+    EXPECT_GT(lineAcrossABinade, 500) << "too few such frames whose end crossed a power of two";
+}
+
+TEST(LinesClear, NoGridLineFallsBetweenAnEndAndTheValueAboveInFloat) { checkLinesClear<float>(41); }
+TEST(LinesClear, NoGridLineFallsBetweenAnEndAndTheValueAboveInDouble) { checkLinesClear<double>(42); }
 
 }  // namespace
 }  // namespace tilesweep::detail

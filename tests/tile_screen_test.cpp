@@ -43,8 +43,8 @@ struct Tally {
 void expectScreenMatchesExactTest(const ResolveInput<double>& in, Tally& tally) {
     const MapRange range = doubleMapRange(in.map);
     ASSERT_TRUE(admitDoubleFrame(in, range));
-    FastFrame<double> frame(in, range.inverseTile);
-    FastFrame<double> exactFrame(in, range.inverseTile);
+    FastFrame<double> frame(in, range);
+    FastFrame<double> exactFrame(in, range);
     const auto& mx = exactFrame.axis(0);
     const auto& my = exactFrame.axis(1);
     tally.farEdgeNotADouble += (mx.highLow != 0) + (my.highLow != 0);

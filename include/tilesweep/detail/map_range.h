@@ -13,11 +13,14 @@ namespace tilesweep::detail {
 /// and the tile size's reciprocal per axis, fl(1 / tile) in double, which the fast path's cell
 /// estimates multiply by (src/fast_frame.h; every estimate carries a certified margin).
 /// `common` (double maps): whether the range test's short form may decide this map's frames.
+/// `lineBit` per axis: the exponent of the lowest set bit of the origin and the tile size, which
+/// every grid line is a multiple of (src/fast_frame.h, FastFrame::linesClearOf).
 struct MapRange {
     bool admitted = false;
     bool common = false;
     int top[2] = {0, 0};
     int lowest[2] = {0, 0};
+    int lineBit[2] = {0, 0};
     double inverseTile[2] = {0, 0};
 };
 
