@@ -63,8 +63,11 @@ template <class T>
 #if defined(__GNUC__)
 __attribute__((noinline))
 #endif
-void resolveMovingFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output, ContactPositions positions,
-                        const MapRange* prepared, ResolveResult<T>& result) noexcept {
+ResolveResult<T>
+resolveMovingFrame(const TileMapView<T>& map, const MoveInput<T>& move, const ResolveOutput<T>& output,
+                   ContactPositions positions, const MapRange* prepared) noexcept {
+    const ResolveInput<T> input{map, move.box, move.displacement};
+    ResolveResult<T> result;  // returned by name on every path (NRVO: the caller's slot)
     // The fast path, when the range test admits the frame: float frames on exact doubles,
     // double frames on exact pairs under a certified filter. The range test implies the frame
     // is valid, so isValid only runs for the frames it turns away.
@@ -81,7 +84,7 @@ void resolveMovingFrame(const ResolveInput<T>& input, const ResolveOutput<T>& ou
         bool refined = false;
         if (solveFast(input, output, positions, range, result, refined)) {
             recordPath(output, refined ? DecisionPath::Filtered : DecisionPath::Fast);
-            return;
+            return result;
         }
     } else if (!isValid(input)) {
         result = ResolveResult<T>{};
@@ -89,15 +92,43 @@ void resolveMovingFrame(const ResolveInput<T>& input, const ResolveOutput<T>& ou
         result.position = input.box.pos;
         if (!std::isfinite(result.position.x) || !std::isfinite(result.position.y)) result.position = {0, 0};
         recordPath(output, DecisionPath::Exact);
-        return;
+        return result;
     }
     recordPath(output, DecisionPath::Exact);
     result = solveOnLattice(input, output, positions);  // over whatever the fast path wrote
+    return result;
 }
 
-template void resolveMovingFrame<float>(const ResolveInput<float>&, const ResolveOutput<float>&,
-                                        ContactPositions, const MapRange*, ResolveResult<float>&) noexcept;
-template void resolveMovingFrame<double>(const ResolveInput<double>&, const ResolveOutput<double>&,
-                                         ContactPositions, const MapRange*, ResolveResult<double>&) noexcept;
+template ResolveResult<float> resolveMovingFrame<float>(const TileMapView<float>&, const MoveInput<float>&,
+                                                        const ResolveOutput<float>&, ContactPositions,
+                                                        const MapRange*) noexcept;
+template ResolveResult<double> resolveMovingFrame<double>(const TileMapView<double>&,
+                                                          const MoveInput<double>&,
+                                                          const ResolveOutput<double>&, ContactPositions,
+                                                          const MapRange*) noexcept;
+
+template <class T>
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+ResolveResult<T>
+resolveStillFrame(const TileMapView<T>& map, const MoveInput<T>& move, const ResolveOutput<T>& output,
+                  ContactPositions positions, const MapRange* prepared) noexcept {
+    // A zero move: the start overlaps alone, from the cells under the box (zero_move.h).
+    ResolveResult<T> result;
+    if (resolveZeroMove(ResolveInput<T>{map, move.box, move.displacement}, output, result,
+                        prepared != nullptr)) {  // prepared: a valid map
+        recordPath(output, DecisionPath::Fast);
+        return result;
+    }
+    return resolveMovingFrame(map, move, output, positions, prepared);
+}
+
+template ResolveResult<float> resolveStillFrame<float>(const TileMapView<float>&, const MoveInput<float>&,
+                                                       const ResolveOutput<float>&, ContactPositions,
+                                                       const MapRange*) noexcept;
+template ResolveResult<double> resolveStillFrame<double>(const TileMapView<double>&, const MoveInput<double>&,
+                                                         const ResolveOutput<double>&, ContactPositions,
+                                                         const MapRange*) noexcept;
 
 }  // namespace tilesweep::detail

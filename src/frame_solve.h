@@ -10,6 +10,7 @@
 #include "zero_move.h"
 
 #include "tilesweep/detail/map_range.h"
+#include "tilesweep/mover.h"
 #include "tilesweep/resolve.h"
 
 #include <cstdint>
@@ -27,41 +28,54 @@ inline void recordPath(const ResolveOutput<T>& output, DecisionPath path) noexce
 /// contacts, so that a frame resolved into their inline buffer pays nothing for them.
 enum class ContactPositions : std::uint8_t { Placed, Skipped };
 
-/// resolveMove for every frame but the zero moves resolveZeroMove settles (frame_solve.cpp), into
-/// `result`, which must be as default-initialized.
+/// resolveMove for every frame but the zero moves resolveZeroMove settles (frame_solve.cpp). The
+/// map and the move come apart, by reference, and the result is returned, so that resolveFrame's
+/// call to it is a tail call: it passes on its caller's arguments (a prepared map's view and
+/// range, the mover's input) and return slot, and builds nothing of its own.
 template <class T>
-void resolveMovingFrame(const ResolveInput<T>& input, const ResolveOutput<T>& output,
-                        ContactPositions positions, const MapRange* prepared,
-                        ResolveResult<T>& result) noexcept;
+[[nodiscard]] ResolveResult<T> resolveMovingFrame(const TileMapView<T>& map, const MoveInput<T>& move,
+                                                  const ResolveOutput<T>& output, ContactPositions positions,
+                                                  const MapRange* prepared) noexcept;
 
-/// resolveMove, with the choice above: the zero moves resolveZeroMove settles (zero_move.h), then
-/// resolveMovingFrame. `prepared` is the map's range test (range_admission.h) when the map was
-/// prepared (PreparedMap), or null: it is then computed for the frame. Inline, so that each entry
-/// point (resolve.cpp, mover.cpp) goes straight to the zero move or to resolveMovingFrame.
-///
-/// One result object, written in place by whichever path settles the frame and returned by name
-/// on every path, so that it is the caller's (NRVO): a copy at the end would read whole vectors
-/// of a struct just written field by field, which stalls the store forwarding.
+/// resolveMove for a frame whose displacement is zero (frame_solve.cpp): resolveZeroMove when it
+/// settles the frame (zero_move.h), otherwise resolveMovingFrame.
 template <class T>
-[[nodiscard]] inline ResolveResult<T> resolveFrame(const ResolveInput<T>& input,
+[[nodiscard]] ResolveResult<T> resolveStillFrame(const TileMapView<T>& map, const MoveInput<T>& move,
+                                                 const ResolveOutput<T>& output, ContactPositions positions,
+                                                 const MapRange* prepared) noexcept;
+
+/// resolveMove: resolveMovingFrame or resolveStillFrame, as the displacement is zero or not.
+/// `prepared` is the map's range test (range_admission.h) when the map was prepared
+/// (PreparedMap), or null: it is then computed for the frame. Inline, so that each entry point
+/// (resolve.cpp, mover.cpp) goes straight to one of them, by a tail call: it needs no registers
+/// of its own to save, and passes on its caller's return slot, which the callee writes in place
+/// (returned by name on every path, NRVO: a copy at the end would read whole vectors of a struct
+/// just written field by field, which stalls the store forwarding).
+template <class T>
+[[nodiscard]] inline ResolveResult<T> resolveFrame(const TileMapView<T>& map, const MoveInput<T>& move,
                                                    const ResolveOutput<T>& output, ContactPositions positions,
                                                    const MapRange* prepared) noexcept {
-    ResolveResult<T> result;
-    // A zero move: the start overlaps alone, from the cells under the box (zero_move.h).
-    if (input.displacement.x == 0 && input.displacement.y == 0 &&
-        resolveZeroMove(input, output, result, prepared != nullptr)) {  // prepared: a valid map
-        recordPath(output, DecisionPath::Fast);
-        return result;
-    }
-    resolveMovingFrame(input, output, positions, prepared, result);
-    return result;
+    if (move.displacement.x != 0 || move.displacement.y != 0)  // a NaN too: the moving frame refuses it
+        return resolveMovingFrame(map, move, output, positions, prepared);
+    return resolveStillFrame(map, move, output, positions, prepared);
 }
 
-extern template void resolveMovingFrame<float>(const ResolveInput<float>&, const ResolveOutput<float>&,
-                                               ContactPositions, const MapRange*,
-                                               ResolveResult<float>&) noexcept;
-extern template void resolveMovingFrame<double>(const ResolveInput<double>&, const ResolveOutput<double>&,
-                                                ContactPositions, const MapRange*,
-                                                ResolveResult<double>&) noexcept;
+extern template ResolveResult<float> resolveMovingFrame<float>(const TileMapView<float>&,
+                                                               const MoveInput<float>&,
+                                                               const ResolveOutput<float>&, ContactPositions,
+                                                               const MapRange*) noexcept;
+extern template ResolveResult<double> resolveMovingFrame<double>(const TileMapView<double>&,
+                                                                 const MoveInput<double>&,
+                                                                 const ResolveOutput<double>&,
+                                                                 ContactPositions, const MapRange*) noexcept;
+
+extern template ResolveResult<float> resolveStillFrame<float>(const TileMapView<float>&,
+                                                              const MoveInput<float>&,
+                                                              const ResolveOutput<float>&, ContactPositions,
+                                                              const MapRange*) noexcept;
+extern template ResolveResult<double> resolveStillFrame<double>(const TileMapView<double>&,
+                                                                const MoveInput<double>&,
+                                                                const ResolveOutput<double>&,
+                                                                ContactPositions, const MapRange*) noexcept;
 
 }  // namespace tilesweep::detail

@@ -36,8 +36,7 @@ ResolveResult<T> resolveOnPrepared(const PreparedMap<T>& map, const MoveInput<T>
         invalid.position = isFinite(input.box.pos) ? input.box.pos : Vec2<T>{0, 0};
         return invalid;
     }
-    return detail::resolveFrame(ResolveInput<T>{map.view(), input.box, input.displacement}, output,
-                                detail::ContactPositions::Placed, &map.mapRange());
+    return detail::resolveFrame(map.view(), input, output, detail::ContactPositions::Placed, &map.mapRange());
 }
 
 /// floor(fl(size / tile)) + 2 on one axis, in int64, saturated far above INT32_MAX.
@@ -86,7 +85,7 @@ MoveResult<T> moveAndSlideOf(const PreparedMap<T>& map, const MoveInput<T>& inpu
     // The contacts' positions only when the caller may receive the contacts.
     const bool wanted = direct || (contacts != nullptr && capacity > 0);
     const ResolveResult<T> s = detail::resolveFrame(
-        ResolveInput<T>{map.view(), input.box, input.displacement}, ResolveOutput<T>{buffer, bufferCapacity},
+        map.view(), input, ResolveOutput<T>{buffer, bufferCapacity},
         wanted ? detail::ContactPositions::Placed : detail::ContactPositions::Skipped, &map.mapRange());
     if (s.status == ResolveStatus::InvalidInput) return refuse(input, MoveStatus::InvalidInput);
     r.position = s.position;

@@ -12,7 +12,8 @@ namespace tilesweep {
 
 template <class T>
 ResolveResult<T> resolveMove(const ResolveInput<T>& input, const ResolveOutput<T>& output) noexcept {
-    return detail::resolveFrame(input, output, detail::ContactPositions::Placed, nullptr);
+    return detail::resolveFrame(input.map, MoveInput<T>{input.box, input.displacement}, output,
+                                detail::ContactPositions::Placed, nullptr);
 }
 
 template ResolveResult<float> resolveMove<float>(const ResolveInput<float>&,
