@@ -46,6 +46,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <type_traits>
 
 namespace tilesweep::detail {
@@ -78,13 +79,16 @@ public:
                             in.map.tileSize.y, in.map.rows, range.inverseTile[1]);
         start_[0] = in.box.pos.x;
         start_[1] = in.box.pos.y;
-        linesClear_[0] = linesClearOf(in.box.pos.x, in.displacement.x, in.box.size.x, range.lineBit[0]);
-        linesClear_[1] = linesClearOf(in.box.pos.y, in.displacement.y, in.box.size.y, range.lineBit[1]);
+        lineBit_[0] = range.lineBit[0];
+        lineBit_[1] = range.lineBit[1];
     }
 
     /// Whether no grid line can fall between an end on axis `a` and the value above it
     /// (linesClearOf): the amended rule's test is then skipped.
-    bool linesClear(int a) const noexcept { return linesClear_[a]; }
+    bool linesClear(int a) const noexcept {
+        const Motion& m = axis_[a];
+        return linesClearOf(m.low, m.disp, m.size, lineBit_[a]);
+    }
     /// Whether some predicate needed its exact refinement (DecisionPath::Filtered).
     [[nodiscard]] bool refined() const noexcept { return refined_; }
 
@@ -268,8 +272,10 @@ public:
     ///   errs by the reciprocal's and the product's roundings alone (kFloatLineReachRelative).
     ///   Double frames: the pair's low part is left out (kGridLineReachUlps).
     [[gnu::always_inline]] LineTest gridLineAhead(const Coord& exact, int a, bool needed) const noexcept {
-        // One branch, which a game predicts: its boxes' sizes and its map stay the same.
-        if (linesClear_[a]) return LineTest::No;
+        // One branch, which a game predicts: its boxes' sizes and its map stay the same. Asked
+        // here, of inexact ends alone: a frame whose ends are floats (moves by whole pixels) pays
+        // nothing for it.
+        if (linesClear(a)) return LineTest::No;
         const Motion& m = axis_[a];
         if constexpr (std::is_same<T, float>::value) {
             const double far = exact + m.size;
@@ -364,26 +370,18 @@ private:
     /// 2^E with E one above the larger one's binade. So E <= q + p suffices. It holds for the boxes of a
     /// pixel game (sizes of whole or half pixels, maps of whole tiles), and for them the grid-line filter
     /// costs one predicted branch.
-    static bool linesClearOf(T pos, T disp, T size, int lineBit) noexcept {
-        if constexpr (std::is_same<T, float>::value) {
-            const std::uint32_t larger = std::max(magnitudeBits(pos), magnitudeBits(disp));
-            const int ends = static_cast<int>(larger >> 23) - 125;  // |x|, |dx| < 2^(field - 126)
+    /// The box's inputs are read as doubles, which hold a float's value and binade exactly.
+    [[gnu::always_inline]] static bool linesClearOf(double pos, double disp, double size,
+                                                    int lineBit) noexcept {
+        constexpr int p = std::numeric_limits<T>::digits;  // 24 or 53
+        const std::uint64_t larger = std::max(magnitudeBits(pos), magnitudeBits(disp));
+        const int ends = static_cast<int>(larger >> 52) - 1021;  // |x|, |dx| < 2^(field - 1022)
 #if defined(TILESWEEP_FAULT_LINES_CLEAR_SIZE_IGNORED)
-            static_cast<void>(size);
-            return ends <= lineBit + 24;  // deliberate fault: the size's bits left out
+        static_cast<void>(size);
+        return ends <= lineBit + p;  // deliberate fault: the size's bits left out
 #else
-            return ends <= std::min(lineBit, lowestSetBitOf(size)) + 24;
+        return ends <= std::min(lineBit, lowestBitOf(magnitudeBits(size))) + p;
 #endif
-        } else {
-            const std::uint64_t larger = std::max(magnitudeBits(pos), magnitudeBits(disp));
-            const int ends = static_cast<int>(larger >> 52) - 1021;  // |x|, |dx| < 2^(field - 1022)
-#if defined(TILESWEEP_FAULT_LINES_CLEAR_SIZE_IGNORED)
-            static_cast<void>(size);
-            return ends <= lineBit + 53;  // deliberate fault: the size's bits left out
-#else
-            return ends <= std::min(lineBit, lowestBitOf(magnitudeBits(size))) + 53;
-#endif
-        }
     }
 
     /// A margin of `ulps` units of u times `magnitude`, in cells (proof_constants.h).
@@ -410,7 +408,7 @@ private:
     const TileMapView<T>& map_;
     Motion axis_[2];
     T start_[2];
-    bool linesClear_[2];  ///< linesClearOf, per axis
+    int lineBit_[2];  ///< MapRange::lineBit, per axis
     bool refined_ = false;
 };
 

@@ -76,19 +76,29 @@ namespace tilesweep::detail {
     return least == 0 ? 255 : static_cast<int>(least >> 23);
 }
 
-/// The exponent of the lowest set bit of a float, 100000 for a zero so that a zero bounds nothing
-/// (a subnormal reads as if its field were 1, as its ulp is).
-[[nodiscard, gnu::always_inline]] inline int lowestSetBitOf(float v) noexcept {
-    const std::uint32_t magnitude = magnitudeBits(v);
-    const int field = static_cast<int>(magnitude >> 23);
-    const std::uint32_t significand = (magnitude & 0x7fffffu) | (field == 0 ? 0u : 0x800000u);
-    return magnitude == 0 ? 100000 : std::max(field, 1) - 150 + countTrailingZeros64(significand);
+/// The magnitude bits of a double (its sign cleared): as unsigned integers they order like |v|,
+/// and bits >> 52 is the biased exponent field (0 for zero and subnormals, 2047 for infinities
+/// and NaNs).
+[[nodiscard, gnu::always_inline]] inline std::uint64_t magnitudeBits(double v) noexcept {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    return bits & ~(std::uint64_t{1} << 63);
+}
+
+/// The unbiased exponent of a double's lowest set bit (its magnitude bits), 100000 for a zero so
+/// that a zero bounds nothing.
+[[nodiscard, gnu::always_inline]] inline int lowestBitOf(std::uint64_t magnitude) noexcept {
+    const int field = static_cast<int>(magnitude >> 52);
+    const std::uint64_t significand = (magnitude & ((std::uint64_t{1} << 52) - 1)) | (std::uint64_t{1} << 52);
+    const int bit = field - 1023 - 52 + countTrailingZeros64(significand);  // defined for a zero too
+    return magnitude == 0 ? 100000 : bit;
 }
 
 /// The float map's range (see the top of this file): top[a] is edgeTop on the axis, a biased
 /// field with |origin + k*tile| < 2^(top - 126) for |k| <= cells + 2; lowest[a] the least field
 /// of the axis's nonzero map inputs (255 when none is nonzero; 0 when one is subnormal, which
 /// the frame test turns away). NaNs and infinities read field 255 and fail the frame test's top.
+/// lineBit[a]: the lowest set bit of the axis's origin and tile (FastFrame::linesClearOf).
 [[nodiscard]] inline MapRange floatMapRange(const TileMapView<float>& map) noexcept {
     MapRange r;
     r.admitted = mapHasValidShape(map) && map.columns < (1 << 24) && map.rows < (1 << 24);
@@ -103,7 +113,8 @@ namespace tilesweep::detail {
         // origin reads field 0, below any tile's.
         r.top[a] = std::max(static_cast<int>(o >> 23), static_cast<int>(t >> 23) + cellBits) + 1;
         r.lowest[a] = leastField(std::min(o - 1, t - 1));
-        r.lineBit[a] = std::min(lowestSetBitOf(origin[a]), lowestSetBitOf(tile[a]));
+        r.lineBit[a] = std::min(lowestBitOf(magnitudeBits(static_cast<double>(origin[a]))),
+                                lowestBitOf(magnitudeBits(static_cast<double>(tile[a]))));
         r.inverseTile[a] = 1 / static_cast<double>(tile[a]);
     }
     return r;
@@ -171,15 +182,6 @@ namespace tilesweep::detail {
     return floatSpanFits(std::max(boxTop + 2, tileTop), 1, lowest);
 }
 
-/// The magnitude bits of a double (its sign cleared): as unsigned integers they order like |v|,
-/// and bits >> 52 is the biased exponent field (0 for zero and subnormals, 2047 for infinities
-/// and NaNs).
-[[nodiscard, gnu::always_inline]] inline std::uint64_t magnitudeBits(double v) noexcept {
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &v, sizeof bits);
-    return bits & ~(std::uint64_t{1} << 63);
-}
-
 /// Whether a nonzero double (its magnitude bits) lies within [2^-250, 2^251)
 /// (kDoubleFrameExponentLimit): one unsigned comparison of the field's distance from the bottom.
 [[nodiscard, gnu::always_inline]] inline bool fieldInDoubleFrameRange(std::uint64_t magnitude) noexcept {
@@ -195,15 +197,6 @@ namespace tilesweep::detail {
 [[nodiscard, gnu::always_inline]] inline bool inDoubleFrameRange(std::uint64_t magnitude) noexcept {
     const bool inRange = fieldInDoubleFrameRange(magnitude);
     return (magnitude == 0) | inRange;
-}
-
-/// The unbiased exponent of a double's lowest set bit (its magnitude bits), 100000 for a zero so
-/// that a zero bounds nothing.
-[[nodiscard, gnu::always_inline]] inline int lowestBitOf(std::uint64_t magnitude) noexcept {
-    const int field = static_cast<int>(magnitude >> 52);
-    const std::uint64_t significand = (magnitude & ((std::uint64_t{1} << 52) - 1)) | (std::uint64_t{1} << 52);
-    const int bit = field - 1023 - 52 + countTrailingZeros64(significand);  // defined for a zero too
-    return magnitude == 0 ? 100000 : bit;
 }
 
 /// The unbiased exponent field of a double (its magnitude bits): |v| in [2^f, 2^(f+1)); -100000
