@@ -16,8 +16,9 @@
 //
 // The arithmetic provides start(a), axis(a).dir, compareWithStart(exact, a) (the sign of exact -
 // start), isRepresentable(exact), roundToward(exact, down) (exact rounded toward minus infinity
-// when `down`, plus infinity otherwise: without a branch on `down`, which is the data's) and, for a
-// deliberate fault, roundNearest(exact), and gridLineAhead(exact, a, needed): whether a grid line
+// when `down`, plus infinity otherwise: without a branch on `down`, which is the data's),
+// roundNearest(exact) (the value itself when representable; and the deliberate fault
+// ROUND_NEAREST), and gridLineAhead(exact, a, needed): whether a grid line
 // lies in [exact + size, up + size), up being exact rounded toward plus infinity, as LineTest. Its
 // answer is read only when `needed`; it must then be No, Yes or Undecided (which sends the frame
 // to the lattice), and otherwise No.
@@ -51,7 +52,7 @@ template <class Arith, class Coord, class T>
 #else
     // A representable end is its own rounding (at the start, the start itself, its sign of zero too).
     if (m.isRepresentable(exact)) {
-        out = m.compareWithStart(exact, a) == 0 ? m.start(a) : m.roundToward(exact, true);
+        out = m.compareWithStart(exact, a) == 0 ? m.start(a) : m.roundNearest(exact);
         return true;
     }
     // Not representable, so not the start: it lies on the side the axis moved to.
