@@ -480,7 +480,8 @@ TEST(DoubleFrameRange, AdmitsOnlyFramesWithExactFarEdgeDistances) {
 
 /// The fast path's shortcut for the amended rule (FastFrame::linesClearOf): where it says no grid
 /// line can fall between an end and the value above it, none does. Each draw aims at the line the
-/// shortcut must see: a box size and a grid whose lowest set bit is 2^q, and an end 2^(q - 5)
+/// shortcut must see: a box size, tile and origin whose lowest set bit is 2^q (the size's, the
+/// tile's or the origin's, in turn), and an end 2^(q - 5)
 /// short of g - size for a grid line g, at magnitudes from 2^(q + p - 2) to 2^(q + p + 2) (p = 24
 /// for float, 53 for double), where g - size stops being representable. In half the draws g - size
 /// lies just above a power of two and the start just below it, so that the end crosses into the
@@ -500,13 +501,15 @@ void checkLinesClear(std::uint64_t seed) {
     int lineAcrossABinade = 0;
     for (int draw = 0; draw < 20000; ++draw) {
         const int q = std::uniform_int_distribution<int>(-12, 6)(rng);
-        // A size and a tile with a few bits, one of them with its lowest bit at 2^q.
-        const double size =
-            std::ldexp(static_cast<double>(2 * (rng() % 64) + 1), q + static_cast<int>(rng() % 2));
-        const double tile =
-            std::ldexp(static_cast<double>(2 * (rng() % 8) + 1), q + 2 + static_cast<int>(rng() % 3));
-        const double origin =
+        // A size, a tile and an origin with a few bits each; the size, the tile or the origin (in
+        // turn) has the lowest bit, 2^q, the others' lie at least two bits above it.
+        const int finest = (draw / 2) % 3;
+        const auto odd = [&rng](int below) { return static_cast<double>(2 * (rng() % below) + 1); };
+        const double size = std::ldexp(odd(64), q + static_cast<int>(rng() % 2) + (finest == 0 ? 0 : 2));
+        const double tile = std::ldexp(odd(8), finest == 1 ? q : q + 2 + static_cast<int>(rng() % 3));
+        double origin =
             (rng() % 2) ? 0.0 : tile * static_cast<double>(static_cast<std::int64_t>(rng() % 64) - 32);
+        if (finest == 2) origin = std::ldexp(odd(32), q) * ((rng() % 2) ? 1.0 : -1.0);
         const bool acrossABinade = (draw % 2) == 0;
         const int magnitude = std::uniform_int_distribution<int>(q + p - 2, q + p + 1)(rng);
         const double power = std::ldexp(1.0, magnitude);
