@@ -363,14 +363,14 @@ private:
     /// its lowest set bit, so g - size is a multiple of 2^q, q the lesser of the two. A line in
     /// the interval has exact <= g - size < up, and as up is the least T at or above exact,
     /// g - size is then no T. But a multiple of 2^q at most 2^(q + p) in magnitude is a T (p = 24
-    /// for float, 53 for double; q is at least the least input's ulp exponent, -149 or above in
-    /// float frames and -302 or above in double frames by the range test), and |g - size| <= max(|exact|,
-    /// |up|) <= 2^E when every end is below 2^E in magnitude (2^E is a T, so |up| <= 2^E too). Ends lie
-    /// between the start and the start plus the displacement (final_rounding.h), so |exact| <= |x| + |dx| <
-    /// 2^E with E one above the larger one's binade. So E <= q + p suffices. It holds for the boxes of a
-    /// pixel game (sizes of whole or half pixels, maps of whole tiles), and for them the grid-line filter
-    /// costs one predicted branch.
-    /// The box's inputs are read as doubles, which hold a float's value and binade exactly.
+    /// for float, 53 for double; q is at least the least input's ulp exponent: -149 or above in
+    /// float frames, -302 or above in double frames by the range test), and
+    /// |g - size| <= max(|exact|, |up|) <= 2^E when every end is below 2^E in magnitude (2^E is a
+    /// T, so |up| <= 2^E too). Ends lie between the start and the start plus the displacement
+    /// (final_rounding.h), so |exact| <= |x| + |dx| < 2^E with E one above the larger one's
+    /// binade. So E <= q + p suffices. It holds for the boxes of a pixel game (sizes of whole or
+    /// half pixels, maps of whole tiles), and for them the grid-line filter costs one predicted
+    /// branch. The inputs come as doubles, which hold a float's value and binade exactly.
     [[gnu::always_inline]] static bool linesClearOf(double pos, double disp, double size,
                                                     int lineBit) noexcept {
         constexpr int p = std::numeric_limits<T>::digits;  // 24 or 53
