@@ -504,7 +504,7 @@ void checkLinesClear(std::uint64_t seed) {
         // A size, a tile and an origin with a few bits each; the size, the tile or the origin (in
         // turn) has the lowest bit, 2^q, the others' lie at least two bits above it.
         const int finest = (draw / 2) % 3;
-        const auto odd = [&rng](int below) { return static_cast<double>(2 * (rng() % below) + 1); };
+        const auto odd = [&rng](std::uint64_t below) { return static_cast<double>(2 * (rng() % below) + 1); };
         const double size = std::ldexp(odd(64), q + static_cast<int>(rng() % 2) + (finest == 0 ? 0 : 2));
         const double tile = std::ldexp(odd(8), finest == 1 ? q : q + 2 + static_cast<int>(rng() % 3));
         double origin =
