@@ -244,7 +244,7 @@ public:
     /// Float frames: roundToFloat (exact_double.h), on the bits of the exact double. Double frames:
     /// the high part (fl(value), to nearest), moved one step down when `down` and the low part is
     /// negative, up when rounding up and it is positive (the high part is then nonzero).
-    T roundToward(const Coord& exact, bool down) const noexcept {
+    [[gnu::always_inline]] T roundToward(const Coord& exact, bool down) const noexcept {
         if constexpr (std::is_same<T, float>::value) {
             return roundToFloat(exact + 0.0, !down);
         } else {

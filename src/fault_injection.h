@@ -33,6 +33,9 @@
 //   LINES_CLEAR_SIZE_IGNORED  the fast path's proof that no grid line can fall between an end
 //                      and the value above it reads the grid's lowest bit alone, not the box
 //                      size's, so it skips the amended rule's test where it applies (fast_frame.h)
+//   FLOAT_WINDOW_TOO_LOW  the float range test's short form (admitFloatFrameInWindow) with its
+//                      window six binades too low at the bottom, past what the span test allows
+//                      with the map's top (range_admission.h)
 // Issue 20's four classes, one fault standing for each:
 //   PAIR_REFINEMENT_SWAPPED  double near-ties: the exact refinement of the pair comparison called
 //                      with its two sides swapped, so a nonzero sign inside the filter's band
@@ -53,6 +56,6 @@
     defined(TILESWEEP_FAULT_FAST_RANGE_TOO_WIDE) || defined(TILESWEEP_FAULT_FAST_RANGE_FAR_TOO_WIDE) ||  \
     defined(TILESWEEP_FAULT_PAIR_REFINEMENT_SWAPPED) || defined(TILESWEEP_FAULT_RANGE_NO_LOWER_BOUND) || \
     defined(TILESWEEP_FAULT_INLINE_LIMIT_EXCLUSIVE) || defined(TILESWEEP_FAULT_C_ERROR_CODES_SWAPPED) || \
-    defined(TILESWEEP_FAULT_LINES_CLEAR_SIZE_IGNORED)
+    defined(TILESWEEP_FAULT_LINES_CLEAR_SIZE_IGNORED) || defined(TILESWEEP_FAULT_FLOAT_WINDOW_TOO_LOW)
 #define TILESWEEP_FAULT_INJECTED 1
 #endif

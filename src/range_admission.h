@@ -117,6 +117,22 @@ namespace tilesweep::detail {
                                 lowestBitOf(magnitudeBits(static_cast<double>(tile[a]))));
         r.inverseTile[a] = 1 / static_cast<double>(tile[a]);
     }
+    // The short form's window (admitFloatFrameInWindow): box fields up to fH = top - 1, the
+    // binade of the map's farthest tile edges (a box on the map lies within), so that the full
+    // test's top is at most fH + 2 = top + 1; and down to the least fL the span test allows with
+    // that top. Field fL is 2^(fL - 127) and up, field fH below 2^(fH - 126).
+    const int top = std::max(r.top[0], r.top[1]) + 1;
+    const int mapLowest = std::min(r.lowest[0], r.lowest[1]);
+    const int highField = top - 2;
+    const int lowField = std::max(1, top - 126 + 1 + 150 - kFastSpanBits);
+    r.common = r.admitted && mapLowest != 0 && lowField <= highField && highField <= 254 &&
+               floatSpanFits(top, 1, std::min(lowField, mapLowest));
+#if defined(TILESWEEP_FAULT_FLOAT_WINDOW_TOO_LOW)
+    r.commonLeast = static_cast<std::uint32_t>(std::max(1, lowField - 6)) << 23;  // deliberate fault
+#else
+    r.commonLeast = static_cast<std::uint32_t>(lowField) << 23;
+#endif
+    r.commonLimit = static_cast<std::uint32_t>(highField + 1) << 23;
     return r;
 }
 
@@ -125,8 +141,8 @@ namespace tilesweep::detail {
 /// and no coordinate near the top of float's range. The six box inputs are read as integers in a
 /// tree of scalar minimums and maximums (a loop over an array invites a vectorization that needs
 /// SSE4.1 for unsigned minimums and costs twice the instructions without it).
-[[nodiscard, gnu::always_inline]] inline bool admitFloatFrame(const ResolveInput<float>& in,
-                                                              const MapRange& map) noexcept {
+[[nodiscard, gnu::always_inline]] inline bool admitFloatFrameFully(const ResolveInput<float>& in,
+                                                                   const MapRange& map) noexcept {
     const std::uint32_t x = magnitudeBits(in.box.pos.x);
     const std::uint32_t y = magnitudeBits(in.box.pos.y);
     const std::uint32_t w = bitsOf(in.box.size.x);  // with the sign: a negative size is refused
@@ -150,6 +166,39 @@ namespace tilesweep::detail {
     const int top = std::max(boxTop + 2, std::max(map.top[0], map.top[1]));
     const bool fits = floatSpanFits(top, 1, lowest);
     return map.admitted & positiveSizes & (lowest != 0) & fits;
+}
+
+/// The short form of admitFloatFrameFully, for the frames of a game: the map's window
+/// (floatMapRange: MapRange::commonLeast and commonLimit, the magnitude bits of 2^(fL - 127) and
+/// 2^(fH - 126)) holds every nonzero box input, the sizes positive. Then the box's fields lie in
+/// [fL, fH], so the full test's top is at most fH + 2 (which is above the map's tops) and its
+/// lowest at least min(fL, map's lowests): the values floatMapRange checked once for the map
+/// (MapRange::common), and the full test is monotonic in both. A few integer operations on the
+/// six inputs: no exponent arithmetic. A frame outside the window takes the full test, which
+/// decides.
+[[nodiscard, gnu::always_inline]] inline bool admitFloatFrameInWindow(const ResolveInput<float>& in,
+                                                                      const MapRange& map) noexcept {
+    const std::uint32_t x = magnitudeBits(in.box.pos.x);
+    const std::uint32_t y = magnitudeBits(in.box.pos.y);
+    const std::uint32_t w = bitsOf(in.box.size.x);  // with the sign: a negative size is above the window
+    const std::uint32_t h = bitsOf(in.box.size.y);
+    const std::uint32_t dx = magnitudeBits(in.displacement.x);
+    const std::uint32_t dy = magnitudeBits(in.displacement.y);
+    const std::uint32_t largest = std::max(std::max(std::max(x, y), std::max(w, h)), std::max(dx, dy));
+    // Zeros among the position and displacement wrap to the largest value here, so they never
+    // count (all four zero read 0, below the window); a zero size reads 0 itself.
+    const std::uint32_t leastMoving = std::min(std::min(x - 1, y - 1), std::min(dx - 1, dy - 1)) + 1;
+    const std::uint32_t leastSize = std::min(w, h);
+    const std::uint32_t least = std::min(leastMoving, leastSize);
+    return map.common & (largest < map.commonLimit) & (least >= map.commonLeast);
+}
+
+/// Whether the fast path holds every value of this float frame exactly: the short form, then,
+/// for a frame outside the map's window, the full test.
+[[nodiscard, gnu::always_inline]] inline bool admitFloatFrame(const ResolveInput<float>& in,
+                                                              const MapRange& map) noexcept {
+    if (admitFloatFrameInWindow(in, map)) return true;  // one branch, which a game predicts
+    return admitFloatFrameFully(in, map);
 }
 
 /// admitFloatFrame for a map not prepared: its range, then the frame's.

@@ -478,6 +478,71 @@ TEST(DoubleFrameRange, AdmitsOnlyFramesWithExactFarEdgeDistances) {
     EXPECT_GT(shortForm, 500) << "too few frames the short form admits";
 }
 
+/// The float range test's short form (admitFloatFrameInWindow) admits only frames the full test
+/// admits. Each input's binade is drawn from three below the map's window to two above it (and
+/// zeros, negative sizes, subnormals, infinities and NaNs now and then), so that the draws cross
+/// both ends of the window, where a window one binade too wide would admit what the span test
+/// refuses.
+TEST(FloatFrameRange, TheShortFormAdmitsOnlyWhatTheFullTestAdmits) {
+    std::mt19937_64 rng(43);
+    const std::vector<std::uint8_t> solid(4096, 0);
+    int maps = 0;
+    int admittedShort = 0;
+    int atTheWindowsFloor = 0;
+    int refusedBelowIt = 0;
+    for (int draw = 0; draw < 200000; ++draw) {
+        const float tile = std::ldexp(static_cast<float>(rng() % 16 + 1), static_cast<int>(rng() % 13) - 4);
+        const std::int32_t cells = static_cast<std::int32_t>(1 + rng() % 2000);
+        const float origin = (rng() % 2) ? 0.0F : tile * static_cast<float>(static_cast<int>(rng() % 1001) - 500);
+        const TileMapView<float> map{{origin, 0}, {tile, tile}, cells, 2, solid.data()};
+        const MapRange range = floatMapRange(map);
+        if (!range.common) continue;
+        ++maps;
+        const int low = static_cast<int>(range.commonLeast >> 23);
+        const int high = static_cast<int>(range.commonLimit >> 23) - 1;
+        const auto input = [&](bool size) {
+            const unsigned pick = static_cast<unsigned>(rng() % 64);
+            if (pick == 0) return size ? -1.0F : 0.0F;
+            if (pick == 1) return std::numeric_limits<float>::denorm_min() * static_cast<float>(rng() % 100 + 1);
+            if (pick == 2) return (rng() % 2) ? std::numeric_limits<float>::infinity() : std::nanf("");
+            const int field = std::uniform_int_distribution<int>(std::max(1, low - 3), std::min(254, high + 2))(rng);
+            const std::uint32_t bits = (static_cast<std::uint32_t>(field) << 23) |
+                                       static_cast<std::uint32_t>(rng() & 0x7fffff) |
+                                       (!size && rng() % 2 ? 0x80000000u : 0u);
+            float v = 0;
+            std::memcpy(&v, &bits, sizeof v);
+            return v;
+        };
+        const float x = input(false);
+        const float y = input(false);
+        const float w = input(true);
+        const float h = input(true);
+        const float dx = input(false);
+        const float dy = input(false);
+        const ResolveInput<float> in{map, {{x, y}, {w, h}}, {dx, dy}};
+        const bool inWindow = admitFloatFrameInWindow(in, range);
+        const bool fully = admitFloatFrameFully(in, range);
+        if (inWindow) {
+            ASSERT_TRUE(fully) << std::hexfloat << "box " << x << ", " << y << " size " << w << ", " << h
+                               << " move " << dx << ", " << dy << " origin " << origin << " tile " << tile
+                               << " cells " << cells << " window fields " << low << " to " << high;
+        }
+        admittedShort += inWindow ? 1 : 0;
+        int least = 255;
+        for (float v : {x, y, w, h, dx, dy}) {
+            std::uint32_t bits = 0;
+            std::memcpy(&bits, &v, sizeof bits);
+            if ((bits & 0x7fffffffu) != 0) least = std::min(least, static_cast<int>((bits >> 23) & 0xff));
+        }
+        atTheWindowsFloor += inWindow && least == low ? 1 : 0;
+        refusedBelowIt += !fully && least == low - 1 ? 1 : 0;
+    }
+    EXPECT_GT(maps, 100000);
+    EXPECT_GT(admittedShort, 20000) << "too few frames the short form admits";
+    EXPECT_GT(atTheWindowsFloor, 2000) << "too few admitted frames with an input in the window's lowest binade";
+    EXPECT_GT(refusedBelowIt, 2000) << "too few refused frames with an input one binade below the window";
+}
+
 /// The fast path's shortcut for the amended rule (FastFrame::linesClearOf): where it says no grid
 /// line can fall between an end and the value above it, none does. Each draw aims at the line the
 /// shortcut must see: a box size, tile and origin whose lowest set bit is 2^q (the size's, the

@@ -5,6 +5,8 @@
 // so that it is computed once per map instead of once per frame. Not part of the API: its fields
 // and their meaning belong to src/range_admission.h, which computes and reads them.
 
+#include <cstdint>
+
 namespace tilesweep::detail {
 
 /// The map's half of the range test (src/range_admission.h, floatMapRange and doubleMapRange):
@@ -12,7 +14,8 @@ namespace tilesweep::detail {
 /// every tile edge the solver forms (`top`) and one every map input is a multiple of (`lowest`);
 /// and the tile size's reciprocal per axis, fl(1 / tile) in double, which the fast path's cell
 /// estimates multiply by (src/fast_frame.h; every estimate carries a certified margin).
-/// `common` (double maps): whether the range test's short form may decide this map's frames.
+/// `common`: whether the range test's short form may decide this map's frames; for float maps,
+/// those whose nonzero box inputs have magnitude bits in [commonLeast, commonLimit) (the window).
 /// `lineBit` per axis: the exponent of the lowest set bit of the origin and the tile size, which
 /// every grid line is a multiple of (src/fast_frame.h, FastFrame::linesClearOf).
 struct MapRange {
@@ -21,6 +24,8 @@ struct MapRange {
     int top[2] = {0, 0};
     int lowest[2] = {0, 0};
     int lineBit[2] = {0, 0};
+    std::uint32_t commonLeast = 0;
+    std::uint32_t commonLimit = 0;
     double inverseTile[2] = {0, 0};
 };
 
