@@ -493,7 +493,8 @@ TEST(FloatFrameRange, TheShortFormAdmitsOnlyWhatTheFullTestAdmits) {
     for (int draw = 0; draw < 200000; ++draw) {
         const float tile = std::ldexp(static_cast<float>(rng() % 16 + 1), static_cast<int>(rng() % 13) - 4);
         const std::int32_t cells = static_cast<std::int32_t>(1 + rng() % 2000);
-        const float origin = (rng() % 2) ? 0.0F : tile * static_cast<float>(static_cast<int>(rng() % 1001) - 500);
+        const float origin =
+            (rng() % 2) ? 0.0F : tile * static_cast<float>(static_cast<int>(rng() % 1001) - 500);
         const TileMapView<float> map{{origin, 0}, {tile, tile}, cells, 2, solid.data()};
         const MapRange range = floatMapRange(map);
         if (!range.common) continue;
@@ -503,9 +504,11 @@ TEST(FloatFrameRange, TheShortFormAdmitsOnlyWhatTheFullTestAdmits) {
         const auto input = [&](bool size) {
             const unsigned pick = static_cast<unsigned>(rng() % 64);
             if (pick == 0) return size ? -1.0F : 0.0F;
-            if (pick == 1) return std::numeric_limits<float>::denorm_min() * static_cast<float>(rng() % 100 + 1);
+            if (pick == 1)
+                return std::numeric_limits<float>::denorm_min() * static_cast<float>(rng() % 100 + 1);
             if (pick == 2) return (rng() % 2) ? std::numeric_limits<float>::infinity() : std::nanf("");
-            const int field = std::uniform_int_distribution<int>(std::max(1, low - 3), std::min(254, high + 2))(rng);
+            const int field =
+                std::uniform_int_distribution<int>(std::max(1, low - 3), std::min(254, high + 2))(rng);
             const std::uint32_t bits = (static_cast<std::uint32_t>(field) << 23) |
                                        static_cast<std::uint32_t>(rng() & 0x7fffff) |
                                        (!size && rng() % 2 ? 0x80000000u : 0u);
@@ -539,7 +542,8 @@ TEST(FloatFrameRange, TheShortFormAdmitsOnlyWhatTheFullTestAdmits) {
     }
     EXPECT_GT(maps, 100000);
     EXPECT_GT(admittedShort, 20000) << "too few frames the short form admits";
-    EXPECT_GT(atTheWindowsFloor, 2000) << "too few admitted frames with an input in the window's lowest binade";
+    EXPECT_GT(atTheWindowsFloor, 2000)
+        << "too few admitted frames with an input in the window's lowest binade";
     EXPECT_GT(refusedBelowIt, 2000) << "too few refused frames with an input one binade below the window";
 }
 
