@@ -19,6 +19,7 @@
 
 #include "bit_ops.h"
 #include "fault_injection.h"
+#include "input_window.h"
 #include "proof_constants.h"
 #include "validity.h"
 
@@ -94,6 +95,15 @@ namespace tilesweep::detail {
     return magnitude == 0 ? 100000 : bit;
 }
 
+/// The float whose bits are the biased field `field` alone: 2^(field - 127), for fields 1 to 254;
+/// infinity for 255.
+[[nodiscard]] inline float powerOfField(int field) noexcept {
+    const std::uint32_t bits = static_cast<std::uint32_t>(field) << 23;
+    float v = 0;
+    std::memcpy(&v, &bits, sizeof v);
+    return v;
+}
+
 /// The float map's range (see the top of this file): top[a] is edgeTop on the axis, a biased
 /// field with |origin + k*tile| < 2^(top - 126) for |k| <= cells + 2; lowest[a] the least field
 /// of the axis's nonzero map inputs (255 when none is nonzero; 0 when one is subnormal, which
@@ -128,11 +138,11 @@ namespace tilesweep::detail {
     r.common = r.admitted && mapLowest != 0 && lowField <= highField && highField <= 254 &&
                floatSpanFits(top, 1, std::min(lowField, mapLowest));
 #if defined(TILESWEEP_FAULT_FLOAT_WINDOW_TOO_LOW)
-    r.commonLeast = static_cast<std::uint32_t>(std::max(1, lowField - 6)) << 23;  // deliberate fault
+    r.commonLeast = powerOfField(std::max(1, lowField - 6));  // deliberate fault
 #else
-    r.commonLeast = static_cast<std::uint32_t>(lowField) << 23;
+    r.commonLeast = powerOfField(lowField);
 #endif
-    r.commonLimit = static_cast<std::uint32_t>(highField + 1) << 23;
+    r.commonLimit = powerOfField(std::min(highField + 1, 255));  // 255: infinity (read only when common)
     return r;
 }
 
@@ -169,28 +179,15 @@ namespace tilesweep::detail {
 }
 
 /// The short form of admitFloatFrameFully, for the frames of a game: the map's window
-/// (floatMapRange: MapRange::commonLeast and commonLimit, the magnitude bits of 2^(fL - 127) and
-/// 2^(fH - 126)) holds every nonzero box input, the sizes positive. Then the box's fields lie in
+/// (floatMapRange: MapRange::commonLeast and commonLimit, 2^(fL - 127) and 2^(fH - 126)) holds
+/// every nonzero box input, the sizes positive (input_window.h). Then the box's fields lie in
 /// [fL, fH], so the full test's top is at most fH + 2 (which is above the map's tops) and its
 /// lowest at least min(fL, map's lowests): the values floatMapRange checked once for the map
-/// (MapRange::common), and the full test is monotonic in both. A few integer operations on the
-/// six inputs: no exponent arithmetic. A frame outside the window takes the full test, which
-/// decides.
+/// (MapRange::common), and the full test is monotonic in both. A few vector comparisons: no
+/// exponent arithmetic. A frame outside the window takes the full test, which decides.
 [[nodiscard, gnu::always_inline]] inline bool admitFloatFrameInWindow(const ResolveInput<float>& in,
                                                                       const MapRange& map) noexcept {
-    const std::uint32_t x = magnitudeBits(in.box.pos.x);
-    const std::uint32_t y = magnitudeBits(in.box.pos.y);
-    const std::uint32_t w = bitsOf(in.box.size.x);  // with the sign: a negative size is above the window
-    const std::uint32_t h = bitsOf(in.box.size.y);
-    const std::uint32_t dx = magnitudeBits(in.displacement.x);
-    const std::uint32_t dy = magnitudeBits(in.displacement.y);
-    const std::uint32_t largest = std::max(std::max(std::max(x, y), std::max(w, h)), std::max(dx, dy));
-    // Zeros among the position and displacement wrap to the largest value here, so they never
-    // count (all four zero read 0, below the window); a zero size reads 0 itself.
-    const std::uint32_t leastMoving = std::min(std::min(x - 1, y - 1), std::min(dx - 1, dy - 1)) + 1;
-    const std::uint32_t leastSize = std::min(w, h);
-    const std::uint32_t least = std::min(leastMoving, leastSize);
-    return map.common & (largest < map.commonLimit) & (least >= map.commonLeast);
+    return map.common & boxInputsInWindow(in.box, in.displacement, map.commonLeast, map.commonLimit);
 }
 
 /// Whether the fast path holds every value of this float frame exactly: the short form, then,
@@ -264,9 +261,9 @@ namespace tilesweep::detail {
 /// full test, which decides.
 inline constexpr int kCommonBoxTop = 31;
 inline constexpr int kCommonLowestBit = -72;
-/// 2^30 and 2^-20, as the magnitude bits of doubles.
-inline constexpr std::uint64_t kCommonLargestBits = std::uint64_t{1023 + 30} << 52;
-inline constexpr std::uint64_t kCommonLeastBits = std::uint64_t{1023 - 20} << 52;
+/// The window: [2^-20, 2^30) (input_window.h).
+inline constexpr double kCommonLargest = 0x1p30;
+inline constexpr double kCommonLeast = 0x1p-20;
 
 /// The double map's range (see admitDoubleFrame): per axis, top[a] with |origin + k*tile| <
 /// 2^top[a] for |k| <= cells + 2, and lowest[a] the least set bit of origin and tile; admitted
@@ -312,6 +309,8 @@ inline constexpr std::uint64_t kCommonLeastBits = std::uint64_t{1023 - 20} << 52
 /// out as exact pairs (farEdgeMinus). Branch-free over the six box inputs.
 [[nodiscard, gnu::always_inline]] inline bool admitDoubleFrame(const ResolveInput<double>& in,
                                                                const MapRange& map) noexcept {
+    // The short form (above): a game's frame is decided here, on one predictable branch.
+    if (map.common & boxInputsInWindow(in.box, in.displacement, kCommonLeast, kCommonLargest)) return true;
     const std::uint64_t x = magnitudeBits(in.box.pos.x);
     const std::uint64_t y = magnitudeBits(in.box.pos.y);
     const std::uint64_t w = magnitudeBits(in.box.size.x);
@@ -326,9 +325,6 @@ inline constexpr std::uint64_t kCommonLeastBits = std::uint64_t{1023 - 20} << 52
         std::min(std::min(std::min(x - 1, y - 1), std::min(w - 1, h - 1)), std::min(dx - 1, dy - 1)) + 1;
     // (All six zero would read field 0 and fail; zero sizes are turned away anyway.)
     const bool positiveSizes = (in.box.size.x > 0) & (in.box.size.y > 0);
-    // The short form (above): a game's frame is decided here, on one predictable branch.
-    const bool commonBox = (largest < kCommonLargestBits) & (least >= kCommonLeastBits);
-    if (map.common & commonBox & positiveSizes) return true;
     const bool largestInRange = fieldInDoubleFrameRange(largest);
     const bool leastInRange = fieldInDoubleFrameRange(least);
     const bool inRange = largestInRange & leastInRange;

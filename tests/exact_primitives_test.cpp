@@ -499,8 +499,8 @@ TEST(FloatFrameRange, TheShortFormAdmitsOnlyWhatTheFullTestAdmits) {
         const MapRange range = floatMapRange(map);
         if (!range.common) continue;
         ++maps;
-        const int low = static_cast<int>(range.commonLeast >> 23);
-        const int high = static_cast<int>(range.commonLimit >> 23) - 1;
+        const int low = std::ilogb(range.commonLeast) + 127;  // the window's fields, fL to fH
+        const int high = std::isinf(range.commonLimit) ? 254 : std::ilogb(range.commonLimit) + 127 - 1;
         const auto input = [&](bool size) {
             const unsigned pick = static_cast<unsigned>(rng() % 64);
             if (pick == 0) return size ? -1.0F : 0.0F;

@@ -5,8 +5,6 @@
 // so that it is computed once per map instead of once per frame. Not part of the API: its fields
 // and their meaning belong to src/range_admission.h, which computes and reads them.
 
-#include <cstdint>
-
 namespace tilesweep::detail {
 
 /// The map's half of the range test (src/range_admission.h, floatMapRange and doubleMapRange):
@@ -15,7 +13,7 @@ namespace tilesweep::detail {
 /// and the tile size's reciprocal per axis, fl(1 / tile) in double, which the fast path's cell
 /// estimates multiply by (src/fast_frame.h; every estimate carries a certified margin).
 /// `common`: whether the range test's short form may decide this map's frames; for float maps,
-/// those whose nonzero box inputs have magnitude bits in [commonLeast, commonLimit) (the window).
+/// those whose nonzero box inputs have magnitudes in [commonLeast, commonLimit) (the window).
 /// `lineBit` per axis: the exponent of the lowest set bit of the origin and the tile size, which
 /// every grid line is a multiple of (src/fast_frame.h, FastFrame::linesClearOf).
 struct MapRange {
@@ -24,8 +22,8 @@ struct MapRange {
     int top[2] = {0, 0};
     int lowest[2] = {0, 0};
     int lineBit[2] = {0, 0};
-    std::uint32_t commonLeast = 0;
-    std::uint32_t commonLimit = 0;
+    float commonLeast = 0;
+    float commonLimit = 0;
     double inverseTile[2] = {0, 0};
 };
 
