@@ -71,8 +71,13 @@ public:
     };
 
     /// The frame `in`, with its map's range (range_admission.h: the reciprocals of the tile size
-    /// and the grid lines' lowest bit, computed once per map when it was prepared).
-    FastFrame(const ResolveInput<T>& in, const MapRange& range) noexcept : map_(in.map) {
+    /// and the grid lines' lowest bit, computed once per map when it was prepared). `inWindow`:
+    /// the range test's short form admitted the frame, so the map's windowMagnitude bounds its
+    /// cell estimates' magnitudes (magnitude()).
+    FastFrame(const ResolveInput<T>& in, const MapRange& range, bool inWindow = false) noexcept
+        : map_(in.map), inWindow_(inWindow) {
+        windowMagnitude_[0] = range.windowMagnitude[0];
+        windowMagnitude_[1] = range.windowMagnitude[1];
         axis_[0] = makeAxis(in.box.pos.x, in.box.size.x, in.displacement.x, in.map.origin.x,
                             in.map.tileSize.x, in.map.columns, range.inverseTile[0]);
         axis_[1] = makeAxis(in.box.pos.y, in.box.size.y, in.displacement.y, in.map.origin.y,
@@ -105,12 +110,21 @@ public:
         return axis_[a].cellOf(axis_[a].low);
     }
 
+    /// The magnitude the cell estimates' margins take on axis `a` (proof_constants.h): |low| +
+    /// |high| + |disp| + |origin|, formed in that order, or for a frame in the map's window the
+    /// map's bound on it (MapRange::windowMagnitude, windowMagnitudeOf), at least as large. A
+    /// larger margin only adds cells for the exact tile test to reject.
+    [[gnu::always_inline]] double magnitude(int a) const noexcept {
+        if (inWindow_) return windowMagnitude_[a];  // one branch, which a game predicts
+        const Motion& g = axis_[a];
+        return ((std::fabs(g.low) + std::fabs(g.high)) + g.speed) + std::fabs(g.origin);
+    }
+
     /// The cells the box's span covers at the start, estimated (kCellEstimateErrorUlps).
     CellRange startCells(int a) const noexcept {
         const Motion& g = axis_[a];
-        const double magnitude = (std::fabs(g.low) + std::fabs(g.high)) + std::fabs(g.origin);
         return estimateCells((g.low - g.origin) * g.invTile, (g.high - g.origin) * g.invTile,
-                             cellMargin(kCellEstimateErrorUlps, magnitude, g.invTile), g.cells);
+                             cellMargin(kCellEstimateErrorUlps, magnitude(a), g.invTile), g.cells);
     }
     /// The cells the box's span covers over the frame, [min(low, low + disp), max(high, high +
     /// disp)], estimated (kCellEstimateErrorUlps).
@@ -118,9 +132,8 @@ public:
         const Motion& g = axis_[a];
         const double lowEnd = std::min(g.low, g.low + g.disp);
         const double highEnd = std::max(g.high, g.high + g.disp);
-        const double magnitude = ((std::fabs(g.low) + std::fabs(g.high)) + g.speed) + std::fabs(g.origin);
         return estimateCells((lowEnd - g.origin) * g.invTile, (highEnd - g.origin) * g.invTile,
-                             cellMargin(kCellEstimateErrorUlps, magnitude, g.invTile), g.cells);
+                             cellMargin(kCellEstimateErrorUlps, magnitude(a), g.invTile), g.cells);
     }
 
     Coord nearEdge(int a) const noexcept { return coordOf<Coord>(axis_[a].low); }
@@ -160,8 +173,7 @@ public:
 #else
         const double bound = kSecondaryRangeErrorUlps;
 #endif
-        const double magnitude = std::fabs(ms.low) + std::fabs(ms.high) + ms.speed + std::fabs(ms.origin);
-        return {p, cellMargin(bound, magnitude, ms.invTile), ms.disp / mp.speed};
+        return {p, cellMargin(bound, magnitude(1 - p), ms.invTile), ms.disp / mp.speed};
     }
     /// The secondary span while the box is in the primary cell entered at entry / speed and
     /// left at exit / speed, estimated, then widened by the walk's bound so that it holds the
@@ -408,7 +420,9 @@ private:
     const TileMapView<T>& map_;
     Motion axis_[2];
     T start_[2];
-    int lineBit_[2];  ///< MapRange::lineBit, per axis
+    int lineBit_[2];             ///< MapRange::lineBit, per axis
+    double windowMagnitude_[2];  ///< MapRange::windowMagnitude, per axis
+    bool inWindow_;
     bool refined_ = false;
 };
 

@@ -36,6 +36,9 @@
 //   FLOAT_WINDOW_TOO_LOW  the float range test's short form (admitFloatFrameInWindow) with its
 //                      window six binades too low at the bottom, past what the span test allows
 //                      with the map's top (range_admission.h)
+//   WINDOW_MAGNITUDE_SHORT  the cell estimates' magnitude bound for frames in the map's window
+//                      (windowMagnitudeOf) takes the box's high edge below the window's limit,
+//                      where it can reach twice that (range_admission.h)
 // Issue 20's four classes, one fault standing for each:
 //   PAIR_REFINEMENT_SWAPPED  double near-ties: the exact refinement of the pair comparison called
 //                      with its two sides swapped, so a nonzero sign inside the filter's band
@@ -47,15 +50,16 @@
 //   C_ERROR_CODES_SWAPPED  error codes: the C API maps the unrepresentable-edge errors on x and
 //                      y to each other's code (c_api.cpp)
 
-#if defined(TILESWEEP_FAULT_TOUCH_OVERLAPS) || defined(TILESWEEP_FAULT_NO_CORNER_MISS) ||                \
-    defined(TILESWEEP_FAULT_TIE_REVERSED) || defined(TILESWEEP_FAULT_DOUBLE_PREDICATE) ||                \
-    defined(TILESWEEP_FAULT_ROUND_NEAREST) || defined(TILESWEEP_FAULT_BROADPHASE_SHORT) ||               \
-    defined(TILESWEEP_FAULT_FMA) || defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE) ||                        \
-    defined(TILESWEEP_FAULT_TIME_TIES_AWAY) || defined(TILESWEEP_FAULT_END_INCLUSIVE) ||                 \
-    defined(TILESWEEP_FAULT_NARROW_TIER) || defined(TILESWEEP_FAULT_FILTER_BOUND_HALVED) ||              \
-    defined(TILESWEEP_FAULT_FAST_RANGE_TOO_WIDE) || defined(TILESWEEP_FAULT_FAST_RANGE_FAR_TOO_WIDE) ||  \
-    defined(TILESWEEP_FAULT_PAIR_REFINEMENT_SWAPPED) || defined(TILESWEEP_FAULT_RANGE_NO_LOWER_BOUND) || \
-    defined(TILESWEEP_FAULT_INLINE_LIMIT_EXCLUSIVE) || defined(TILESWEEP_FAULT_C_ERROR_CODES_SWAPPED) || \
-    defined(TILESWEEP_FAULT_LINES_CLEAR_SIZE_IGNORED) || defined(TILESWEEP_FAULT_FLOAT_WINDOW_TOO_LOW)
+#if defined(TILESWEEP_FAULT_TOUCH_OVERLAPS) || defined(TILESWEEP_FAULT_NO_CORNER_MISS) ||                 \
+    defined(TILESWEEP_FAULT_TIE_REVERSED) || defined(TILESWEEP_FAULT_DOUBLE_PREDICATE) ||                 \
+    defined(TILESWEEP_FAULT_ROUND_NEAREST) || defined(TILESWEEP_FAULT_BROADPHASE_SHORT) ||                \
+    defined(TILESWEEP_FAULT_FMA) || defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE) ||                         \
+    defined(TILESWEEP_FAULT_TIME_TIES_AWAY) || defined(TILESWEEP_FAULT_END_INCLUSIVE) ||                  \
+    defined(TILESWEEP_FAULT_NARROW_TIER) || defined(TILESWEEP_FAULT_FILTER_BOUND_HALVED) ||               \
+    defined(TILESWEEP_FAULT_FAST_RANGE_TOO_WIDE) || defined(TILESWEEP_FAULT_FAST_RANGE_FAR_TOO_WIDE) ||   \
+    defined(TILESWEEP_FAULT_PAIR_REFINEMENT_SWAPPED) || defined(TILESWEEP_FAULT_RANGE_NO_LOWER_BOUND) ||  \
+    defined(TILESWEEP_FAULT_INLINE_LIMIT_EXCLUSIVE) || defined(TILESWEEP_FAULT_C_ERROR_CODES_SWAPPED) ||  \
+    defined(TILESWEEP_FAULT_LINES_CLEAR_SIZE_IGNORED) || defined(TILESWEEP_FAULT_FLOAT_WINDOW_TOO_LOW) || \
+    defined(TILESWEEP_FAULT_WINDOW_MAGNITUDE_SHORT)
 #define TILESWEEP_FAULT_INJECTED 1
 #endif

@@ -20,9 +20,9 @@ namespace {
 /// refinement (DecisionPath::Filtered).
 template <class T>
 [[gnu::always_inline]] inline bool solveFast(const ResolveInput<T>& input, const ResolveOutput<T>& output,
-                                             ContactPositions positions, const MapRange& range,
+                                             ContactPositions positions, const MapRange& range, bool inWindow,
                                              ResolveResult<T>& result, bool& refined) noexcept {
-    FastFrame<T> frame(input, range);
+    FastFrame<T> frame(input, range, inWindow);
     const bool solved =
         FrameLoop<FastFrame<T>>(frame).run(output, result, positions == ContactPositions::Placed);
     refined = frame.refined();
@@ -74,15 +74,10 @@ resolveMovingFrame(const TileMapView<T>& map, const MoveInput<T>& move, const Re
     MapRange computed;
     if (prepared == nullptr) computed = mapRangeOf(input.map);
     const MapRange& range = prepared != nullptr ? *prepared : computed;
-    bool admitted = false;
-    if constexpr (std::is_same<T, float>::value) {
-        admitted = admitFloatFrame(input, range);
-    } else {
-        admitted = admitDoubleFrame(input, range);
-    }
-    if (admitted) {
+    const bool inWindow = admitFrameInWindow(input, range);  // the short form: a game's frames
+    if (inWindow || admitFrameFully(input, range)) {
         bool refined = false;
-        if (solveFast(input, output, positions, range, result, refined)) {
+        if (solveFast(input, output, positions, range, inWindow, result, refined)) {
             recordPath(output, refined ? DecisionPath::Filtered : DecisionPath::Fast);
             return result;
         }

@@ -41,14 +41,16 @@ template <class T>
 template <class T>
 [[nodiscard, gnu::always_inline]] inline bool eachInWindow(const Box<T>& box, const Vec2<T>& move, T least,
                                                            T limit) noexcept {
-    return inWindow(std::fabs(box.pos.x), least, limit, true) & inWindow(std::fabs(box.pos.y), least, limit, true) &
-           inWindow(box.size.x, least, limit, false) & inWindow(box.size.y, least, limit, false) &
-           inWindow(std::fabs(move.x), least, limit, true) & inWindow(std::fabs(move.y), least, limit, true);
+    return inWindow(std::fabs(box.pos.x), least, limit, true) &
+           inWindow(std::fabs(box.pos.y), least, limit, true) & inWindow(box.size.x, least, limit, false) &
+           inWindow(box.size.y, least, limit, false) & inWindow(std::fabs(move.x), least, limit, true) &
+           inWindow(std::fabs(move.y), least, limit, true);
 }
 
 /// The six inputs of a float frame: position, size, displacement.
-[[nodiscard, gnu::always_inline]] inline bool boxInputsInWindow(const Box<float>& box, const Vec2<float>& move,
-                                                                float least, float limit) noexcept {
+[[nodiscard, gnu::always_inline]] inline bool boxInputsInWindow(const Box<float>& box,
+                                                                const Vec2<float>& move, float least,
+                                                                float limit) noexcept {
 #if defined(TILESWEEP_INPUT_WINDOW_SSE2)
     __m128 xywh;  // lanes 0 to 3: x, y, w, h
     std::memcpy(&xywh, &box, sizeof xywh);
@@ -63,8 +65,8 @@ template <class T>
     const __m128 zero = _mm_setzero_ps();
     const __m128 a = _mm_and_ps(xywh, magnitude);
     const __m128 b = _mm_and_ps(d, _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff)));
-    const __m128 okA = _mm_and_ps(_mm_cmplt_ps(a, hi),
-                                  _mm_or_ps(_mm_cmpge_ps(a, lo), _mm_and_ps(_mm_cmpeq_ps(a, zero), zeroPasses)));
+    const __m128 okA = _mm_and_ps(
+        _mm_cmplt_ps(a, hi), _mm_or_ps(_mm_cmpge_ps(a, lo), _mm_and_ps(_mm_cmpeq_ps(a, zero), zeroPasses)));
     const __m128 okB = _mm_and_ps(_mm_cmplt_ps(b, hi), _mm_or_ps(_mm_cmpge_ps(b, lo), _mm_cmpeq_ps(b, zero)));
     return _mm_movemask_ps(_mm_and_ps(okA, okB)) == 0xf;
 #else
@@ -73,8 +75,9 @@ template <class T>
 }
 
 /// The six inputs of a double frame.
-[[nodiscard, gnu::always_inline]] inline bool boxInputsInWindow(const Box<double>& box, const Vec2<double>& move,
-                                                                double least, double limit) noexcept {
+[[nodiscard, gnu::always_inline]] inline bool boxInputsInWindow(const Box<double>& box,
+                                                                const Vec2<double>& move, double least,
+                                                                double limit) noexcept {
 #if defined(TILESWEEP_INPUT_WINDOW_SSE2)
     __m128d xy;
     __m128d wh;
@@ -88,9 +91,11 @@ template <class T>
     const __m128d zero = _mm_setzero_pd();
     const __m128d p = _mm_and_pd(xy, magnitude);
     const __m128d m = _mm_and_pd(d, magnitude);
-    const __m128d okP = _mm_and_pd(_mm_cmplt_pd(p, hi), _mm_or_pd(_mm_cmpge_pd(p, lo), _mm_cmpeq_pd(p, zero)));
+    const __m128d okP =
+        _mm_and_pd(_mm_cmplt_pd(p, hi), _mm_or_pd(_mm_cmpge_pd(p, lo), _mm_cmpeq_pd(p, zero)));
     const __m128d okS = _mm_and_pd(_mm_cmplt_pd(wh, hi), _mm_cmpge_pd(wh, lo));
-    const __m128d okM = _mm_and_pd(_mm_cmplt_pd(m, hi), _mm_or_pd(_mm_cmpge_pd(m, lo), _mm_cmpeq_pd(m, zero)));
+    const __m128d okM =
+        _mm_and_pd(_mm_cmplt_pd(m, hi), _mm_or_pd(_mm_cmpge_pd(m, lo), _mm_cmpeq_pd(m, zero)));
     return _mm_movemask_pd(_mm_and_pd(okP, _mm_and_pd(okS, okM))) == 0x3;
 #else
     return eachInWindow(box, move, least, limit);

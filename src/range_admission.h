@@ -28,6 +28,7 @@
 #include "tilesweep/resolve.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 
@@ -95,6 +96,20 @@ namespace tilesweep::detail {
     return magnitude == 0 ? 100000 : bit;
 }
 
+/// The cell estimates' magnitude bound (FastFrame::magnitude) for every frame whose box inputs
+/// lie below `limit` (a power of two) in magnitude, on an axis of origin `origin`: a box's low
+/// edge is below limit, its high edge (the sum with the size, exact for float frames, rounded to
+/// nearest for double ones) at most 2 limit, the displacement below limit. The sum is formed in
+/// the frame's order, so that by monotonic rounding it is at least the frame's own.
+[[nodiscard]] inline double windowMagnitudeOf(double limit, double origin) noexcept {
+#if defined(TILESWEEP_FAULT_WINDOW_MAGNITUDE_SHORT)
+    return ((limit + limit) + limit) +
+           std::fabs(origin);  // deliberate fault: the high edge read as below limit
+#else
+    return ((limit + 2 * limit) + limit) + std::fabs(origin);
+#endif
+}
+
 /// The float whose bits are the biased field `field` alone: 2^(field - 127), for fields 1 to 254;
 /// infinity for 255.
 [[nodiscard]] inline float powerOfField(int field) noexcept {
@@ -143,6 +158,8 @@ namespace tilesweep::detail {
     r.commonLeast = powerOfField(lowField);
 #endif
     r.commonLimit = powerOfField(std::min(highField + 1, 255));  // 255: infinity (read only when common)
+    for (int a = 0; a < 2; ++a)
+        r.windowMagnitude[a] = windowMagnitudeOf(r.commonLimit, static_cast<double>(origin[a]));
     return r;
 }
 
@@ -292,6 +309,7 @@ inline constexpr double kCommonLeast = 0x1p-20;
         const int spanned = std::max(r.top[a], kCommonBoxTop);
         common = common && spanned <= std::min(kCommonLowestBit, r.lowest[a]) + kDoubleFramePairSpanBits;
         r.inverseTile[a] = 1 / tile[a];
+        r.windowMagnitude[a] = windowMagnitudeOf(kCommonLargest, origin[a]);
     }
     r.admitted = admitted;
     r.common = admitted && common;
@@ -307,10 +325,8 @@ inline constexpr double kCommonLeast = 0x1p-20;
 /// than one cell; and a span of at most 104 bits between the largest coordinate and the lowest
 /// set bit of the box and grid inputs, so that the far box edge's distances to tile edges come
 /// out as exact pairs (farEdgeMinus). Branch-free over the six box inputs.
-[[nodiscard, gnu::always_inline]] inline bool admitDoubleFrame(const ResolveInput<double>& in,
-                                                               const MapRange& map) noexcept {
-    // The short form (above): a game's frame is decided here, on one predictable branch.
-    if (map.common & boxInputsInWindow(in.box, in.displacement, kCommonLeast, kCommonLargest)) return true;
+[[nodiscard, gnu::always_inline]] inline bool admitDoubleFrameFully(const ResolveInput<double>& in,
+                                                                    const MapRange& map) noexcept {
     const std::uint64_t x = magnitudeBits(in.box.pos.x);
     const std::uint64_t y = magnitudeBits(in.box.pos.y);
     const std::uint64_t w = magnitudeBits(in.box.size.x);
@@ -344,9 +360,43 @@ inline constexpr double kCommonLeast = 0x1p-20;
     return map.admitted & inRange & positiveSizes & spanX & spanY;
 }
 
+/// The short form of admitDoubleFrameFully (above): the box's inputs in the window [2^-20, 2^30)
+/// (input_window.h) on a map whose half of the test holds for every such frame (MapRange::common).
+[[nodiscard, gnu::always_inline]] inline bool admitDoubleFrameInWindow(const ResolveInput<double>& in,
+                                                                       const MapRange& map) noexcept {
+    return map.common & boxInputsInWindow(in.box, in.displacement, kCommonLeast, kCommonLargest);
+}
+
+/// Whether the double fast path holds every value of this frame: the short form, then, for a
+/// frame outside the window, the full test.
+[[nodiscard, gnu::always_inline]] inline bool admitDoubleFrame(const ResolveInput<double>& in,
+                                                               const MapRange& map) noexcept {
+    if (admitDoubleFrameInWindow(in, map)) return true;  // one branch, which a game predicts
+    return admitDoubleFrameFully(in, map);
+}
+
 /// admitDoubleFrame for a map not prepared: its range, then the frame's.
 [[nodiscard]] inline bool admitDoubleFrame(const ResolveInput<double>& in) noexcept {
     return admitDoubleFrame(in, doubleMapRange(in.map));
+}
+
+/// The short form and the full test in either type (frame_solve.cpp tells which admitted a
+/// frame, so that a frame in the window takes its map's windowMagnitude).
+[[nodiscard, gnu::always_inline]] inline bool admitFrameInWindow(const ResolveInput<float>& in,
+                                                                 const MapRange& map) noexcept {
+    return admitFloatFrameInWindow(in, map);
+}
+[[nodiscard, gnu::always_inline]] inline bool admitFrameInWindow(const ResolveInput<double>& in,
+                                                                 const MapRange& map) noexcept {
+    return admitDoubleFrameInWindow(in, map);
+}
+[[nodiscard, gnu::always_inline]] inline bool admitFrameFully(const ResolveInput<float>& in,
+                                                              const MapRange& map) noexcept {
+    return admitFloatFrameFully(in, map);
+}
+[[nodiscard, gnu::always_inline]] inline bool admitFrameFully(const ResolveInput<double>& in,
+                                                              const MapRange& map) noexcept {
+    return admitDoubleFrameFully(in, map);
 }
 
 /// The map's range in either type.

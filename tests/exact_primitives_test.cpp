@@ -547,6 +547,59 @@ TEST(FloatFrameRange, TheShortFormAdmitsOnlyWhatTheFullTestAdmits) {
     EXPECT_GT(refusedBelowIt, 2000) << "too few refused frames with an input one binade below the window";
 }
 
+/// A frame in its map's window takes the map's magnitude bound for its cell estimates' margins
+/// (MapRange::windowMagnitude, FastFrame::magnitude): it is at least the frame's own on each
+/// axis. The draws put every input of the box in the window's top binade half the time, where
+/// the high edge x + w nears twice the limit and the sum its largest.
+template <class T>
+void checkWindowMagnitude(std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    const std::vector<std::uint8_t> solid(4096, 0);
+    int inWindow = 0;
+    int nearTheBound = 0;
+    for (int draw = 0; draw < 100000; ++draw) {
+        const T tile = std::ldexp(static_cast<T>(rng() % 16 + 1), static_cast<int>(rng() % 13) - 4);
+        const std::int32_t cells = static_cast<std::int32_t>(1 + rng() % 2000);
+        const T origin = (rng() % 2) ? T(0) : tile * static_cast<T>(static_cast<int>(rng() % 1001) - 500);
+        const TileMapView<T> map{{origin, origin}, {tile, tile}, cells, 2, solid.data()};
+        const MapRange range = mapRangeOf(map);
+        if (!range.common) continue;
+        double limit = 0x1p30;  // the double window's
+        if constexpr (std::is_same<T, float>::value) limit = range.commonLimit;
+        const auto input = [&](bool size) {
+            // In the top binade [limit / 2, limit) half the time, else anywhere in 2^-12 to 1 of it.
+            const int below = (rng() % 2) ? 1 : 1 + static_cast<int>(rng() % 12);
+            const double unit = std::ldexp(limit, -below);
+            const T v = static_cast<T>(unit + unit * std::ldexp(static_cast<double>(rng() % 1024), -10));
+            return size || rng() % 2 ? v : -v;
+        };
+        const ResolveInput<T> in{
+            map, {{input(false), input(false)}, {input(true), input(true)}}, {input(false), input(false)}};
+        bool shortForm = false;
+        if constexpr (std::is_same<T, float>::value) {
+            shortForm = admitFloatFrameInWindow(in, range);
+        } else {
+            shortForm = admitDoubleFrameInWindow(in, range);
+        }
+        if (!shortForm) continue;
+        ++inWindow;
+        const FastFrame<T> bounded(in, range, true);
+        const FastFrame<T> own(in, range, false);
+        for (int a = 0; a < 2; ++a) {
+            ASSERT_GE(bounded.magnitude(a), own.magnitude(a))
+                << std::hexfloat << "axis " << a << " box " << in.box.pos.x << ", " << in.box.pos.y
+                << " size " << in.box.size.x << ", " << in.box.size.y << " move " << in.displacement.x << ", "
+                << in.displacement.y << " origin " << origin;
+            nearTheBound += own.magnitude(a) > 0.875 * bounded.magnitude(a) ? 1 : 0;
+        }
+    }
+    EXPECT_GT(inWindow, 20000);
+    EXPECT_GT(nearTheBound, 1000) << "too few frames whose magnitude comes within 1/8 of the bound";
+}
+
+TEST(WindowMagnitude, BoundsTheFramesOwnInFloat) { checkWindowMagnitude<float>(44); }
+TEST(WindowMagnitude, BoundsTheFramesOwnInDouble) { checkWindowMagnitude<double>(45); }
+
 /// The fast path's shortcut for the amended rule (FastFrame::linesClearOf): where it says no grid
 /// line can fall between an end and the value above it, none does. Each draw aims at the line the
 /// shortcut must see: a box size, tile and origin whose lowest set bit is 2^q (the size's, the

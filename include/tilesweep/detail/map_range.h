@@ -14,6 +14,8 @@ namespace tilesweep::detail {
 /// estimates multiply by (src/fast_frame.h; every estimate carries a certified margin).
 /// `common`: whether the range test's short form may decide this map's frames; for float maps,
 /// those whose nonzero box inputs have magnitudes in [commonLeast, commonLimit) (the window).
+/// `windowMagnitude` per axis: for a frame in the window, a bound on the magnitudes that the fast
+/// path's cell estimates sum for their margins (src/fast_frame.h, FastFrame::magnitude).
 /// `lineBit` per axis: the exponent of the lowest set bit of the origin and the tile size, which
 /// every grid line is a multiple of (src/fast_frame.h, FastFrame::linesClearOf).
 struct MapRange {
@@ -25,6 +27,7 @@ struct MapRange {
     float commonLeast = 0;
     float commonLimit = 0;
     double inverseTile[2] = {0, 0};
+    double windowMagnitude[2] = {0, 0};
 };
 
 }  // namespace tilesweep::detail
