@@ -49,6 +49,7 @@
 #include "tilesweep/resolve.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cstdint>
 
 namespace tilesweep::detail {
@@ -262,10 +263,20 @@ private:
             for (std::int64_t j = range.first; j <= range.last; ++j) {
                 const std::int64_t ci = p == 0 ? k : j;
                 const std::int64_t cj = p == 0 ? j : k;
-                if (!m_.map().isSolid(ci, cj)) continue;
+                if (!solidInMap(ci, cj)) continue;
                 testAndRecord(ci, cj, hits);
             }
         }
+    }
+
+    /// Whether cell (i, j), which lies in the map, is solid: TileMapView::isSolid without its
+    /// bounds checks. The walks' cells are in the map by construction: the primary index runs in
+    /// [0, cells), and a cell range (estimateCells, cell_range.h; cellOf clamped) lies in [0,
+    /// cells - 1] whenever it is not empty.
+    [[gnu::always_inline]] bool solidInMap(std::int64_t i, std::int64_t j) const noexcept {
+        const TileMapView<T>& map = m_.map();
+        assert(i >= 0 && i < map.columns && j >= 0 && j < map.rows);
+        return map.solid[j * map.columns + i] != 0;
     }
 
     /// The secondary cells the broadphase tests: those of the walk's secondary range, or the rows
@@ -351,15 +362,21 @@ private:
         const std::int64_t j0 = std::max<std::int64_t>(m_.cellOf(o, heldLow), 0);
         const std::int64_t j1 = std::min<std::int64_t>(m_.cellOf(o, heldHigh), m_.cells(o) - 1);
         if (j0 > j1) return;
+        // Entry times grow strictly along the walk, so once a cell is entered at or after `from`
+        // every later one is: the comparison runs only until then.
+        bool pastFrom = false;
         for (std::int64_t k = firstCellAhead(a); k >= 0 && k < m_.cells(a); k += ma.dir) {
             const Coord entry = ma.entryDistance(m_.edge(a, k), m_.edge(a, k + 1));
             if (compare(entry, ma.speed) >= 0) return;  // entered at t >= 1
             const Time at{entry, ma.speed};
-            if (m_.compareTimes(at, from) < 0) continue;  // overlapping already at `from`
+            if (!pastFrom) {
+                if (m_.compareTimes(at, from) < 0) continue;  // already overlapping at `from`
+                pastFrom = true;
+            }
             for (std::int64_t j = j0; j <= j1; ++j) {
                 const std::int64_t ci = a == 0 ? k : j;
                 const std::int64_t cj = a == 0 ? j : k;
-                if (!m_.map().isSolid(ci, cj)) continue;
+                if (!solidInMap(ci, cj)) continue;
                 if (!heldOverlaps(o, heldLow, heldHigh, j)) continue;
                 add(hits, {static_cast<std::int32_t>(ci), static_cast<std::int32_t>(cj)}, a, at,
                     touchEdge(a, k));
