@@ -75,24 +75,26 @@ public:
     /// the range test's short form admitted the frame, so the map's windowMagnitude bounds its
     /// cell estimates' magnitudes (magnitude()).
     FastFrame(const ResolveInput<T>& in, const MapRange& range, bool inWindow = false) noexcept
-        : map_(in.map), inWindow_(inWindow) {
-        windowMagnitude_[0] = range.windowMagnitude[0];
-        windowMagnitude_[1] = range.windowMagnitude[1];
+        : map_(in.map), range_(range), inWindow_(inWindow) {
         axis_[0] = makeAxis(in.box.pos.x, in.box.size.x, in.displacement.x, in.map.origin.x,
                             in.map.tileSize.x, in.map.columns, range.inverseTile[0]);
         axis_[1] = makeAxis(in.box.pos.y, in.box.size.y, in.displacement.y, in.map.origin.y,
                             in.map.tileSize.y, in.map.rows, range.inverseTile[1]);
         start_[0] = in.box.pos.x;
         start_[1] = in.box.pos.y;
-        lineBit_[0] = range.lineBit[0];
-        lineBit_[1] = range.lineBit[1];
     }
 
     /// Whether no grid line can fall between an end on axis `a` and the value above it
-    /// (linesClearOf): the amended rule's test is then skipped.
+    /// (linesClearOf): the amended rule's test is then skipped. A frame in the map's window takes
+    /// the window's bound on its ends (setWindowLinesClear, range_admission.h): the grid's half
+    /// read from the map, the size's by one addition and one subtraction.
     bool linesClear(int a) const noexcept {
         const Motion& m = axis_[a];
-        return linesClearOf(m.low, m.disp, m.size, lineBit_[a]);
+        if (inWindow_) {
+            const double shift = range_.sizeGrainShift;
+            return range_.windowLinesClear[a] & ((m.size + shift) - shift == m.size);
+        }
+        return linesClearOf(m.low, m.disp, m.size, range_.lineBit[a]);
     }
     /// Whether some predicate needed its exact refinement (DecisionPath::Filtered).
     [[nodiscard]] bool refined() const noexcept { return refined_; }
@@ -115,7 +117,7 @@ public:
     /// map's bound on it (MapRange::windowMagnitude, windowMagnitudeOf), at least as large. A
     /// larger margin only adds cells for the exact tile test to reject.
     [[gnu::always_inline]] double magnitude(int a) const noexcept {
-        if (inWindow_) return windowMagnitude_[a];  // one branch, which a game predicts
+        if (inWindow_) return range_.windowMagnitude[a];  // one branch, which a game predicts
         const Motion& g = axis_[a];
         return ((std::fabs(g.low) + std::fabs(g.high)) + g.speed) + std::fabs(g.origin);
     }
@@ -418,10 +420,9 @@ private:
     }
 
     const TileMapView<T>& map_;
+    const MapRange& range_;  ///< the map's range test; outlives the frame
     Motion axis_[2];
     T start_[2];
-    int lineBit_[2];             ///< MapRange::lineBit, per axis
-    double windowMagnitude_[2];  ///< MapRange::windowMagnitude, per axis
     bool inWindow_;
     bool refined_ = false;
 };

@@ -39,6 +39,9 @@
 //   WINDOW_MAGNITUDE_SHORT  the cell estimates' magnitude bound for frames in the map's window
 //                      (windowMagnitudeOf) takes the box's high edge below the window's limit,
 //                      where it can reach twice that (range_admission.h)
+//   WINDOW_LINES_CLEAR_BINADE_SHORT  the grid-line shortcut for frames in the map's window
+//                      (setWindowLinesClear) bounds the ends by the window's limit, where they
+//                      reach twice it (range_admission.h)
 // Issue 20's four classes, one fault standing for each:
 //   PAIR_REFINEMENT_SWAPPED  double near-ties: the exact refinement of the pair comparison called
 //                      with its two sides swapped, so a nonzero sign inside the filter's band
@@ -60,6 +63,7 @@
     defined(TILESWEEP_FAULT_PAIR_REFINEMENT_SWAPPED) || defined(TILESWEEP_FAULT_RANGE_NO_LOWER_BOUND) ||  \
     defined(TILESWEEP_FAULT_INLINE_LIMIT_EXCLUSIVE) || defined(TILESWEEP_FAULT_C_ERROR_CODES_SWAPPED) ||  \
     defined(TILESWEEP_FAULT_LINES_CLEAR_SIZE_IGNORED) || defined(TILESWEEP_FAULT_FLOAT_WINDOW_TOO_LOW) || \
-    defined(TILESWEEP_FAULT_WINDOW_MAGNITUDE_SHORT)
+    defined(TILESWEEP_FAULT_WINDOW_MAGNITUDE_SHORT) ||                                                    \
+    defined(TILESWEEP_FAULT_WINDOW_LINES_CLEAR_BINADE_SHORT)
 #define TILESWEEP_FAULT_INJECTED 1
 #endif

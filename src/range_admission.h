@@ -110,6 +110,26 @@ namespace tilesweep::detail {
 #endif
 }
 
+/// The window's share of FastFrame::linesClearOf, for the frames in the map's window: every box
+/// input below 2^W in magnitude (the window's limit), so every end below 2^(W + 1) (an end lies
+/// between the start and the start plus the displacement). The proof of linesClearOf then needs
+/// W + 1 <= min(lineBit, the size's lowest bit) + p: per axis, windowLinesClear says whether the
+/// grid's half holds; the size's half is that the size is a multiple of g = 2^(W + 1 - p), which
+/// FastFrame reads as fl(size + C) - C == size with C = 2^52 g (sizeGrainShift): a size in the
+/// window is below 2^W <= 2^52 g, so size + C lies in [C, 2C), where doubles are the multiples of
+/// g, and it is one exactly when the size is; the subtraction is exact.
+inline void setWindowLinesClear(MapRange& r, int windowExponent, int p) noexcept {
+#if defined(TILESWEEP_FAULT_WINDOW_LINES_CLEAR_BINADE_SHORT)
+    const int ends = windowExponent;  // deliberate fault: the ends read as below the window's limit
+#else
+    const int ends = windowExponent + 1;
+#endif
+    for (int a = 0; a < 2; ++a) r.windowLinesClear[a] = ends <= r.lineBit[a] + p;
+    const std::uint64_t shiftBits = static_cast<std::uint64_t>(ends - p + 52 + 1023)
+                                    << 52;  // 2^(ends - p + 52)
+    std::memcpy(&r.sizeGrainShift, &shiftBits, sizeof shiftBits);
+}
+
 /// The float whose bits are the biased field `field` alone: 2^(field - 127), for fields 1 to 254;
 /// infinity for 255.
 [[nodiscard]] inline float powerOfField(int field) noexcept {
@@ -160,6 +180,7 @@ namespace tilesweep::detail {
     r.commonLimit = powerOfField(std::min(highField + 1, 255));  // 255: infinity (read only when common)
     for (int a = 0; a < 2; ++a)
         r.windowMagnitude[a] = windowMagnitudeOf(r.commonLimit, static_cast<double>(origin[a]));
+    setWindowLinesClear(r, std::min(highField + 1, 255) - 127, 24);  // commonLimit = 2^W
     return r;
 }
 
@@ -313,6 +334,7 @@ inline constexpr double kCommonLeast = 0x1p-20;
     }
     r.admitted = admitted;
     r.common = admitted && common;
+    setWindowLinesClear(r, 30, 53);  // kCommonLargest = 2^30
     return r;
 }
 

@@ -600,6 +600,67 @@ void checkWindowMagnitude(std::uint64_t seed) {
 TEST(WindowMagnitude, BoundsTheFramesOwnInFloat) { checkWindowMagnitude<float>(44); }
 TEST(WindowMagnitude, BoundsTheFramesOwnInDouble) { checkWindowMagnitude<double>(45); }
 
+/// The grid-line shortcut's window form (setWindowLinesClear, FastFrame::linesClear on a frame
+/// in its map's window) claims no more than the general form (linesClearOf, which
+/// LinesClear.NoGridLineFallsBetweenAnEndAndTheValueAbove* holds to the exact rationals). The
+/// draws aim at the bound: grids whose lowest bit 2^q puts q + p near the window's exponent W
+/// (tiles of up to 16 significant bits, origins on the grid), boxes in the window's top two
+/// binades, and sizes whose lowest bit lies within two of the grain 2^(W + 1 - p).
+template <class T>
+void checkWindowLinesClear(std::uint64_t seed) {
+    constexpr int p = std::numeric_limits<T>::digits;
+    std::mt19937_64 rng(seed);
+    const std::vector<std::uint8_t> solid(1 << 16, 0);
+    int inWindow = 0;
+    int clearInWindow = 0;
+    int refusedAtTheBound = 0;
+    for (int draw = 0; draw < 200000; ++draw) {
+        const int tileBits = 1 + static_cast<int>(rng() % 16);
+        const double odd = static_cast<double>(2 * (rng() % (std::uint64_t{1} << (tileBits - 1))) + 1);
+        // Float windows follow the map (2^W near its extent); the double one is 2^30, so its
+        // grids' lowest bit must come near 2^(30 - p).
+        const int tileExponent = std::is_same<T, float>::value ? static_cast<int>(rng() % 12) - 10
+                                                               : static_cast<int>(rng() % 13) - 26;
+        const T tile = static_cast<T>(std::ldexp(odd, tileExponent));
+        const std::int32_t cells = static_cast<std::int32_t>(1 + rng() % 4000);
+        const T origin = (rng() % 2) ? T(0) : tile * static_cast<T>(static_cast<int>(rng() % 2001) - 1000);
+        const TileMapView<T> map{{origin, origin}, {tile, tile}, cells, 16, solid.data()};
+        const MapRange range = mapRangeOf(map);
+        if (!range.common) continue;
+        int windowExponent = 30;  // the double window's
+        if constexpr (std::is_same<T, float>::value) windowExponent = std::ilogb(range.commonLimit);
+        const double limit = std::ldexp(1.0, windowExponent);
+        const auto inTop = [&] {  // in [limit / 4, limit), either sign
+            const double v = limit * (0.25 + 0.75 * std::ldexp(static_cast<double>(rng() % 4096), -12));
+            return static_cast<T>((rng() % 2) ? v : -v);
+        };
+        const int sizeBit = windowExponent + 1 - p + static_cast<int>(rng() % 5) - 2;
+        const T size = static_cast<T>(std::ldexp(static_cast<double>(2 * (rng() % 64) + 1), sizeBit));
+        const ResolveInput<T> in{map, {{inTop(), inTop()}, {size, size}}, {inTop(), inTop()}};
+        if (!admitFrameInWindow(in, range)) continue;
+        ++inWindow;
+        const FastFrame<T> window(in, range, true);
+        const FastFrame<T> general(in, range, false);
+        for (int a = 0; a < 2; ++a) {
+            if (window.linesClear(a)) {
+                ASSERT_TRUE(general.linesClear(a))
+                    << std::hexfloat << "axis " << a << " box " << in.box.pos.x << ", " << in.box.pos.y
+                    << " size " << size << " move " << in.displacement.x << ", " << in.displacement.y
+                    << " origin " << origin << " tile " << tile << " window 2^" << windowExponent;
+                ++clearInWindow;
+            }
+            refusedAtTheBound += !general.linesClear(a) && range.lineBit[a] + p == windowExponent ? 1 : 0;
+        }
+    }
+    EXPECT_GT(inWindow, 20000);
+    EXPECT_GT(clearInWindow, 5000) << "too few axes the window form clears";
+    EXPECT_GT(refusedAtTheBound, 500)
+        << "too few refused axes whose grid bit is one short of the window's ends";
+}
+
+TEST(WindowLinesClear, ClaimsNoMoreThanTheGeneralShortcutInFloat) { checkWindowLinesClear<float>(46); }
+TEST(WindowLinesClear, ClaimsNoMoreThanTheGeneralShortcutInDouble) { checkWindowLinesClear<double>(47); }
+
 /// The fast path's shortcut for the amended rule (FastFrame::linesClearOf): where it says no grid
 /// line can fall between an end and the value above it, none does. Each draw aims at the line the
 /// shortcut must see: a box size, tile and origin whose lowest set bit is 2^q (the size's, the
