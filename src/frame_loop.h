@@ -412,15 +412,17 @@ private:
         // Every cell is written at the next slot and kept when solid, without a branch on the byte
         // (a map's bytes are its data: a branch on them mispredicts at random). The slots suffice:
         // the count is below the cells visited, at most kNearArea.
-        std::int32_t count = 0;
+        std::int64_t count = 0;
         for (std::int64_t j = range[1].first; j <= range[1].last; ++j) {
             const std::uint8_t* row = map.solid + j * map.columns;
+            Cell cell{0, static_cast<std::int32_t>(j)};
             for (std::int64_t i = range[0].first; i <= range[0].last; ++i) {
-                near_[count] = {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)};
+                cell.i = static_cast<std::int32_t>(i);
+                near_[count] = cell;
                 count += row[i] != 0 ? 1 : 0;
             }
         }
-        nearCount_ = count;
+        nearCount_ = static_cast<std::int32_t>(count);
         return count <= contactCapacity;
     }
 
