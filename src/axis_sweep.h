@@ -105,6 +105,14 @@ struct AxisMotion {
     [[nodiscard]] Num exitDistance(const Num& lo, const Num& hi) const noexcept {
         return dir > 0 ? hi - low : high - lo;
     }
+    /// The walks' distances (frame_loop.h): here the exact ones.
+    using WalkDistance = Num;
+    [[nodiscard]] Num walkEntry(const Num& lo, const Num& hi) const noexcept { return entryDistance(lo, hi); }
+    [[nodiscard]] Num walkExit(const Num& lo, const Num& hi) const noexcept { return exitDistance(lo, hi); }
+    /// Whether the cell [lo, hi] is entered at t >= 1, given walkEntry(lo, hi).
+    [[nodiscard]] bool enteredByEnd(const Num& entry, const Num&, const Num&) const noexcept {
+        return compare(entry, speed) >= 0;
+    }
     /// Open overlap of the box's projection at t = 0 with [lo, hi].
     [[nodiscard]] bool overlapsAtStart(const Num& lo, const Num& hi) const noexcept {
         return overlapsOpen([&] { return compare(low, hi); }, [&] { return compare(high, lo); });

@@ -102,6 +102,46 @@ struct FastAxis {
     [[nodiscard, gnu::always_inline]] double exitDistanceHigh(double lo, double hi) const noexcept {
         return dir > 0 ? hi - low : farEdgeMinusHigh(lo);
     }
+    /// The walks' distances (frame_loop.h): what a walk reads of a cell's entry and exit
+    /// distances before it tests the cell's tiles, which is their estimate for the secondary
+    /// range and the entry's order against the speed. Float frames take the exact doubles;
+    /// double frames the pairs' high parts alone (entryDistanceHigh, exitDistanceHigh: bit for
+    /// bit the high parts the pairs would have, so the same estimates as from the pairs), and
+    /// the order against the speed from the high part, exactly, unless it equals the speed.
+    using WalkDistance = double;
+    [[nodiscard, gnu::always_inline]] double walkEntry(double lo, double hi) const noexcept {
+        if constexpr (std::is_same<Coord, ExactPair>::value) {
+            return entryDistanceHigh(lo, hi);
+        } else {
+            return entryDistance(lo, hi);
+        }
+    }
+    [[nodiscard, gnu::always_inline]] double walkExit(double lo, double hi) const noexcept {
+        if constexpr (std::is_same<Coord, ExactPair>::value) {
+            return exitDistanceHigh(lo, hi);
+        } else {
+            return exitDistance(lo, hi);
+        }
+    }
+    /// Whether the cell [lo, hi] is entered at t >= 1 (its entry distance at least the speed),
+    /// given walkEntry(lo, hi). For a pair, hi = fl(value) is on the value's side of the speed (a
+    /// double) when it differs from it (monotonic rounding); on equality the low part decides.
+    [[nodiscard, gnu::always_inline]] bool enteredByEnd(double entry, double lo, double hi) const noexcept {
+        if constexpr (std::is_same<Coord, ExactPair>::value) {
+#if defined(TILESWEEP_FAULT_WALK_ENTRY_TIE_BY_HIGH_PART)
+            static_cast<void>(lo);
+            static_cast<void>(hi);
+            return entry >= speed;  // deliberate fault: a tie with the speed read from the high part
+#else
+            if (entry != speed) return entry > speed;
+            return compare(entryDistance(lo, hi), speed) >= 0;  // rare: the low part decides
+#endif
+        } else {
+            static_cast<void>(lo);
+            static_cast<void>(hi);
+            return entry >= speed;
+        }
+    }
     /// Open overlap of the box's projection at t = 0 with [lo, hi] (overlapsOpen, axis_sweep.h).
     [[nodiscard, gnu::always_inline]] bool overlapsAtStart(double lo, double hi) const noexcept {
         return overlapsOpen([&] { return compare(low, hi); }, [&] { return compare(farEdge(), lo); });

@@ -179,12 +179,12 @@ public:
     }
     /// The secondary span while the box is in the primary cell entered at entry / speed and
     /// left at exit / speed, estimated, then widened by the walk's bound so that it holds the
-    /// exact range (extra cells are tested and rejected).
-    CellRange secondaryCells(const Walk& w, const Coord& entry, const Coord& exit) const noexcept {
+    /// exact range (extra cells are tested and rejected). The distances come as the walk reads
+    /// them (FastAxis::walkEntry, walkExit): exact doubles, or the pairs' high parts, which is
+    /// all the estimate ever read of them.
+    CellRange secondaryCells(const Walk& w, double entryNear, double exitNear) const noexcept {
         const Motion& mp = axis_[w.primary];
         const Motion& ms = axis_[1 - w.primary];
-        const double entryNear = approximate(entry);
-        const double exitNear = approximate(exit);
         const double t0 = entryNear < 0 ? 0.0 : entryNear;
         const double t1 = exitNear < mp.speed ? exitNear : mp.speed;
         const bool forward = ms.dir > 0;

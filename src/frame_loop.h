@@ -28,7 +28,8 @@
 // What an arithmetic `Arith` provides (LatticeFrame, FastFrame):
 //   types   Scalar (float or double), Coord (a box coordinate or a distance), Edge (a tile
 //           edge), Time (a ratio {Coord num, Speed den}), Motion (one axis of the box's
-//           motion: dir, speed, entryDistance, exitDistance, overlapsAtStart; axis_sweep.h),
+//           motion: dir, speed, entryDistance, exitDistance, overlapsAtStart, and what the
+//           walks read first, walkEntry, walkExit and enteredByEnd; axis_sweep.h, fast_axis.h),
 //           Walk (what the walk's secondary range needs, computed once a frame)
 //   grid    axis(a) (the Motion), edge(a, k), cells(a), cellOf(a, c) and nearEdgeCell(a) (the cell of a
 //           coordinate, of the box's low edge at the start: exact, clamped to [-1, cells]),
@@ -254,12 +255,13 @@ private:
         for (std::int64_t k = firstCellAhead(p); k >= 0 && k < m_.cells(p); k += mp.dir) {
             const Edge lo = m_.edge(p, k);
             const Edge hi = m_.edge(p, k + 1);
-            const Coord entry = mp.entryDistance(lo, hi);
-            if (compare(entry, mp.speed) >= 0) break;  // entered at t >= 1
+            // The walk's distances (the Motion's walkEntry: on double frames the pairs' high
+            // parts), the exact entry only once a hit is found.
+            const auto entry = mp.walkEntry(lo, hi);
+            if (mp.enteredByEnd(entry, lo, hi)) break;  // entered at t >= 1
             // Entered after the hits found so far; on a near tie walking on is harmless.
-            if (hits.any && m_.certainlyLater(Time{entry, mp.speed}, hits.time)) break;
-            const CellRange range =
-                secondaryCandidates(m_.secondaryCells(walk, entry, mp.exitDistance(lo, hi)));
+            if (hits.any && m_.certainlyLater(Time{mp.entryDistance(lo, hi), mp.speed}, hits.time)) break;
+            const CellRange range = secondaryCandidates(m_.secondaryCells(walk, entry, mp.walkExit(lo, hi)));
             for (std::int64_t j = range.first; j <= range.last; ++j) {
                 const std::int64_t ci = p == 0 ? k : j;
                 const std::int64_t cj = p == 0 ? j : k;
@@ -366,9 +368,12 @@ private:
         // every later one is: the comparison runs only until then.
         bool pastFrom = false;
         for (std::int64_t k = firstCellAhead(a); k >= 0 && k < m_.cells(a); k += ma.dir) {
-            const Coord entry = ma.entryDistance(m_.edge(a, k), m_.edge(a, k + 1));
-            if (compare(entry, ma.speed) >= 0) return;  // entered at t >= 1
-            const Time at{entry, ma.speed};
+            const Edge lo = m_.edge(a, k);
+            const Edge hi = m_.edge(a, k + 1);
+            if (ma.enteredByEnd(ma.walkEntry(lo, hi), lo, hi)) return;  // entered at t >= 1
+            // The exact entry time, for the comparison with `from` and the hits (the compiler
+            // builds it only on the paths that read it).
+            const Time at{ma.entryDistance(lo, hi), ma.speed};
             if (!pastFrom) {
                 if (m_.compareTimes(at, from) < 0) continue;  // already overlapping at `from`
                 pastFrom = true;
