@@ -41,10 +41,13 @@ template <class T>
 template <class T>
 [[nodiscard, gnu::always_inline]] inline bool eachInWindow(const Box<T>& box, const Vec2<T>& move, T least,
                                                            T limit) noexcept {
-    return inWindow(std::fabs(box.pos.x), least, limit, true) &
-           inWindow(std::fabs(box.pos.y), least, limit, true) & inWindow(box.size.x, least, limit, false) &
-           inWindow(box.size.y, least, limit, false) & inWindow(std::fabs(move.x), least, limit, true) &
-           inWindow(std::fabs(move.y), least, limit, true);
+    const bool x = inWindow(std::fabs(box.pos.x), least, limit, true);
+    const bool y = inWindow(std::fabs(box.pos.y), least, limit, true);
+    const bool w = inWindow(box.size.x, least, limit, false);
+    const bool h = inWindow(box.size.y, least, limit, false);
+    const bool dx = inWindow(std::fabs(move.x), least, limit, true);
+    const bool dy = inWindow(std::fabs(move.y), least, limit, true);
+    return x & y & w & h & dx & dy;  // no branch per value
 }
 
 /// The six inputs of a float frame: position, size, displacement.

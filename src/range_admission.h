@@ -179,7 +179,8 @@ inline void setWindowLinesClear(MapRange& r, int windowExponent, int p) noexcept
 #endif
     r.commonLimit = powerOfField(std::min(highField + 1, 255));  // 255: infinity (read only when common)
     for (int a = 0; a < 2; ++a)
-        r.windowMagnitude[a] = windowMagnitudeOf(r.commonLimit, static_cast<double>(origin[a]));
+        r.windowMagnitude[a] =
+            windowMagnitudeOf(static_cast<double>(r.commonLimit), static_cast<double>(origin[a]));
     setWindowLinesClear(r, std::min(highField + 1, 255) - 127, 24);  // commonLimit = 2^W
     return r;
 }

@@ -565,7 +565,7 @@ void checkWindowMagnitude(std::uint64_t seed) {
         const MapRange range = mapRangeOf(map);
         if (!range.common) continue;
         double limit = 0x1p30;  // the double window's
-        if constexpr (std::is_same<T, float>::value) limit = range.commonLimit;
+        if constexpr (std::is_same<T, float>::value) limit = static_cast<double>(range.commonLimit);
         const auto input = [&](bool size) {
             // In the top binade [limit / 2, limit) half the time, else anywhere in 2^-12 to 1 of it.
             const int below = (rng() % 2) ? 1 : 1 + static_cast<int>(rng() % 12);
