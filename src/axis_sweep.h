@@ -106,7 +106,6 @@ struct AxisMotion {
         return dir > 0 ? hi - low : high - lo;
     }
     /// The walks' distances (frame_loop.h): here the exact ones.
-    using WalkDistance = Num;
     [[nodiscard]] Num walkEntry(const Num& lo, const Num& hi) const noexcept { return entryDistance(lo, hi); }
     [[nodiscard]] Num walkExit(const Num& lo, const Num& hi) const noexcept { return exitDistance(lo, hi); }
     /// Whether the cell [lo, hi] is entered at t >= 1, given walkEntry(lo, hi).

@@ -108,7 +108,6 @@ struct FastAxis {
     /// double frames the pairs' high parts alone (entryDistanceHigh, exitDistanceHigh: bit for
     /// bit the high parts the pairs would have, so the same estimates as from the pairs), and
     /// the order against the speed from the high part, exactly, unless it equals the speed.
-    using WalkDistance = double;
     [[nodiscard, gnu::always_inline]] double walkEntry(double lo, double hi) const noexcept {
         if constexpr (std::is_same<Coord, ExactPair>::value) {
             return entryDistanceHigh(lo, hi);

@@ -11,8 +11,10 @@
 // With SSE2 (the x86-64 baseline) the six values are compared as floating-point vectors: a few
 // instructions and no branch. Elsewhere, and in the portable build (TILESWEEP_PORTABLE_INTEGERS,
 // which CI tests under the sanitizers, so that this path is exercised too), one scalar comparison
-// per value. Both compute the same predicate; FloatFrameRange and DoubleFrameRange
-// (tests/exact_primitives_test.cpp) hold each short form to its full test.
+// per value. Both compute the same predicate. In tests/exact_primitives_test.cpp,
+// FloatFrameRange holds the float short form to the full test, and DoubleFrameRange checks every
+// admitted double frame, the short form's included, for what the fast path needs of it (exact
+// far-edge distances).
 
 #include "tilesweep/math.h"
 
