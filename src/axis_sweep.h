@@ -139,11 +139,13 @@ struct TileTest {
 /// or on one; a box that moves on neither never blocks. `Motion` is an axis of the arithmetic
 /// in use (AxisMotion on the lattice, FastAxis on doubles); `refined` is set when a comparison
 /// of products needed its exact refinement (frame_stats.h, DecisionPath::Filtered).
+/// Always inlined: float frames test every tile with it (fast_frame.h); testTile below is the
+/// same test left to the compiler, for the lattice and for double frames' rare fallback.
 template <class Motion, class Coord = typename Motion::Coord, class Speed = typename Motion::Speed,
           class Edge = typename Motion::Edge>
-[[nodiscard]] TileTest<Coord, Speed> testTile(const Motion& mx, const Motion& my, const Edge& xlo,
-                                              const Edge& xhi, const Edge& ylo, const Edge& yhi,
-                                              bool& refined) noexcept {
+[[nodiscard, gnu::always_inline]] inline TileTest<Coord, Speed> testTileInline(
+    const Motion& mx, const Motion& my, const Edge& xlo, const Edge& xhi, const Edge& ylo, const Edge& yhi,
+    bool& refined) noexcept {
     TileTest<Coord, Speed> miss{TileVerdict::Misses, {}};
     if (mx.dir == 0 || my.dir == 0) {
         if (mx.dir == 0 && my.dir == 0) {
@@ -197,6 +199,15 @@ template <class Motion, class Coord = typename Motion::Coord, class Speed = type
     if (order > 0) return {TileVerdict::BlocksOnX, {ex, mx.speed}};
     if (order < 0) return {TileVerdict::BlocksOnY, {ey, my.speed}};
     return {TileVerdict::Tie, {ey, my.speed}};
+}
+
+/// testTileInline, inlined or not as the compiler decides.
+template <class Motion, class Coord = typename Motion::Coord, class Speed = typename Motion::Speed,
+          class Edge = typename Motion::Edge>
+[[nodiscard]] TileTest<Coord, Speed> testTile(const Motion& mx, const Motion& my, const Edge& xlo,
+                                              const Edge& xhi, const Edge& ylo, const Edge& yhi,
+                                              bool& refined) noexcept {
+    return testTileInline(mx, my, xlo, xhi, ylo, yhi, refined);
 }
 
 /// The contact axis of an exact corner tie: the face that is exposed when exactly one is,

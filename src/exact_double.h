@@ -62,6 +62,9 @@ namespace tilesweep::detail {
     const double q = c * d;
     if (p < q) return -1;  // monotonic rounding: the order of the rounded values is exact
     if (p > q) return 1;
+    // Both products exactly zero, a factor of each being zero (a box touching a tile at t = 0:
+    // its entry distance against the zero time): equal, and no refinement was needed.
+    if (p == 0 && (a == 0 || b == 0) && (c == 0 || d == 0)) return 0;
     refined = true;
     return compareEqualProducts(a, b, c, d, p, q);
 }

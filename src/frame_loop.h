@@ -31,7 +31,8 @@
 //           motion: dir, speed, entryDistance, exitDistance, overlapsAtStart, and what the
 //           walks read first, walkEntry, walkExit and enteredByEnd; axis_sweep.h, fast_axis.h),
 //           Walk (what the walk's secondary range needs, computed once a frame)
-//   grid    axis(a) (the Motion), edge(a, k), cells(a), cellOf(a, c) and nearEdgeCell(a) (the cell of a
+//   grid    axis(a) (the Motion), edge(a, k), nextEdge(a, e) (the edge one tile from e along
+//           the motion on a, exactly), cells(a), cellOf(a, c) and nearEdgeCell(a) (the cell of a
 //           coordinate, of the box's low edge at the start: exact, clamped to [-1, cells]),
 //           startCells(a) and sweptCells(a) (supersets), map()
 //   times   zeroTime(), compareTimes(a, b), certainlyLater(a, b) (a > b for certain; false may
@@ -247,14 +248,28 @@ private:
         return std::min<std::int64_t>(k, m_.cells(a) - 1);
     }
 
+    /// Moves [lo, hi], the edges of a cell on `a`, to the next cell along the motion. One exact
+    /// operation (the arithmetic's nextEdge): every tile edge the frame forms is exact, so the
+    /// edge a tile past another is the sum of that edge and the tile size, exactly.
+    [[gnu::always_inline]] void stepEdges(int a, Edge& lo, Edge& hi) const noexcept {
+        if (m_.axis(a).dir > 0) {
+            lo = hi;
+            hi = m_.nextEdge(a, hi);
+        } else {
+            hi = lo;
+            lo = m_.nextEdge(a, lo);
+        }
+    }
+
     /// Step 1 when both axes move: walk the primary axis in time order.
     void sweepBothAxes(Hits& hits) noexcept {
         const int p = m_.primaryAxis();
         const auto& mp = m_.axis(p);
         const auto walk = m_.prepareWalk(p);
-        for (std::int64_t k = firstCellAhead(p); k >= 0 && k < m_.cells(p); k += mp.dir) {
-            const Edge lo = m_.edge(p, k);
-            const Edge hi = m_.edge(p, k + 1);
+        std::int64_t k = firstCellAhead(p);
+        Edge lo = m_.edge(p, k);
+        Edge hi = m_.edge(p, k + 1);
+        for (; k >= 0 && k < m_.cells(p); k += mp.dir, stepEdges(p, lo, hi)) {
             // The walk's distances (the Motion's walkEntry: on double frames the pairs' high
             // parts), the exact entry only once a hit is found.
             const auto entry = mp.walkEntry(lo, hi);
@@ -367,9 +382,10 @@ private:
         // Entry times grow strictly along the walk, so once a cell is entered at or after `from`
         // every later one is: the comparison runs only until then.
         bool pastFrom = false;
-        for (std::int64_t k = firstCellAhead(a); k >= 0 && k < m_.cells(a); k += ma.dir) {
-            const Edge lo = m_.edge(a, k);
-            const Edge hi = m_.edge(a, k + 1);
+        std::int64_t k = firstCellAhead(a);
+        Edge lo = m_.edge(a, k);
+        Edge hi = m_.edge(a, k + 1);
+        for (; k >= 0 && k < m_.cells(a); k += ma.dir, stepEdges(a, lo, hi)) {
             if (ma.enteredByEnd(ma.walkEntry(lo, hi), lo, hi)) return;  // entered at t >= 1
             // The exact entry time, for the comparison with `from` and the hits (the compiler
             // builds it only on the paths that read it).

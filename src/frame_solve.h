@@ -28,14 +28,33 @@ inline void recordPath(const ResolveOutput<T>& output, DecisionPath path) noexce
 /// contacts, so that a frame resolved into their inline buffer pays nothing for them.
 enum class ContactPositions : std::uint8_t { Placed, Skipped };
 
-/// resolveMove for every frame but the zero moves resolveZeroMove settles (frame_solve.cpp). The
-/// map and the move come apart, by reference, and the result is returned in the caller's slot, so
-/// that resolveFrame passes on its caller's arguments (a prepared map's view and range, the
-/// mover's input) and builds nothing of its own.
+/// resolveMove for every frame but the zero moves resolveZeroMove settles (frame_solve.cpp), on
+/// the map's range test (range_admission.h). The map and the move come apart, by reference, and
+/// the result is returned in the caller's slot, so that resolveFrame passes on its caller's
+/// arguments (a prepared map's view and range, the mover's input) and builds nothing of its own.
 template <class T>
 [[nodiscard]] ResolveResult<T> resolveMovingFrame(const TileMapView<T>& map, const MoveInput<T>& move,
                                                   const ResolveOutput<T>& output, ContactPositions positions,
-                                                  const MapRange* prepared) noexcept;
+                                                  const MapRange& range) noexcept;
+
+/// resolveMovingFrame on a map that was not prepared: the range test's map half is computed for
+/// the frame.
+template <class T>
+[[nodiscard]] ResolveResult<T> resolveMovingFrameOnBareMap(const TileMapView<T>& map,
+                                                           const MoveInput<T>& move,
+                                                           const ResolveOutput<T>& output,
+                                                           ContactPositions positions) noexcept;
+
+/// resolveMovingFrame on `prepared` (the range of a PreparedMap), or on the bare map when it is
+/// null. Each caller passes a constant, so the choice folds away.
+template <class T>
+[[nodiscard]] inline ResolveResult<T> resolveMovingOn(const TileMapView<T>& map, const MoveInput<T>& move,
+                                                      const ResolveOutput<T>& output,
+                                                      ContactPositions positions,
+                                                      const MapRange* prepared) noexcept {
+    if (prepared != nullptr) return resolveMovingFrame(map, move, output, positions, *prepared);
+    return resolveMovingFrameOnBareMap(map, move, output, positions);
+}
 
 /// resolveMove for a frame whose displacement is zero (frame_solve.cpp): resolveZeroMove when it
 /// settles the frame (zero_move.h), otherwise resolveMovingFrame.
@@ -56,18 +75,26 @@ template <class T>
                                                    const ResolveOutput<T>& output, ContactPositions positions,
                                                    const MapRange* prepared) noexcept {
     if (move.displacement.x != 0 || move.displacement.y != 0)  // a NaN too: the moving frame refuses it
-        return resolveMovingFrame(map, move, output, positions, prepared);
+        return resolveMovingOn(map, move, output, positions, prepared);
     return resolveStillFrame(map, move, output, positions, prepared);
 }
 
 extern template ResolveResult<float> resolveMovingFrame<float>(const TileMapView<float>&,
                                                                const MoveInput<float>&,
                                                                const ResolveOutput<float>&, ContactPositions,
-                                                               const MapRange*) noexcept;
+                                                               const MapRange&) noexcept;
 extern template ResolveResult<double> resolveMovingFrame<double>(const TileMapView<double>&,
                                                                  const MoveInput<double>&,
                                                                  const ResolveOutput<double>&,
-                                                                 ContactPositions, const MapRange*) noexcept;
+                                                                 ContactPositions, const MapRange&) noexcept;
+extern template ResolveResult<float> resolveMovingFrameOnBareMap<float>(const TileMapView<float>&,
+                                                                        const MoveInput<float>&,
+                                                                        const ResolveOutput<float>&,
+                                                                        ContactPositions) noexcept;
+extern template ResolveResult<double> resolveMovingFrameOnBareMap<double>(const TileMapView<double>&,
+                                                                          const MoveInput<double>&,
+                                                                          const ResolveOutput<double>&,
+                                                                          ContactPositions) noexcept;
 
 extern template ResolveResult<float> resolveStillFrame<float>(const TileMapView<float>&,
                                                               const MoveInput<float>&,

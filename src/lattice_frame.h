@@ -93,6 +93,9 @@ public:
     const Motion& axis(int a) const noexcept { return motion_[a]; }
     T start(int a) const noexcept { return start_[a]; }
     Num edge(int a, std::int64_t k) const noexcept { return grid_[a].edge(k); }
+    Num nextEdge(int a, const Num& e) const noexcept {
+        return motion_[a].dir > 0 ? e + grid_[a].tile : e - grid_[a].tile;
+    }
     std::int64_t cells(int a) const noexcept { return grid_[a].cells; }
     std::int64_t cellOf(int a, const Num& c) const noexcept { return grid_[a].cellOf(c); }
     std::int64_t nearEdgeCell(int a) const noexcept { return grid_[a].cellOf(motion_[a].low); }

@@ -111,6 +111,42 @@ TEST(ExactPrimitives, comparesProductsThatRoundToTheSameDoubleExactly) {
     EXPECT_GT(ties, 2000) << "too few products rounded to the same double to test the refinement";
 }
 
+/// Products with a zero factor (a box touching a tile at t = 0, its entry distance against the
+/// zero time): equal when each product has one, decided without refinement; against a nonzero
+/// product, by its sign. (compareProducts' callers keep products away from underflow, so a
+/// product rounds to zero only with a zero factor.)
+TEST(ExactPrimitives, comparesProductsWithZeroFactorsExactly) {
+    std::mt19937_64 rng(2026120301);
+    int bothZero = 0;  // draws where each product has a zero factor
+    int oneZero = 0;   // draws where exactly one has
+    for (int k = 0; k < 20000; ++k) {
+        double f[4];
+        for (double& v : f) {
+            switch (rng() % 3) {
+                case 0:
+                    v = (rng() & 1) ? -0.0 : 0.0;
+                    break;
+                default:
+                    v = randomDouble(rng, -40, 40);
+                    break;
+            }
+        }
+        bool refined = false;
+        const int order = compareProducts(f[0], f[1], f[2], f[3], refined);
+        const int exact = signOf(exactly(f[0]) * exactly(f[1]) - exactly(f[2]) * exactly(f[3]));
+        ASSERT_EQ(order, exact) << std::hexfloat << f[0] << " * " << f[1] << " vs " << f[2] << " * " << f[3];
+        const bool zeroLeft = f[0] == 0 || f[1] == 0;
+        const bool zeroRight = f[2] == 0 || f[3] == 0;
+        if (zeroLeft && zeroRight) {
+            ASSERT_FALSE(refined) << "two zero products need no refinement";
+            ++bothZero;
+        }
+        oneZero += zeroLeft != zeroRight ? 1 : 0;
+    }
+    EXPECT_GT(bothZero, 4000) << "too few draws with a zero factor in each product";
+    EXPECT_GT(oneZero, 6000) << "too few draws with a zero product against a nonzero one";
+}
+
 /// A normalized pair hi + lo (hi = fl(hi + lo)) near `near`, with a random low part.
 ExactPair randomPair(std::mt19937_64& rng, double near) {
     const double lo =
