@@ -104,14 +104,10 @@ public:
     T start(int a) const noexcept { return start_[a]; }
     double edge(int a, std::int64_t k) const noexcept { return axis_[a].edge(k); }
     /// e + tile or e - tile as the motion on `a` goes, for a tile edge e: exact, since both edges
-    /// are (the range test).
+    /// are exact doubles (the range test). (Both are representable in T as well, which a valid map
+    /// guarantees, CONTRACT.md: a step rounded to T would change nothing.)
     [[gnu::always_inline]] double nextEdge(int a, double e) const noexcept {
-#if defined(TILESWEEP_FAULT_EDGE_STEP_IN_T)
-        // deliberate fault: the step rounded to the frame's type, as a walk written in T would
-        return static_cast<T>(axis_[a].dir > 0 ? e + axis_[a].tile : e - axis_[a].tile);
-#else
         return axis_[a].dir > 0 ? e + axis_[a].tile : e - axis_[a].tile;
-#endif
     }
     std::int64_t cells(int a) const noexcept { return axis_[a].cells; }
     [[gnu::always_inline]] std::int64_t cellOf(int a, const Coord& c) const noexcept {
@@ -164,8 +160,10 @@ public:
 
     static Time zeroTime() noexcept { return {coordOf<Coord>(0), 1}; }
     [[gnu::always_inline]] int compareTimes(const Time& a, const Time& b) noexcept {
-        // The same fraction (tiles entered across one face line): equal without arithmetic.
-        if (identical(a.num, b.num) && a.den == b.den) return 0;
+        // The same fraction (tiles entered across one face line), or two zero times (a box
+        // touching a tile at the start, against the zero time: the denominators are positive, and a
+        // pair's high part is zero only when the pair is): equal without arithmetic.
+        if (identical(a.num, b.num) && (a.den == b.den || approximate(a.num) == 0)) return 0;
         return compareProducts(a.num, b.den, b.num, a.den, refined_);
     }
     bool certainlyLater(const Time& a, const Time& b) const noexcept {
