@@ -19,6 +19,22 @@
 
 namespace tilesweep {
 
+namespace {
+
+/// The most rounds the caller of a batch spins on the workers' last chunks before it sleeps:
+/// about a chunk's time (kBatchChunk movers, tens of microseconds) at a pause of 20 to 140
+/// cycles a round.
+constexpr int kFinishSpins = 4096;
+
+/// One round of a spin-wait: the CPU's pause hint where there is one.
+inline void pauseSpin() noexcept {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#endif
+}
+
+}  // namespace
+
 // The hand-off. A batch opens (`open`), wakes the workers and works through the chunks itself;
 // a worker that wakes joins by counting itself in `active` and then checking `open`. When the
 // caller runs out of chunks it closes the batch and waits only for the workers that joined (all
@@ -123,6 +139,11 @@ void BatchPool::run(std::size_t count, std::size_t chunk, void (*work)(void*, st
     s.wake.notify_all();
     s.runChunks();
     s.open.store(false);
+    // The workers that joined are each within one chunk of the end (a chunk is about 10 us of
+    // work): wait for them spinning first, and sleep only if they take longer. A sleep and its
+    // wake-up cost tens of microseconds on a VM, a tenth of a 16,384-mover batch on 2 threads.
+    for (int spin = 0; spin < kFinishSpins && s.active.load() != 0; ++spin) pauseSpin();
+    if (s.active.load() == 0) return;
     std::unique_lock<std::mutex> lock(s.mutex);
     s.done.wait(lock, [&] { return s.active.load() == 0; });
 }
