@@ -263,7 +263,19 @@ private:
 
     /// Step 1 when both axes move: walk the primary axis in time order.
     void sweepBothAxes(Hits& hits) noexcept {
-        const int p = m_.primaryAxis();
+        if (m_.primaryAxis() == 0) {
+            sweepBothAxesAlong<0>(hits);
+        } else {
+            sweepBothAxesAlong<1>(hits);
+        }
+    }
+
+    /// sweepBothAxes along primary axis `p`, a constant, so that the cells' indices and the
+    /// axes' fields take no choice between the axes. With this and sweepOneAxisAlong,
+    /// FloorAndWalls at 8 tiles a frame runs 1761 instructions a frame instead of 1931 in float,
+    /// 2223 instead of 2404 in double (scripts/instructions.sh).
+    template <int p>
+    void sweepBothAxesAlong(Hits& hits) noexcept {
         const auto& mp = m_.axis(p);
         const auto walk = m_.prepareWalk(p);
         std::int64_t k = firstCellAhead(p);
@@ -348,16 +360,28 @@ private:
     /// motion), and all share its time.
     [[gnu::always_inline]] void sweepOneAxis(int a, const Coord& heldLow, const Coord& heldHigh,
                                              const Time& from, bool nearOnly, Hits& hits) noexcept {
-        if (nearOnly) {
-            sweepOneAxisNear(a, heldLow, heldHigh, from, hits);
+        if (a == 0) {
+            sweepOneAxisAlong<0>(heldLow, heldHigh, from, nearOnly, hits);
         } else {
-            walkOneAxis(a, heldLow, heldHigh, from, hits);
+            sweepOneAxisAlong<1>(heldLow, heldHigh, from, nearOnly, hits);
+        }
+    }
+
+    /// sweepOneAxis along `a`, a constant (as sweepBothAxesAlong).
+    template <int a>
+    void sweepOneAxisAlong(const Coord& heldLow, const Coord& heldHigh, const Time& from, bool nearOnly,
+                           Hits& hits) noexcept {
+        if (nearOnly) {
+            sweepOneAxisNear<a>(heldLow, heldHigh, from, hits);
+        } else {
+            walkOneAxis<a>(heldLow, heldHigh, from, hits);
         }
     }
 
     /// sweepOneAxis over the listed cells (collectNear): the earliest of them entered in
     /// [from, 1) whose span meets the held one.
-    void sweepOneAxisNear(int a, Coord heldLow, Coord heldHigh, const Time& from, Hits& hits) noexcept {
+    template <int a>
+    void sweepOneAxisNear(Coord heldLow, Coord heldHigh, const Time& from, Hits& hits) noexcept {
         const int o = 1 - a;
         const auto& ma = m_.axis(a);
         for (std::int32_t n = 0; n < nearCount_; ++n) {
@@ -373,7 +397,8 @@ private:
 
     /// sweepOneAxis by the walk along `a`. The held span comes by value (here and in
     /// sweepOneAxisNear): a copy the stores into the contact buffer cannot alias.
-    void walkOneAxis(int a, Coord heldLow, Coord heldHigh, const Time& from, Hits& hits) noexcept {
+    template <int a>
+    void walkOneAxis(Coord heldLow, Coord heldHigh, const Time& from, Hits& hits) noexcept {
         const int o = 1 - a;
         const auto& ma = m_.axis(a);
         const std::int64_t j0 = std::max<std::int64_t>(m_.cellOf(o, heldLow), 0);
