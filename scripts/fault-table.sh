@@ -59,6 +59,12 @@ if command -v ccache >/dev/null; then
     launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
 fi
 mkdir -p "$out"
+started=$(date -u '+%-d %B %Y, %H:%M')
+load_before=$(cut -d' ' -f1 /proc/loadavg)
+commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo "an unknown commit")
+if [ -n "$(git -C "$root" status --porcelain --untracked-files=no 2>/dev/null)" ]; then
+    commit="$commit with uncommitted changes"
+fi
 table=$(mktemp)
 trap 'rm -f "$table"' EXIT
 row() { echo "$1" | tee -a "$table"; }
@@ -126,6 +132,12 @@ if [ -z "${TILESWEEP_FAULTS:-}" ] && [ -z "$mutants" ]; then
         echo "is caught when some test fails; the smallest counterexample is the smallest shrunk scene any"
         echo "property wrote. FMA builds for x86-64-v3 on x86-64 (cmake/warnings.cmake), where the"
         echo "instruction exists and -ffp-contract=fast can fuse."
+        echo
+        echo "This run: commit $commit, $started to $(date -u +%H:%M) UTC, on $(nproc) cores"
+        echo "($(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)), load average $load_before"
+        echo "before and $(cut -d' ' -f1 /proc/loadavg) after; the seconds are each fault's ctest run."
+        echo "The mutants of \`scripts/mutants.txt\` are not faults and are not in this table"
+        echo "(\`TILESWEEP_MUTANTS=1 bash scripts/fault-table.sh\`)."
         echo
         cat "$table"
     } >"$root/docs/fault-table.md"
