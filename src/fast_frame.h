@@ -96,6 +96,21 @@ public:
         }
         return linesClearOf(m.low, m.disp, m.size, range_.lineBit[a]);
     }
+    /// linesClear of both axes, as bits 0 (x) and 1 (y). A frame in the window tests both sizes
+    /// on two lanes where SSE2 is at hand.
+    [[gnu::always_inline]] int linesClearBits() const noexcept {
+#if defined(TILESWEEP_FINAL_ROUNDING_SSE2)
+        if (inWindow_) {
+            const __m128d size = _mm_set_pd(axis_[1].size, axis_[0].size);
+            const __m128d shift = _mm_set1_pd(range_.sizeGrainShift);
+            const int grained =
+                _mm_movemask_pd(_mm_cmpeq_pd(_mm_sub_pd(_mm_add_pd(size, shift), shift), size));
+            return grained & (static_cast<int>(range_.windowLinesClear[0]) |
+                              (static_cast<int>(range_.windowLinesClear[1]) << 1));
+        }
+#endif
+        return static_cast<int>(linesClear(0)) | (static_cast<int>(linesClear(1)) << 1);
+    }
     /// Whether some predicate needed its exact refinement (DecisionPath::Filtered).
     [[nodiscard]] bool refined() const noexcept { return refined_; }
 
@@ -256,6 +271,16 @@ public:
             // The high parts first (monotonic rounding, the start representable); on a tie, the low part.
             const int byHigh = compare(exact.hi, start);
             return byHigh != 0 ? byHigh : signOf(exact.lo);
+        }
+    }
+    /// Both ends' final rounding at once (roundFloatEndsTogether, roundDoubleEndsTogether:
+    /// final_rounding.h); false, writing nothing, when roundFinal must run on each axis.
+    [[gnu::always_inline]] bool roundEndsTogether(const Coord& x, const Coord& y, T& outX,
+                                                  T& outY) const noexcept {
+        if constexpr (std::is_same<T, float>::value) {
+            return roundFloatEndsTogether(x, y, start_[0], start_[1], linesClearBits(), outX, outY);
+        } else {
+            return roundDoubleEndsTogether(x, y, start_[0], start_[1], linesClearBits(), outX, outY);
         }
     }
     /// Float frames: whether the exact double survives the trip to float and back; double frames:

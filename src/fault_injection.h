@@ -45,6 +45,9 @@
 //   WALK_ENTRY_TIE_BY_HIGH_PART  the walks of double frames read a cell's entry against the
 //                      speed from the pair's high part alone, so a tie of the high part with the
 //                      speed counts as entered at t >= 1 whatever the low part (fast_axis.h)
+//   FINAL_STEP_SIGN_IGNORED  the final rounding of both ends at once (float and double frames)
+//                      steps a negative value's bits as a positive one's, so it rounds away from
+//                      the start there (final_rounding.h)
 // Issue 20's four classes, one fault standing for each:
 //   PAIR_REFINEMENT_SWAPPED  double near-ties: the exact refinement of the pair comparison called
 //                      with its two sides swapped, so a nonzero sign inside the filter's band
@@ -68,6 +71,6 @@
     defined(TILESWEEP_FAULT_LINES_CLEAR_SIZE_IGNORED) || defined(TILESWEEP_FAULT_FLOAT_WINDOW_TOO_LOW) || \
     defined(TILESWEEP_FAULT_WINDOW_MAGNITUDE_SHORT) ||                                                    \
     defined(TILESWEEP_FAULT_WINDOW_LINES_CLEAR_BINADE_SHORT) ||                                           \
-    defined(TILESWEEP_FAULT_WALK_ENTRY_TIE_BY_HIGH_PART)
+    defined(TILESWEEP_FAULT_WALK_ENTRY_TIE_BY_HIGH_PART) || defined(TILESWEEP_FAULT_FINAL_STEP_SIGN_IGNORED)
 #define TILESWEEP_FAULT_INJECTED 1
 #endif

@@ -41,7 +41,9 @@
 //   box     start(a), nearEdge(a), farEdge(a), endOf(a), touchLow(a, e), touchHigh(a, e)
 //   tile    testTile(i, j) (axis_sweep.h's test on its numbers)
 //   result  roundTime(time, out), positionAt(a, time, out) (the box's coordinate on `a` at that
-//           time, rounded to nearest), and for roundFinal (final_rounding.h): false = undecided.
+//           time, rounded to nearest), roundEndsTogether(x, y, outX, outY) (both final
+//           coordinates at once, or false), and for roundFinal (final_rounding.h): false =
+//           undecided.
 
 #include "axis_sweep.h"
 #include "cell_range.h"
@@ -124,8 +126,7 @@ public:
         }
         result.contactCount = total;
         result.status = total > 0 ? ResolveStatus::Blocked : ResolveStatus::Moved;
-        return roundFinal(m_, finalPos[0], 0, result.position.x) &&
-               roundFinal(m_, finalPos[1], 1, result.position.y) &&
+        return roundEnds(finalPos, result.position) &&
                (!placeContactPositions || placeContacts(out, first, slides, result));
     }
 
@@ -160,6 +161,13 @@ private:
         hits.touch[a] = touchEdge;
         if (hits.count < hits.capacity) hits.store[hits.count] = {cell, normalOn(a), T(0), {}};
         ++hits.count;
+    }
+
+    /// The final rounding of both ends (final_rounding.h): at once where the arithmetic can
+    /// (roundEndsTogether), otherwise axis by axis; false when it is undecided.
+    [[gnu::always_inline]] bool roundEnds(const Coord (&ends)[2], Vec2<T>& out) noexcept {
+        if (m_.roundEndsTogether(ends[0], ends[1], out.x, out.y)) return true;
+        return roundFinal(m_, ends[0], 0, out.x) && roundFinal(m_, ends[1], 1, out.y);
     }
 
     /// Sorts a step's stored hits by row, then column, and writes its frame time (the same for

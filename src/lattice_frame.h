@@ -156,6 +156,9 @@ public:
                                 grid_[1].edge(j), grid_[1].edge(j + 1), refined);
     }
 
+    /// Both ends at once: never here (roundFinal runs on each axis).
+    bool roundEndsTogether(const Num&, const Num&, T&, T&) const noexcept { return false; }
+
     bool roundTime(const Time& t, T& out) const noexcept {
         out = roundRatioToNearest<T>(t.num, t.den);
         return true;
