@@ -22,6 +22,7 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 namespace tilesweep::detail {
@@ -445,6 +446,111 @@ TEST(RoundToFloat, IsTheDirectedRounding) {
     }
     EXPECT_GT(inexact, 140000);
 }
+
+/// The bits of a float or a double, for comparisons that tell -0 from +0.
+template <class T>
+std::uint64_t bitsOfValue(T v) {
+    std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t> bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    return bits;
+}
+
+/// What roundFinal makes of one end (final_rounding.h), from the exact order alone: an end equal
+/// to its start is the start (its sign of zero too); another representable end is itself (a zero
+/// +0); an inexact one is the nearest T on the start's side: below the end for an end above the
+/// start, above it for one below. `exactEnd` is the end as a rational, `nearest` its rounding to
+/// nearest in T; `inexact` whether they differ.
+template <class T>
+T expectedEnd(const Rational& exactEnd, T nearest, bool inexact, T start) {
+    const Rational s = exactly(static_cast<double>(start));
+    if (!inexact) return exactEnd == s ? start : static_cast<T>(nearest + T(0));
+    const bool above = exactly(static_cast<double>(nearest)) > exactEnd;
+    if (exactEnd > s) return above ? std::nextafter(nearest, -std::numeric_limits<T>::infinity()) : nearest;
+    return above ? nearest : std::nextafter(nearest, std::numeric_limits<T>::infinity());
+}
+
+/// One lane's draw: a start and an end that the start plus a displacement makes, exactly, as a
+/// float frame's (an exact double) or a double frame's (an exact pair) end is. Starts of both
+/// signs and zeros of both signs; displacements from far below the start's ulp to far above it.
+template <class T>
+void drawEnd(std::mt19937_64& rng, T& start, double& endHi, double& endLo) {
+    constexpr int digits = std::numeric_limits<T>::digits;
+    const int kind = static_cast<int>(rng() % 8);
+    start = kind == 0 ? T(0) : static_cast<T>(randomDouble(rng, -20, 40));
+    if (kind == 1) start = -start;  // -0 among them
+    T move = static_cast<T>(randomDouble(rng, -30 - digits, 40));
+    if (kind == 2) move = -start;  // back to zero
+    if (kind == 3) move = T(0);    // a still axis: the start's bits
+    const ExactPair sum = twoSum(static_cast<double>(start), static_cast<double>(move));
+    endHi = sum.hi;
+    endLo = sum.lo;
+}
+
+/// roundFloatEndsTogether and roundDoubleEndsTogether (final_rounding.h: both ends of a frame
+/// rounded at once) against expectedEnd on each lane, bit for bit, and their refusals against
+/// the rule: exactly when an inexact end lies below its start on an axis whose lines are not
+/// clear (the amended rule may apply there), or a rounded end is not finite. Floors on the
+/// inexact negative ends rounded (the sign of the bit step), the ends equal to a start of -0,
+/// and the refusals, so that every case is reached.
+template <class T>
+void checkEndsTogether(std::uint64_t seed) {
+#if !defined(TILESWEEP_FINAL_ROUNDING_SSE2)
+    float out = 0;
+    EXPECT_FALSE(
+        roundFloatEndsTogether(1.5, 2.5, 1.0F, 2.0F, 3, out, out));  // the portable build: roundFinal only
+    static_cast<void>(seed);
+    GTEST_SKIP() << "no SSE2 lanes here: roundFinal rounds every end";
+#else
+    std::mt19937_64 rng(seed);
+    int negativeInexact = 0;
+    int negativeZeroStart = 0;
+    int refused = 0;
+    for (int k = 0; k < 100000; ++k) {
+        T start[2];
+        double hi[2];
+        double lo[2];
+        for (int a = 0; a < 2; ++a) drawEnd(rng, start[a], hi[a], lo[a]);
+        if constexpr (std::is_same<T, float>::value) {
+            if (lo[0] != 0 || lo[1] != 0) continue;  // a float frame's end is an exact double
+        }
+        const int linesClear = static_cast<int>(rng() % 4);
+        bool mustRefuse = false;
+        T expected[2];
+        for (int a = 0; a < 2; ++a) {
+            const Rational exactEnd = exactly(hi[a]) + exactly(lo[a]);
+            const T nearest = static_cast<T>(hi[a]);  // hi = fl(end), and a float's nearest from it
+            const bool inexact = exactly(static_cast<double>(nearest)) != exactEnd;
+            expected[a] = expectedEnd(exactEnd, nearest, inexact, start[a]);
+            const bool below = exactEnd < exactly(static_cast<double>(start[a]));
+            mustRefuse |= (inexact && below && ((linesClear >> a) & 1) == 0) || !std::isfinite(expected[a]);
+            negativeInexact += inexact && exactEnd < 0 ? 1 : 0;
+            negativeZeroStart += !inexact && exactEnd == 0 && std::signbit(start[a]) ? 1 : 0;
+        }
+        T out[2] = {T(7), T(7)};
+        bool together = false;
+        if constexpr (std::is_same<T, float>::value) {
+            together = roundFloatEndsTogether(hi[0], hi[1], start[0], start[1], linesClear, out[0], out[1]);
+        } else {
+            together = roundDoubleEndsTogether({hi[0], lo[0]}, {hi[1], lo[1]}, start[0], start[1], linesClear,
+                                               out[0], out[1]);
+        }
+        ASSERT_EQ(together, !mustRefuse) << std::hexfloat << hi[0] << " " << hi[1] << " from " << start[0]
+                                         << " " << start[1] << ", lines clear " << linesClear;
+        refused += together ? 0 : 1;
+        if (!together) continue;
+        for (int a = 0; a < 2; ++a)
+            ASSERT_EQ(bitsOfValue(out[a]), bitsOfValue(expected[a]))
+                << std::hexfloat << "end " << hi[a] << " + " << lo[a] << " from " << start[a] << ": "
+                << out[a] << ", expected " << expected[a];
+    }
+    EXPECT_GT(negativeInexact, 10000);
+    EXPECT_GT(negativeZeroStart, 500);
+    EXPECT_GT(refused, 5000);
+#endif
+}
+
+TEST(FinalRounding, BothEndsAtOnceRoundTowardTheStartsInFloat) { checkEndsTogether<float>(48); }
+TEST(FinalRounding, BothEndsAtOnceRoundTowardTheStartsInDouble) { checkEndsTogether<double>(49); }
 
 /// The range test's promise to double frames (admitDoubleFrame, range_admission.h): every frame
 /// it admits, by its short form or its full test, gets the far box edge's distances to the tile
