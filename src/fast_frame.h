@@ -278,9 +278,11 @@ public:
     [[gnu::always_inline]] bool roundEndsTogether(const Coord& x, const Coord& y, T& outX,
                                                   T& outY) const noexcept {
         if constexpr (std::is_same<T, float>::value) {
-            return roundFloatEndsTogether(x, y, start_[0], start_[1], linesClearBits(), outX, outY);
+            return roundFloatEndsTogether(
+                x, y, start_[0], start_[1], [this] { return linesClearBits(); }, outX, outY);
         } else {
-            return roundDoubleEndsTogether(x, y, start_[0], start_[1], linesClearBits(), outX, outY);
+            return roundDoubleEndsTogether(
+                x, y, start_[0], start_[1], [this] { return linesClearBits(); }, outX, outY);
         }
     }
     /// Float frames: whether the exact double survives the trip to float and back; double frames:

@@ -28,7 +28,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <limits>
 
 #if defined(__SSE2__) && !defined(TILESWEEP_PORTABLE_INTEGERS)
 #include <emmintrin.h>
@@ -83,56 +82,63 @@ template <class Arith, class Coord, class T>
 }
 
 /// roundFinal for both ends of a float frame at once, on two lanes: `endX` and `endY` exact
-/// doubles; bit a of `linesClear` says whether no grid line can fall where the amended rule
-/// would look on axis a (FastFrame::linesClearBits). Each end is rounded toward its start, or is the start
-/// itself when equal to it (its sign of zero too), as roundFinal does without the amendment.
-/// False, writing nothing, when an inexact end lies below its start on an axis whose lines are
-/// not clear (the amendment may apply), or when a rounded end is not finite: roundFinal then
-/// runs on each axis. Otherwise no branch: which ends round up and which down is the data's.
+/// doubles; `linesClear()` gives, in bit a, whether no grid line can fall where the amended rule
+/// would look on axis a (FastFrame::linesClearBits), and is asked only when an end is inexact.
+/// Each end is rounded toward its start, or is the start itself when equal to it (its sign of
+/// zero too), as roundFinal does without the amendment. False, writing nothing, when an inexact
+/// end lies below its start on an axis whose lines are not clear (the amendment may apply):
+/// roundFinal then runs on each axis. One branch besides, which a game predicts: whether both
+/// ends are representable (moves by whole pixels, or none); which ends round up and which down
+/// is the data's, and takes none.
 ///
 /// Why it holds. Ends lie between the start and the start plus the displacement, so an inexact
 /// end is not its start, and "toward the start" is down for an end above it and up for one below
 /// (roundFinal reads the same from the direction of the move). The nearest float, converted
 /// back, says on which side of the end it lies; when that is away from the start, one step of
 /// its bits toward the start is the directed rounding (a float's bits grow with its magnitude,
-/// and the step from an infinity is the largest float). No step ever starts from a zero: every
-/// float frame's end is a multiple of 2^-149, and those below 2^-125 in magnitude are floats.
-/// Without SSE2, and in the portable build, false: roundFinal does it all.
+/// and the step from an infinity is the largest float). The result is finite: it lies between
+/// the end and a finite start (roundFinal's fallback for an infinite result serves the amended
+/// rule, which rounds away from the start, and is not taken here). No step starts from a zero:
+/// every float frame's end is a multiple of 2^-149, and those below 2^-125 in magnitude are
+/// floats. Without SSE2, and in the portable build, false: roundFinal does it all.
+template <class LinesClear>
 [[nodiscard, gnu::always_inline]] inline bool roundFloatEndsTogether(double endX, double endY, float startX,
-                                                                     float startY, int linesClear,
+                                                                     float startY,
+                                                                     const LinesClear& linesClear,
                                                                      float& outX, float& outY) noexcept {
 #if defined(TILESWEEP_FINAL_ROUNDING_SSE2) && !defined(TILESWEEP_FAULT_ROUND_NEAREST) && \
     !defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE)
     const __m128d end =
         _mm_add_pd(_mm_set_pd(endY, endX), _mm_setzero_pd());  // a zero reads +0, as in roundFinal
-    const __m128 start = _mm_setr_ps(startX, startY, 0.0F, 0.0F);
-    const __m128d startWide = _mm_cvtps_pd(start);
-    const __m128 nearest = _mm_cvtpd_ps(end);  // to nearest, the library's rounding mode
+    const __m128 nearest = _mm_cvtpd_ps(end);                  // to nearest, the library's rounding mode
     const __m128d nearestWide = _mm_cvtps_pd(nearest);
-    const __m128d above = _mm_cmplt_pd(end, nearestWide);  // the nearest float lies above the end
-    const __m128d below = _mm_cmplt_pd(nearestWide, end);
-    const __m128d roundsUp = _mm_cmplt_pd(end, startWide);    // an end below its start
-    const __m128d roundsDown = _mm_cmplt_pd(startWide, end);  // an end above its start
-    // The axes where the amendment may apply: an inexact end below its start, lines not clear.
-    const int amendmentMayApply =
-        _mm_movemask_pd(_mm_and_pd(roundsUp, _mm_or_pd(above, below))) & ~linesClear;
-    // Steps toward plus infinity, per lane: -1 (all ones) or +1, as 64-bit integers, then their
-    // low halves in lanes 0 and 1.
-    const __m128i stepsWide = _mm_sub_epi64(_mm_castpd_si128(_mm_and_pd(roundsDown, above)),
-                                            _mm_castpd_si128(_mm_and_pd(roundsUp, below)));
-    const __m128i steps = _mm_shuffle_epi32(stepsWide, _MM_SHUFFLE(3, 3, 2, 0));
-    const __m128i bits = _mm_castps_si128(nearest);
+    const __m128 start = _mm_setr_ps(startX, startY, 0.0F, 0.0F);
+    __m128 result = nearest;  // both ends representable: the ends themselves
+    if (_mm_movemask_pd(_mm_cmpeq_pd(nearestWide, end)) != 3) {
+        const __m128d startWide = _mm_cvtps_pd(start);
+        const __m128d above = _mm_cmplt_pd(end, nearestWide);  // the nearest float lies above the end
+        const __m128d below = _mm_cmplt_pd(nearestWide, end);
+        const __m128d roundsUp = _mm_cmplt_pd(end, startWide);    // an end below its start
+        const __m128d roundsDown = _mm_cmplt_pd(startWide, end);  // an end above its start
+        // The amendment may apply: an inexact end below its start, on an axis whose lines are
+        // not clear.
+        const int inexactBelow = _mm_movemask_pd(_mm_and_pd(roundsUp, _mm_or_pd(above, below)));
+        if ((inexactBelow & ~linesClear()) != 0) return false;
+        // Steps toward plus infinity, per lane: -1 (all ones) or +1, as 64-bit integers, then
+        // their low halves in lanes 0 and 1.
+        const __m128i stepsWide = _mm_sub_epi64(_mm_castpd_si128(_mm_and_pd(roundsDown, above)),
+                                                _mm_castpd_si128(_mm_and_pd(roundsUp, below)));
+        const __m128i steps = _mm_shuffle_epi32(stepsWide, _MM_SHUFFLE(3, 3, 2, 0));
+        const __m128i bits = _mm_castps_si128(nearest);
 #if defined(TILESWEEP_FAULT_FINAL_STEP_SIGN_IGNORED)
-    const __m128i rounded =
-        _mm_add_epi32(bits, steps);  // deliberate fault: negative floats step the wrong way
+        result = _mm_castsi128_ps(
+            _mm_add_epi32(bits, steps));  // deliberate fault: negative floats step the wrong way
 #else
-    const __m128i negative = _mm_srai_epi32(bits, 31);  // all ones for a negative float
-    const __m128i rounded = _mm_add_epi32(bits, _mm_sub_epi32(_mm_xor_si128(steps, negative), negative));
+        const __m128i negative = _mm_srai_epi32(bits, 31);  // all ones for a negative float
+        result =
+            _mm_castsi128_ps(_mm_add_epi32(bits, _mm_sub_epi32(_mm_xor_si128(steps, negative), negative)));
 #endif
-    const __m128i infiniteOrNaN =
-        _mm_cmpgt_epi32(_mm_and_si128(rounded, _mm_set1_epi32(0x7fffffff)), _mm_set1_epi32(0x7f7fffff));
-    if ((amendmentMayApply | (_mm_movemask_ps(_mm_castsi128_ps(infiniteOrNaN)) & 3)) != 0) return false;
-    const __m128 result = _mm_castsi128_ps(rounded);
+    }
     const __m128 atStart = _mm_cmpeq_ps(result, start);
     const __m128 out = _mm_or_ps(_mm_and_ps(atStart, start), _mm_andnot_ps(atStart, result));
     outX = _mm_cvtss_f32(out);
@@ -154,13 +160,15 @@ template <class Arith, class Coord, class T>
 /// rest), rounded toward its start. An inexact end (lo != 0) lies on the side of its start that
 /// its high part and low part say (hi is on the value's side of the start, or equal to it when
 /// lo says which), and is rounded by one step of hi toward the start when lo points away from
-/// the start, else hi itself, as roundFinal does through roundToward. The same conditions send
-/// it back to roundFinal: an inexact end below its start on an axis whose lines are not clear,
-/// or a result that is not finite. hi is zero only for a zero value, so no step starts from a
-/// zero.
+/// the start, else hi itself, as roundFinal does through roundToward. It goes back to roundFinal
+/// on the same condition: an inexact end below its start on an axis whose lines are not clear.
+/// hi is zero only for a zero value, so no step starts from a zero, and the result is finite as
+/// above.
+template <class LinesClear>
 [[nodiscard, gnu::always_inline]] inline bool roundDoubleEndsTogether(const ExactPair& endX,
                                                                       const ExactPair& endY, double startX,
-                                                                      double startY, int linesClear,
+                                                                      double startY,
+                                                                      const LinesClear& linesClear,
                                                                       double& outX, double& outY) noexcept {
 #if defined(TILESWEEP_FINAL_ROUNDING_SSE2) && !defined(TILESWEEP_FAULT_ROUND_NEAREST) && \
     !defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE)
@@ -168,29 +176,29 @@ template <class Arith, class Coord, class T>
     const __m128d hi = _mm_add_pd(_mm_set_pd(endY.hi, endX.hi), zero);  // a zero reads +0, as in roundFinal
     const __m128d lo = _mm_set_pd(endY.lo, endX.lo);
     const __m128d start = _mm_set_pd(startY, startX);
-    const __m128d loBelow = _mm_cmplt_pd(lo, zero);  // the value lies below hi
-    const __m128d loAbove = _mm_cmplt_pd(zero, lo);
-    const __m128d atStartHigh = _mm_cmpeq_pd(hi, start);
-    const __m128d roundsUp = _mm_or_pd(_mm_cmplt_pd(hi, start), _mm_and_pd(atStartHigh, loBelow));
-    const __m128d roundsDown = _mm_or_pd(_mm_cmplt_pd(start, hi), _mm_and_pd(atStartHigh, loAbove));
-    const int amendmentMayApply =
-        _mm_movemask_pd(_mm_and_pd(roundsUp, _mm_or_pd(loBelow, loAbove))) & ~linesClear;
-    // Steps toward plus infinity: -1 (all ones) where the value lies below hi and rounds down,
-    // +1 where it lies above hi and rounds up.
-    const __m128i steps = _mm_sub_epi64(_mm_castpd_si128(_mm_and_pd(roundsDown, loBelow)),
-                                        _mm_castpd_si128(_mm_and_pd(roundsUp, loAbove)));
-    const __m128i bits = _mm_castpd_si128(hi);
+    __m128d result = hi;  // both ends representable (both low parts zero): the ends themselves
+    if (_mm_movemask_pd(_mm_cmpeq_pd(lo, zero)) != 3) {
+        const __m128d loBelow = _mm_cmplt_pd(lo, zero);  // the value lies below hi
+        const __m128d loAbove = _mm_cmplt_pd(zero, lo);
+        const __m128d atStartHigh = _mm_cmpeq_pd(hi, start);
+        const __m128d roundsUp = _mm_or_pd(_mm_cmplt_pd(hi, start), _mm_and_pd(atStartHigh, loBelow));
+        const __m128d roundsDown = _mm_or_pd(_mm_cmplt_pd(start, hi), _mm_and_pd(atStartHigh, loAbove));
+        const int inexactBelow = _mm_movemask_pd(_mm_and_pd(roundsUp, _mm_or_pd(loBelow, loAbove)));
+        if ((inexactBelow & ~linesClear()) != 0) return false;
+        // Steps toward plus infinity: -1 (all ones) where the value lies below hi and rounds
+        // down, +1 where it lies above hi and rounds up.
+        const __m128i steps = _mm_sub_epi64(_mm_castpd_si128(_mm_and_pd(roundsDown, loBelow)),
+                                            _mm_castpd_si128(_mm_and_pd(roundsUp, loAbove)));
+        const __m128i bits = _mm_castpd_si128(hi);
 #if defined(TILESWEEP_FAULT_FINAL_STEP_SIGN_IGNORED)
-    const __m128i rounded =
-        _mm_add_epi64(bits, steps);  // deliberate fault: negative doubles step the wrong way
+        result = _mm_castsi128_pd(
+            _mm_add_epi64(bits, steps));  // deliberate fault: negative doubles step the wrong way
 #else
-    const __m128i negative = _mm_shuffle_epi32(_mm_srai_epi32(bits, 31), _MM_SHUFFLE(3, 3, 1, 1));
-    const __m128i rounded = _mm_add_epi64(bits, _mm_sub_epi64(_mm_xor_si128(steps, negative), negative));
+        const __m128i negative = _mm_shuffle_epi32(_mm_srai_epi32(bits, 31), _MM_SHUFFLE(3, 3, 1, 1));
+        result =
+            _mm_castsi128_pd(_mm_add_epi64(bits, _mm_sub_epi64(_mm_xor_si128(steps, negative), negative)));
 #endif
-    const __m128d result = _mm_castsi128_pd(rounded);
-    const __m128d finite = _mm_cmplt_pd(_mm_andnot_pd(_mm_set1_pd(-0.0), result),
-                                        _mm_set1_pd(std::numeric_limits<double>::infinity()));
-    if ((amendmentMayApply | (_mm_movemask_pd(finite) ^ 3)) != 0) return false;
+    }
     const __m128d atStart = _mm_cmpeq_pd(result, start);
     const __m128d out = _mm_or_pd(_mm_and_pd(atStart, start), _mm_andnot_pd(atStart, result));
     outX = _mm_cvtsd_f64(out);
