@@ -788,6 +788,7 @@ void checkWindowLinesClear(std::uint64_t seed) {
     int inWindow = 0;
     int clearInWindow = 0;
     int refusedAtTheBound = 0;
+    int axesDiffer = 0;
     for (int draw = 0; draw < 200000; ++draw) {
         const int tileBits = 1 + static_cast<int>(rng() % 16);
         const double odd = static_cast<double>(2 * (rng() % (std::uint64_t{1} << (tileBits - 1))) + 1);
@@ -797,8 +798,24 @@ void checkWindowLinesClear(std::uint64_t seed) {
                                                                : static_cast<int>(rng() % 13) - 26;
         const T tile = static_cast<T>(std::ldexp(odd, tileExponent));
         const std::int32_t cells = static_cast<std::int32_t>(1 + rng() % 4000);
-        const T origin = (rng() % 2) ? T(0) : tile * static_cast<T>(static_cast<int>(rng() % 2001) - 1000);
-        const TileMapView<T> map{{origin, origin}, {tile, tile}, cells, 16, solid.data()};
+        // Each axis its own origin, now and then a few bits finer than the tile, so that the two
+        // axes' grids can differ in their lowest bit.
+        const auto drawOrigin = [&] {
+            const T onGrid = tile * static_cast<T>(static_cast<int>(rng() % 2001) - 1000);
+            switch (rng() % 4) {
+                case 0:
+                    return T(0);
+                case 1:
+                    return static_cast<T>(
+                        std::ldexp(static_cast<double>(onGrid) + static_cast<double>(tile) / 2,
+                                   -static_cast<int>(rng() % 3)));
+                default:
+                    return onGrid;
+            }
+        };
+        const T origin = drawOrigin();
+        const T originY = drawOrigin();
+        const TileMapView<T> map{{origin, originY}, {tile, tile}, cells, 16, solid.data()};
         const MapRange range = mapRangeOf(map);
         if (!range.common) continue;
         int windowExponent = 30;  // the double window's
@@ -815,7 +832,12 @@ void checkWindowLinesClear(std::uint64_t seed) {
         ++inWindow;
         const FastFrame<T> window(in, range, true);
         const FastFrame<T> general(in, range, false);
+        // The final rounding's two-lane form reads both axes' answers at once (linesClearBits):
+        // bit a must be axis a's own.
+        const int bits = window.linesClearBits();
+        axesDiffer += range.windowLinesClear[0] != range.windowLinesClear[1] ? 1 : 0;
         for (int a = 0; a < 2; ++a) {
+            ASSERT_EQ((bits >> a) & 1, window.linesClear(a) ? 1 : 0) << "axis " << a;
             if (window.linesClear(a)) {
                 ASSERT_TRUE(general.linesClear(a))
                     << std::hexfloat << "axis " << a << " box " << in.box.pos.x << ", " << in.box.pos.y
@@ -830,6 +852,7 @@ void checkWindowLinesClear(std::uint64_t seed) {
     EXPECT_GT(clearInWindow, 5000) << "too few axes the window form clears";
     EXPECT_GT(refusedAtTheBound, 500)
         << "too few refused axes whose grid bit is one short of the window's ends";
+    EXPECT_GT(axesDiffer, 500) << "too few frames whose two axes' grids differ in the window's answer";
 }
 
 TEST(WindowLinesClear, ClaimsNoMoreThanTheGeneralShortcutInFloat) { checkWindowLinesClear<float>(46); }
