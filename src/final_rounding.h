@@ -102,10 +102,10 @@ template <class Arith, class Coord, class T>
 /// every float frame's end is a multiple of 2^-149, and those below 2^-125 in magnitude are
 /// floats. Without SSE2, and in the portable build, false: roundFinal does it all.
 template <class LinesClear>
-[[nodiscard, gnu::always_inline]] inline bool roundFloatEndsTogether(double endX, double endY, float startX,
-                                                                     float startY,
-                                                                     const LinesClear& linesClear,
-                                                                     float& outX, float& outY) noexcept {
+[[nodiscard, gnu::always_inline]] inline bool roundFloatEndsTogether(
+    [[maybe_unused]] double endX, [[maybe_unused]] double endY, [[maybe_unused]] float startX,
+    [[maybe_unused]] float startY, [[maybe_unused]] const LinesClear& linesClear,
+    [[maybe_unused]] float& outX, [[maybe_unused]] float& outY) noexcept {
 #if defined(TILESWEEP_FINAL_ROUNDING_SSE2) && !defined(TILESWEEP_FAULT_ROUND_NEAREST) && \
     !defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE)
     const __m128d end =
@@ -145,14 +145,7 @@ template <class LinesClear>
     outY = _mm_cvtss_f32(_mm_shuffle_ps(out, out, _MM_SHUFFLE(1, 1, 1, 1)));
     return true;
 #else
-    static_cast<void>(endX);
-    static_cast<void>(endY);
-    static_cast<void>(startX);
-    static_cast<void>(startY);
-    static_cast<void>(linesClear);
-    static_cast<void>(outX);
-    static_cast<void>(outY);
-    return false;
+    return false;  // every parameter unused here ([[maybe_unused]])
 #endif
 }
 
@@ -165,11 +158,11 @@ template <class LinesClear>
 /// hi is zero only for a zero value, so no step starts from a zero, and the result is finite as
 /// above.
 template <class LinesClear>
-[[nodiscard, gnu::always_inline]] inline bool roundDoubleEndsTogether(const ExactPair& endX,
-                                                                      const ExactPair& endY, double startX,
-                                                                      double startY,
-                                                                      const LinesClear& linesClear,
-                                                                      double& outX, double& outY) noexcept {
+[[nodiscard, gnu::always_inline]] inline bool roundDoubleEndsTogether(
+    [[maybe_unused]] const ExactPair& endX, [[maybe_unused]] const ExactPair& endY,
+    [[maybe_unused]] double startX, [[maybe_unused]] double startY,
+    [[maybe_unused]] const LinesClear& linesClear, [[maybe_unused]] double& outX,
+    [[maybe_unused]] double& outY) noexcept {
 #if defined(TILESWEEP_FINAL_ROUNDING_SSE2) && !defined(TILESWEEP_FAULT_ROUND_NEAREST) && \
     !defined(TILESWEEP_FAULT_OLD_ROUNDING_RULE)
     const __m128d zero = _mm_setzero_pd();
@@ -205,14 +198,7 @@ template <class LinesClear>
     outY = _mm_cvtsd_f64(_mm_unpackhi_pd(out, out));
     return true;
 #else
-    static_cast<void>(endX);
-    static_cast<void>(endY);
-    static_cast<void>(startX);
-    static_cast<void>(startY);
-    static_cast<void>(linesClear);
-    static_cast<void>(outX);
-    static_cast<void>(outY);
-    return false;
+    return false;  // every parameter unused here ([[maybe_unused]])
 #endif
 }
 
