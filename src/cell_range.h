@@ -9,6 +9,11 @@
 
 #include <cstdint>
 
+#if defined(__SSE2__) && !defined(TILESWEEP_PORTABLE_INTEGERS)
+#include <emmintrin.h>
+#define TILESWEEP_CELL_RANGE_SSE2 1
+#endif
+
 // The functions here run a few times a frame on the fast path: always inlined (gnu::always_inline;
 // other compilers ignore it), so that their callers keep the ends and margins in registers.
 
@@ -58,5 +63,27 @@ struct CellRange {
     to = to < limit ? to : limit;
     return {static_cast<std::int64_t>(from), static_cast<std::int64_t>(to) - 1};
 }
+
+#if defined(TILESWEEP_CELL_RANGE_SSE2)
+/// estimateCells of two axes at once, lane 0 into out[0] and lane 1 into out[1]: the same
+/// operations on the same values in each SSE2 lane (a lane's max(v, 0) is v > 0 ? v : 0 and its
+/// min(v, limit) is v < limit ? v : limit, NaN included), so the same ranges bit for bit.
+/// `limit` holds each axis's cell count (below 2^31: a map's columns and rows are 32-bit), so
+/// each clamped end truncates exactly in a 32-bit lane.
+[[gnu::always_inline]] inline void estimateCellsOfBoth(__m128d low, __m128d high, __m128d margin,
+                                                       __m128d limit, CellRange (&out)[2]) noexcept {
+    const __m128d zero = _mm_setzero_pd();
+    const __m128d from = _mm_min_pd(_mm_max_pd(_mm_sub_pd(low, margin), zero), limit);
+    const __m128d to =
+        _mm_min_pd(_mm_max_pd(_mm_add_pd(_mm_add_pd(high, margin), _mm_set1_pd(1)), zero), limit);
+    // Both ends are integers in [0, 2^31) once truncated: zero-extended to 64 bits.
+    const __m128i zeroBits = _mm_setzero_si128();
+    const __m128i first = _mm_unpacklo_epi32(_mm_cvttpd_epi32(from), zeroBits);
+    const __m128i last =
+        _mm_sub_epi64(_mm_unpacklo_epi32(_mm_cvttpd_epi32(to), zeroBits), _mm_set1_epi64x(1));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(&out[0]), _mm_unpacklo_epi64(first, last));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(&out[1]), _mm_unpackhi_epi64(first, last));
+}
+#endif
 
 }  // namespace tilesweep::detail

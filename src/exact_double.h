@@ -26,6 +26,10 @@
 #include <limits>
 #include <type_traits>
 
+#if defined(__SSE2__) && !defined(TILESWEEP_PORTABLE_INTEGERS)
+#include <emmintrin.h>
+#endif
+
 namespace tilesweep::detail {
 
 /// The rounding error of p = fl(a*b): a*b - p, exactly (Dekker's TwoProduct with Veltkamp's
@@ -83,7 +87,8 @@ using ExactPair = ExactSum<double>;
 
 /// a + b exactly, as a normalized pair (Knuth's TwoSum: six operations, no branch, exact for
 /// any finite floats or doubles whose sum does not overflow; no FMA: -ffp-contract=off). The
-/// one TwoSum of the library: the fast path, the zero move and map validation use it.
+/// one TwoSum of the library (with its two-lane form below): the fast path, the zero move and map
+/// validation use it.
 template <class T>
 [[nodiscard]] inline ExactSum<T> twoSum(T a, T b) noexcept {
     const T s = a + b;
@@ -91,6 +96,21 @@ template <class T>
     const T aVirtual = s - bVirtual;
     return {s, (a - aVirtual) + (b - bVirtual)};
 }
+
+#if defined(__SSE2__) && !defined(TILESWEEP_PORTABLE_INTEGERS)
+/// Two TwoSums at once, one in each SSE2 lane: twoSum's six operations, lane by lane, so each
+/// lane's pair is the one twoSum gives for it, bit for bit (the frame's set-up, fast_frame.h).
+struct PairLanes {
+    __m128d hi;
+    __m128d lo;
+};
+[[nodiscard, gnu::always_inline]] inline PairLanes twoSumOnLanes(__m128d a, __m128d b) noexcept {
+    const __m128d s = _mm_add_pd(a, b);
+    const __m128d bVirtual = _mm_sub_pd(s, a);
+    const __m128d aVirtual = _mm_sub_pd(s, bVirtual);
+    return {s, _mm_add_pd(_mm_sub_pd(a, aVirtual), _mm_sub_pd(b, bVirtual))};
+}
+#endif
 
 /// -1, 0 or 1 as the exact value v compares with the double d. When hi != d, hi = fl(v) lies on
 /// the same side of d as v (monotonic rounding, d representable); when hi == d, lo decides.

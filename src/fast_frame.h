@@ -76,10 +76,18 @@ public:
     /// cell estimates' magnitudes (magnitude()).
     FastFrame(const ResolveInput<T>& in, const MapRange& range, bool inWindow = false) noexcept
         : map_(in.map), range_(range), inWindow_(inWindow) {
+#if defined(TILESWEEP_CELL_RANGE_SSE2)
+        setUpOnLanes(in);
+#else
         axis_[0] = makeAxis(in.box.pos.x, in.box.size.x, in.displacement.x, in.map.origin.x,
                             in.map.tileSize.x, in.map.columns, range.inverseTile[0]);
         axis_[1] = makeAxis(in.box.pos.y, in.box.size.y, in.displacement.y, in.map.origin.y,
                             in.map.tileSize.y, in.map.rows, range.inverseTile[1]);
+        for (int a = 0; a < 2; ++a) {
+            end_[a] = sumOf<Coord>(axis_[a].low, axis_[a].disp);
+            swept_[a] = sweptCells(a);
+        }
+#endif
         start_[0] = in.box.pos.x;
         start_[1] = in.box.pos.y;
     }
@@ -159,9 +167,16 @@ public:
                              cellMargin(kCellEstimateErrorUlps, magnitude(a), g.invTile), g.cells);
     }
 
+    /// sweptCells of both axes, computed with the frame (setUpOnLanes: on two lanes).
+    [[gnu::always_inline]] void sweptCellsOfBoth(CellRange (&out)[2]) const noexcept {
+        out[0] = swept_[0];
+        out[1] = swept_[1];
+    }
+
     Coord nearEdge(int a) const noexcept { return coordOf<Coord>(axis_[a].low); }
     Coord farEdge(int a) const noexcept { return axis_[a].farEdge(); }
-    Coord endOf(int a) const noexcept { return sumOf<Coord>(axis_[a].low, axis_[a].disp); }
+    /// low + disp, exactly: computed with the frame.
+    Coord endOf(int a) const noexcept { return end_[a]; }
     /// The box's low edge when it touches the tile edge `e` on `a`.
     Coord touchLow(int a, double e) const noexcept {
         const Motion& g = axis_[a];
@@ -442,6 +457,82 @@ private:
         return ulps * kUnitRoundoff * magnitude * invTile;
     }
 
+#if defined(TILESWEEP_CELL_RANGE_SSE2)
+    /// A Vec2's x and y as the two lanes of a vector of doubles (exact: a float converts exactly).
+    [[gnu::always_inline]] static __m128d lanesOf(const Vec2<T>& v) noexcept {
+        if constexpr (std::is_same<T, float>::value) {
+            return _mm_cvtps_pd(_mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(&v))));
+        } else {
+            return _mm_loadu_pd(&v.x);
+        }
+    }
+    /// Lane 0 into axis x's field, lane 1 into axis y's.
+    [[gnu::always_inline]] void storeLanes(double Motion::*field, __m128d v) noexcept {
+        _mm_storel_pd(&(axis_[0].*field), v);
+        _mm_storeh_pd(&(axis_[1].*field), v);
+    }
+
+    /// The frame's set-up, both axes on two SSE2 lanes: makeAxis, endOf's sums and sweptCells
+    /// (cell_range.h: estimateCellsOfBoth), with the same operations on the same values as the
+    /// per-axis definitions, lane by lane, so the same numbers bit for bit
+    /// (FastFrameLanes.* in tests/exact_primitives_test.cpp). A lane's min(w, v) is w < v ? w : v,
+    /// which is std::min(v, w); its max(w, v) is w > v ? w : v, which is std::max(v, w).
+    [[gnu::always_inline]] void setUpOnLanes(const ResolveInput<T>& in) noexcept {
+        const __m128d pos = lanesOf(in.box.pos);
+        const __m128d size = lanesOf(in.box.size);
+        const __m128d disp = lanesOf(in.displacement);
+        const __m128d origin = lanesOf(in.map.origin);
+        const __m128d invTile = _mm_loadu_pd(range_.inverseTile);
+        const __m128d zero = _mm_setzero_pd();
+        const __m128d sign = _mm_set1_pd(-0.0);
+        const __m128d speed = _mm_andnot_pd(sign, disp);
+        const int positive = _mm_movemask_pd(_mm_cmpgt_pd(disp, zero));
+        const int negative = _mm_movemask_pd(_mm_cmplt_pd(disp, zero));
+        __m128d high;
+        if constexpr (std::is_same<Coord, ExactPair>::value) {
+            const PairLanes far = twoSumOnLanes(pos, size);
+            const PairLanes end = twoSumOnLanes(pos, disp);
+            high = far.hi;
+            storeLanes(&Motion::highLow, far.lo);
+            end_[0] = {_mm_cvtsd_f64(end.hi), _mm_cvtsd_f64(end.lo)};
+            end_[1] = {_mm_cvtsd_f64(_mm_unpackhi_pd(end.hi, end.hi)),
+                       _mm_cvtsd_f64(_mm_unpackhi_pd(end.lo, end.lo))};
+        } else {
+            high = _mm_add_pd(pos, size);  // exact (admitFloatFrame), as the end
+            storeLanes(&Motion::highLow, zero);
+            const __m128d end = _mm_add_pd(pos, disp);
+            _mm_storel_pd(&end_[0], end);
+            _mm_storeh_pd(&end_[1], end);
+        }
+        storeLanes(&Motion::low, pos);
+        storeLanes(&Motion::high, high);
+        storeLanes(&Motion::disp, disp);
+        storeLanes(&Motion::speed, speed);
+        storeLanes(&Motion::origin, origin);
+        storeLanes(&Motion::tile, lanesOf(in.map.tileSize));
+        storeLanes(&Motion::invTile, invTile);
+        storeLanes(&Motion::size, size);
+        axis_[0].dir = (positive & 1) - (negative & 1);
+        axis_[1].dir = (positive >> 1) - (negative >> 1);
+        axis_[0].cells = in.map.columns;
+        axis_[1].cells = in.map.rows;
+
+        const __m128d lowEnd = _mm_min_pd(_mm_add_pd(pos, disp), pos);
+        const __m128d highEnd = _mm_max_pd(_mm_add_pd(high, disp), high);
+        const __m128d magnitude =
+            inWindow_ ? _mm_loadu_pd(range_.windowMagnitude)
+                      : _mm_add_pd(_mm_add_pd(_mm_add_pd(_mm_andnot_pd(sign, pos), _mm_andnot_pd(sign, high)),
+                                              speed),
+                                   _mm_andnot_pd(sign, origin));
+        const __m128d margin =
+            _mm_mul_pd(_mm_mul_pd(_mm_set1_pd(kCellEstimateErrorUlps * kUnitRoundoff), magnitude), invTile);
+        estimateCellsOfBoth(_mm_mul_pd(_mm_sub_pd(lowEnd, origin), invTile),
+                            _mm_mul_pd(_mm_sub_pd(highEnd, origin), invTile), margin,
+                            _mm_set_pd(static_cast<double>(in.map.rows), static_cast<double>(in.map.columns)),
+                            swept_);
+    }
+#endif
+
     static Motion makeAxis(T pos, T size, T disp, T origin, T tile, std::int32_t cells,
                            double inverseTile) noexcept {
         const auto p = static_cast<double>(pos);
@@ -461,6 +552,8 @@ private:
     const TileMapView<T>& map_;
     const MapRange& range_;  ///< the map's range test; outlives the frame
     Motion axis_[2];
+    Coord end_[2];        ///< low + disp, exactly
+    CellRange swept_[2];  ///< sweptCells(0), sweptCells(1)
     T start_[2];
     bool inWindow_;
     bool refined_ = false;

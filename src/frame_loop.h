@@ -34,7 +34,7 @@
 //   grid    axis(a) (the Motion), edge(a, k), nextEdge(a, e) (the edge one tile from e along
 //           the motion on a, exactly), cells(a), cellOf(a, c) and nearEdgeCell(a) (the cell of a
 //           coordinate, of the box's low edge at the start: exact, clamped to [-1, cells]),
-//           startCells(a) and sweptCells(a) (supersets), map()
+//           startCells(a), sweptCells(a) and sweptCellsOfBoth(ranges) (supersets), map()
 //   times   zeroTime(), compareTimes(a, b), certainlyLater(a, b) (a > b for certain; false may
 //           be a tie)
 //   walk    primaryAxis(), prepareWalk(p), secondaryCells(walk, entry, exit)
@@ -452,7 +452,8 @@ private:
     /// rejected. With every tile tested, the earliest hits are the same set as the walk's, and
     /// none is cut short (solid cells <= capacity), so the stored contacts match too.
     bool collectNear(std::int32_t contactCapacity) noexcept {
-        CellRange range[2] = {m_.sweptCells(0), m_.sweptCells(1)};
+        CellRange range[2];
+        m_.sweptCellsOfBoth(range);
         for (int a = 0; a < 2; ++a) {
             if (range[a].first > range[a].last) {
                 nearCount_ = 0;  // the swept bounds miss the map: nothing to find

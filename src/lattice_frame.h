@@ -110,6 +110,11 @@ public:
         return m.dir < 0 ? clamped(a, end, m.high) : clamped(a, m.low, m.dir > 0 ? m.high + m.disp : m.high);
     }
 
+    void sweptCellsOfBoth(CellRange (&out)[2]) const noexcept {
+        out[0] = sweptCells(0);
+        out[1] = sweptCells(1);
+    }
+
     Num nearEdge(int a) const noexcept { return motion_[a].low; }
     Num farEdge(int a) const noexcept { return motion_[a].high; }
     Num endOf(int a) const noexcept { return motion_[a].low + motion_[a].disp; }

@@ -22,6 +22,7 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <sstream>
 #include <type_traits>
 #include <vector>
 
@@ -857,6 +858,175 @@ void checkWindowLinesClear(std::uint64_t seed) {
 
 TEST(WindowLinesClear, ClaimsNoMoreThanTheGeneralShortcutInFloat) { checkWindowLinesClear<float>(46); }
 TEST(WindowLinesClear, ClaimsNoMoreThanTheGeneralShortcutInDouble) { checkWindowLinesClear<double>(47); }
+
+/// The bits of a double, so that -0 and +0 (and every other pair of values) compare as bits.
+std::uint64_t bitsOf(double v) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    return bits;
+}
+
+/// The fast frame's set-up (FastFrame's constructor: on two SSE2 lanes where they are at hand,
+/// setUpOnLanes) gives each axis the numbers of its per-axis definitions, bit for bit: the
+/// motion (pos, fl(pos + size) and its error, disp, |disp|, its sign, the grid), the exact end
+/// low + disp (sumOf), and the swept cells (FastFrame::sweptCells, the scalar estimate). Each
+/// axis draws its own values, from families that reach every lane operation's corner: zeros of
+/// either sign (std::min and a lane's min differ only in the order of their operands, which
+/// shows on +0 against -0), negative and zero moves, boxes off the map on either side (empty and
+/// clamped ranges), ends whose sum with the size is inexact (a nonzero pair error in double), and
+/// frames in the map's window or not, with the window's magnitude or the frame's own. A lane
+/// read from the other axis, or a min for a max, fails here.
+template <class T>
+void checkSetUpOnLanes(std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    const std::vector<std::uint8_t> solid(200 * 200, 0);
+    int frames = 0;
+    int negativeMoves = 0;
+    int zeroMoves = 0;
+    int signedZeroEnds = 0;
+    int inexactFarEdges = 0;
+    int emptyRanges = 0;
+    int clampedRanges = 0;
+    int inWindowFrames = 0;
+    for (int draw = 0; draw < 100000; ++draw) {
+        const auto drawTile = [&] {
+            switch (rng() % 3) {
+                case 0:
+                    return T(1);
+                case 1:
+                    return static_cast<T>(std::ldexp(1.0, static_cast<int>(rng() % 9) - 4));
+                default:
+                    return static_cast<T>(shortDouble(rng, 12, -3, 5));
+            }
+        };
+        const T tiles[2] = {drawTile(), drawTile()};
+        const T origins[2] = {
+            rng() % 2 ? T(0) : static_cast<T>(tiles[0] * static_cast<T>(static_cast<int>(rng() % 41) - 20)),
+            rng() % 2 ? T(0) : static_cast<T>(tiles[1] * static_cast<T>(static_cast<int>(rng() % 41) - 20))};
+        const std::int32_t cells[2] = {static_cast<std::int32_t>(1 + rng() % 200),
+                                       static_cast<std::int32_t>(1 + rng() % 200)};
+        const TileMapView<T> map{
+            {origins[0], origins[1]}, {tiles[0], tiles[1]}, cells[0], cells[1], solid.data()};
+        // A coordinate on axis a: a zero of either sign, a point of the map or near it (either side),
+        // or a value of full precision.
+        const auto drawCoordinate = [&](int a) {
+            const double extent = static_cast<double>(tiles[a]) * cells[a];
+            switch (rng() % 6) {
+                case 0:
+                    return T(0);
+                case 1:
+                    return T(-0.0);
+                case 2:
+                    return static_cast<T>(
+                        static_cast<double>(origins[a]) +
+                        extent * (1.4 * std::ldexp(static_cast<double>(rng() % 4096), -12) - 0.2));
+                case 3:
+                    return static_cast<T>(
+                        static_cast<double>(origins[a]) +
+                        static_cast<double>(tiles[a]) *
+                            static_cast<double>(rng() % static_cast<std::uint64_t>(cells[a] + 1)));
+                default:
+                    return static_cast<T>(static_cast<double>(origins[a]) + randomDouble(rng, -8, 8) +
+                                          extent / 2);
+            }
+        };
+        const auto drawMove = [&](int a) {
+            switch (rng() % 5) {
+                case 0:
+                    return T(0);
+                case 1:
+                    return T(-0.0);
+                case 2:
+                    return static_cast<T>(tiles[a] * static_cast<T>(static_cast<int>(rng() % 9) - 4));
+                default:
+                    return static_cast<T>(randomDouble(rng, -6, 3) * static_cast<double>(tiles[a]));
+            }
+        };
+        const auto drawSize = [&](int a) {
+            return rng() % 2
+                       ? static_cast<T>(tiles[a] * static_cast<T>(1 + rng() % 3) / 2)
+                       : static_cast<T>(std::fabs(randomDouble(rng, -4, 1)) * static_cast<double>(tiles[a]));
+        };
+        const ResolveInput<T> in{map,
+                                 {{drawCoordinate(0), drawCoordinate(1)}, {drawSize(0), drawSize(1)}},
+                                 {drawMove(0), drawMove(1)}};
+        const MapRange range = mapRangeOf(map);
+        const bool inWindow = admitFrameInWindow(in, range);
+        if (!inWindow && !admitFrameFully(in, range)) continue;
+        ++frames;
+        inWindowFrames += inWindow ? 1 : 0;
+        const T pos[2] = {in.box.pos.x, in.box.pos.y};
+        const T size[2] = {in.box.size.x, in.box.size.y};
+        const T disp[2] = {in.displacement.x, in.displacement.y};
+        for (const bool window : {inWindow, false}) {
+            const FastFrame<T> frame(in, range, window);
+            CellRange swept[2];
+            frame.sweptCellsOfBoth(swept);
+            for (int a = 0; a < 2; ++a) {
+                const auto& m = frame.axis(a);
+                const auto p = static_cast<double>(pos[a]);
+                const auto w = static_cast<double>(size[a]);
+                const auto d = static_cast<double>(disp[a]);
+                const ExactPair far = twoSum(p, w);
+                const ExactPair end = twoSum(p, d);
+                const auto where = [&] {
+                    std::ostringstream s;
+                    s << std::hexfloat << "axis " << a << " pos " << p << " size " << w << " disp " << d
+                      << " origin " << static_cast<double>(origins[a]) << " tile "
+                      << static_cast<double>(tiles[a]) << " cells " << cells[a]
+                      << (window ? " (window)" : "");
+                    return s.str();
+                };
+                ASSERT_EQ(bitsOf(m.low), bitsOf(p)) << where();
+                ASSERT_EQ(bitsOf(m.high), bitsOf(far.hi)) << where();
+                ASSERT_EQ(bitsOf(m.highLow), bitsOf(std::is_same<T, float>::value ? 0.0 : far.lo)) << where();
+                ASSERT_EQ(bitsOf(m.disp), bitsOf(d)) << where();
+                ASSERT_EQ(bitsOf(m.speed), bitsOf(std::fabs(d))) << where();
+                ASSERT_EQ(m.dir, (d > 0) - (d < 0)) << where();
+                ASSERT_EQ(bitsOf(m.origin), bitsOf(static_cast<double>(origins[a]))) << where();
+                ASSERT_EQ(bitsOf(m.tile), bitsOf(static_cast<double>(tiles[a]))) << where();
+                ASSERT_EQ(m.cells, cells[a]) << where();
+                ASSERT_EQ(bitsOf(m.invTile), bitsOf(range.inverseTile[a])) << where();
+                ASSERT_EQ(bitsOf(m.size), bitsOf(w)) << where();
+                if constexpr (std::is_same<T, float>::value) {
+                    ASSERT_EQ(bitsOf(frame.endOf(a)), bitsOf(p + d)) << where();
+                } else {
+                    ASSERT_EQ(bitsOf(frame.endOf(a).hi), bitsOf(end.hi)) << where();
+                    ASSERT_EQ(bitsOf(frame.endOf(a).lo), bitsOf(end.lo)) << where();
+                }
+                const CellRange own = frame.sweptCells(a);
+                ASSERT_EQ(swept[a].first, own.first) << where();
+                ASSERT_EQ(swept[a].last, own.last) << where();
+                if (window != inWindow) continue;  // count each frame once
+                negativeMoves += d < 0 ? 1 : 0;
+                zeroMoves += d == 0 ? 1 : 0;
+                signedZeroEnds += p == 0 && d == 0 && std::signbit(p) != std::signbit(d) ? 1 : 0;
+                inexactFarEdges += far.lo != 0 ? 1 : 0;
+                emptyRanges += own.first > own.last ? 1 : 0;
+                clampedRanges += own.first == 0 && own.last == cells[a] - 1 ? 1 : 0;
+            }
+        }
+    }
+    EXPECT_GT(frames, 50000);
+    EXPECT_GT(inWindowFrames, 10000) << "too few frames in the map's window";
+    EXPECT_GT(negativeMoves, 20000) << "too few negative moves";
+    EXPECT_GT(zeroMoves, 10000) << "too few zero moves";
+    EXPECT_GT(signedZeroEnds, 1000) << "too few zero moves from a zero of the other sign";
+    EXPECT_GT(emptyRanges, 1000) << "too few swept bounds off the map";
+    EXPECT_GT(clampedRanges, 1000) << "too few swept bounds clamped at both ends";
+    if (std::is_same<T, double>::value) {
+        EXPECT_GT(inexactFarEdges, 20000) << "too few inexact far edges";
+    }
+    std::printf(
+        "set-up on lanes (%s): %d frames, %d in the window; axes: %d negative moves, %d zero "
+        "moves, %d zero moves from a zero of the other sign, %d inexact far edges, %d empty and "
+        "%d clamped swept ranges\n",
+        std::is_same<T, float>::value ? "float" : "double", frames, inWindowFrames, negativeMoves, zeroMoves,
+        signedZeroEnds, inexactFarEdges, emptyRanges, clampedRanges);
+}
+
+TEST(FastFrameLanes, TheSetUpIsThePerAxisOneInFloat) { checkSetUpOnLanes<float>(50); }
+TEST(FastFrameLanes, TheSetUpIsThePerAxisOneInDouble) { checkSetUpOnLanes<double>(51); }
 
 /// The fast path's shortcut for the amended rule (FastFrame::linesClearOf): where it says no grid
 /// line can fall between an end and the value above it, none does. Each draw aims at the line the
