@@ -37,6 +37,7 @@
 #include "fast_axis.h"
 #include "fault_injection.h"
 #include "final_rounding.h"
+#include "frame_input.h"
 #include "pair_arithmetic.h"
 #include "proof_constants.h"
 #include "range_admission.h"
@@ -74,7 +75,7 @@ public:
     /// and the grid lines' lowest bit, computed once per map when it was prepared). `inWindow`:
     /// the range test's short form admitted the frame, so the map's windowMagnitude bounds its
     /// cell estimates' magnitudes (magnitude()).
-    FastFrame(const ResolveInput<T>& in, const MapRange& range, bool inWindow = false) noexcept
+    FastFrame(FrameInput<T> in, const MapRange& range, bool inWindow = false) noexcept
         : map_(in.map), range_(range), inWindow_(inWindow) {
 #if defined(TILESWEEP_CELL_RANGE_SSE2)
         setUpOnLanes(in);
@@ -477,7 +478,7 @@ private:
     /// per-axis definitions, lane by lane, so the same numbers bit for bit
     /// (FastFrameLanes.* in tests/exact_primitives_test.cpp). A lane's min(w, v) is w < v ? w : v,
     /// which is std::min(v, w); its max(w, v) is w > v ? w : v, which is std::max(v, w).
-    [[gnu::always_inline]] void setUpOnLanes(const ResolveInput<T>& in) noexcept {
+    [[gnu::always_inline]] void setUpOnLanes(FrameInput<T> in) noexcept {
         const __m128d pos = lanesOf(in.box.pos);
         const __m128d size = lanesOf(in.box.size);
         const __m128d disp = lanesOf(in.displacement);

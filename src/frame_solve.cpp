@@ -18,7 +18,7 @@ namespace {
 /// meets a case it hands to the lattice. `refined` is set when some predicate needed its exact
 /// refinement (DecisionPath::Filtered).
 template <class T>
-[[gnu::always_inline]] inline bool solveFast(const ResolveInput<T>& input, const ResolveOutput<T>& output,
+[[gnu::always_inline]] inline bool solveFast(FrameInput<T> input, const ResolveOutput<T>& output,
                                              ContactPositions positions, const MapRange& range, bool inWindow,
                                              ResolveResult<T>& result, bool& refined) noexcept {
     FastFrame<T> frame(input, range, inWindow);
@@ -65,7 +65,7 @@ template <class T>
                                                                 const ResolveOutput<T>& output,
                                                                 ContactPositions positions,
                                                                 const MapRange& range) noexcept {
-    const ResolveInput<T> input{map, move.box, move.displacement};
+    const FrameInput<T> input{map, move.box, move.displacement};  // no copy (frame_input.h)
     ResolveResult<T> result;  // returned by name on every path (NRVO: the caller's slot)
     // The fast path, when the range test admits the frame: float frames on exact doubles,
     // double frames on exact pairs under a certified filter. The range test implies the frame
@@ -77,7 +77,7 @@ template <class T>
             recordPath(output, refined ? DecisionPath::Filtered : DecisionPath::Fast);
             return result;
         }
-    } else if (!isValid(input)) {
+    } else if (!isValid(ResolveInput<T>{map, move.box, move.displacement})) {
         result = ResolveResult<T>{};
         result.status = ResolveStatus::InvalidInput;
         result.position = input.box.pos;
@@ -86,7 +86,8 @@ template <class T>
         return result;
     }
     recordPath(output, DecisionPath::Exact);
-    result = solveOnLattice(input, output, positions);  // over whatever the fast path wrote
+    result = solveOnLattice(ResolveInput<T>{map, move.box, move.displacement}, output,
+                            positions);  // over whatever the fast path wrote
     return result;
 }
 
@@ -137,7 +138,7 @@ resolveStillFrame(const TileMapView<T>& map, const MoveInput<T>& move, const Res
                   ContactPositions positions, const MapRange* prepared) noexcept {
     // A zero move: the start overlaps alone, from the cells under the box (zero_move.h).
     ResolveResult<T> result;
-    if (resolveZeroMove(ResolveInput<T>{map, move.box, move.displacement}, output, result,
+    if (resolveZeroMove(FrameInput<T>{map, move.box, move.displacement}, output, result,
                         prepared != nullptr)) {  // prepared: a valid map
         recordPath(output, DecisionPath::Fast);
         return result;

@@ -19,6 +19,7 @@
 
 #include "bit_ops.h"
 #include "fault_injection.h"
+#include "frame_input.h"
 #include "input_window.h"
 #include "proof_constants.h"
 #include "validity.h"
@@ -190,7 +191,7 @@ inline void setWindowLinesClear(MapRange& r, int windowExponent, int p) noexcept
 /// and no coordinate near the top of float's range. The six box inputs are read as integers in a
 /// tree of scalar minimums and maximums (a loop over an array invites a vectorization that needs
 /// SSE4.1 for unsigned minimums and costs twice the instructions without it).
-[[nodiscard, gnu::always_inline]] inline bool admitFloatFrameFully(const ResolveInput<float>& in,
+[[nodiscard, gnu::always_inline]] inline bool admitFloatFrameFully(FrameInput<float> in,
                                                                    const MapRange& map) noexcept {
     const std::uint32_t x = magnitudeBits(in.box.pos.x);
     const std::uint32_t y = magnitudeBits(in.box.pos.y);
@@ -224,21 +225,21 @@ inline void setWindowLinesClear(MapRange& r, int windowExponent, int p) noexcept
 /// lowest at least min(fL, map's lowests): the values floatMapRange checked once for the map
 /// (MapRange::common), and the full test is monotonic in both. A few vector comparisons: no
 /// exponent arithmetic. A frame outside the window takes the full test, which decides.
-[[nodiscard, gnu::always_inline]] inline bool admitFloatFrameInWindow(const ResolveInput<float>& in,
+[[nodiscard, gnu::always_inline]] inline bool admitFloatFrameInWindow(FrameInput<float> in,
                                                                       const MapRange& map) noexcept {
     return map.common & boxInputsInWindow(in.box, in.displacement, map.commonLeast, map.commonLimit);
 }
 
 /// Whether the fast path holds every value of this float frame exactly: the short form, then,
 /// for a frame outside the map's window, the full test.
-[[nodiscard, gnu::always_inline]] inline bool admitFloatFrame(const ResolveInput<float>& in,
+[[nodiscard, gnu::always_inline]] inline bool admitFloatFrame(FrameInput<float> in,
                                                               const MapRange& map) noexcept {
     if (admitFloatFrameInWindow(in, map)) return true;  // one branch, which a game predicts
     return admitFloatFrameFully(in, map);
 }
 
 /// admitFloatFrame for a map not prepared: its range, then the frame's.
-[[nodiscard]] inline bool admitFloatFrame(const ResolveInput<float>& in) noexcept {
+[[nodiscard]] inline bool admitFloatFrame(FrameInput<float> in) noexcept {
     return admitFloatFrame(in, floatMapRange(in.map));
 }
 
@@ -348,7 +349,7 @@ inline constexpr double kCommonLeast = 0x1p-20;
 /// than one cell; and a span of at most 104 bits between the largest coordinate and the lowest
 /// set bit of the box and grid inputs, so that the far box edge's distances to tile edges come
 /// out as exact pairs (farEdgeMinus). Branch-free over the six box inputs.
-[[nodiscard, gnu::always_inline]] inline bool admitDoubleFrameFully(const ResolveInput<double>& in,
+[[nodiscard, gnu::always_inline]] inline bool admitDoubleFrameFully(FrameInput<double> in,
                                                                     const MapRange& map) noexcept {
     const std::uint64_t x = magnitudeBits(in.box.pos.x);
     const std::uint64_t y = magnitudeBits(in.box.pos.y);
@@ -385,39 +386,39 @@ inline constexpr double kCommonLeast = 0x1p-20;
 
 /// The short form of admitDoubleFrameFully (above): the box's inputs in the window [2^-20, 2^30)
 /// (input_window.h) on a map whose half of the test holds for every such frame (MapRange::common).
-[[nodiscard, gnu::always_inline]] inline bool admitDoubleFrameInWindow(const ResolveInput<double>& in,
+[[nodiscard, gnu::always_inline]] inline bool admitDoubleFrameInWindow(FrameInput<double> in,
                                                                        const MapRange& map) noexcept {
     return map.common & boxInputsInWindow(in.box, in.displacement, kCommonLeast, kCommonLargest);
 }
 
 /// Whether the double fast path holds every value of this frame: the short form, then, for a
 /// frame outside the window, the full test.
-[[nodiscard, gnu::always_inline]] inline bool admitDoubleFrame(const ResolveInput<double>& in,
+[[nodiscard, gnu::always_inline]] inline bool admitDoubleFrame(FrameInput<double> in,
                                                                const MapRange& map) noexcept {
     if (admitDoubleFrameInWindow(in, map)) return true;  // one branch, which a game predicts
     return admitDoubleFrameFully(in, map);
 }
 
 /// admitDoubleFrame for a map not prepared: its range, then the frame's.
-[[nodiscard]] inline bool admitDoubleFrame(const ResolveInput<double>& in) noexcept {
+[[nodiscard]] inline bool admitDoubleFrame(FrameInput<double> in) noexcept {
     return admitDoubleFrame(in, doubleMapRange(in.map));
 }
 
 /// The short form and the full test in either type (frame_solve.cpp tells which admitted a
 /// frame, so that a frame in the window takes its map's windowMagnitude).
-[[nodiscard, gnu::always_inline]] inline bool admitFrameInWindow(const ResolveInput<float>& in,
+[[nodiscard, gnu::always_inline]] inline bool admitFrameInWindow(FrameInput<float> in,
                                                                  const MapRange& map) noexcept {
     return admitFloatFrameInWindow(in, map);
 }
-[[nodiscard, gnu::always_inline]] inline bool admitFrameInWindow(const ResolveInput<double>& in,
+[[nodiscard, gnu::always_inline]] inline bool admitFrameInWindow(FrameInput<double> in,
                                                                  const MapRange& map) noexcept {
     return admitDoubleFrameInWindow(in, map);
 }
-[[nodiscard, gnu::always_inline]] inline bool admitFrameFully(const ResolveInput<float>& in,
+[[nodiscard, gnu::always_inline]] inline bool admitFrameFully(FrameInput<float> in,
                                                               const MapRange& map) noexcept {
     return admitFloatFrameFully(in, map);
 }
-[[nodiscard, gnu::always_inline]] inline bool admitFrameFully(const ResolveInput<double>& in,
+[[nodiscard, gnu::always_inline]] inline bool admitFrameFully(FrameInput<double> in,
                                                               const MapRange& map) noexcept {
     return admitDoubleFrameFully(in, map);
 }

@@ -42,6 +42,7 @@
 
 #include "cell_range.h"
 #include "exact_double.h"
+#include "frame_input.h"
 #include "proof_constants.h"
 
 #include "tilesweep/resolve.h"
@@ -138,7 +139,7 @@ struct ZeroMoveRanges {
 /// sizes are > 0 or NaN). Out of line, and returned by value, so that the early exit stays
 /// small and keeps its own ranges in registers.
 template <class T>
-[[nodiscard, gnu::noinline]] ZeroMoveRanges settleZeroMoveRanges(const ResolveInput<T>& in) noexcept {
+[[nodiscard, gnu::noinline]] ZeroMoveRanges settleZeroMoveRanges(FrameInput<T> in) noexcept {
     const TileMapView<T>& map = in.map;
     ZeroMoveRanges r;
     r.decided =
@@ -162,7 +163,7 @@ template <class T>
 /// its header and tile sizes are then known good (cells present whenever there are any) and
 /// are not tested again.
 template <class T>
-[[nodiscard]] inline bool resolveZeroMove(const ResolveInput<T>& in, const ResolveOutput<T>& out,
+[[nodiscard]] inline bool resolveZeroMove(FrameInput<T> in, const ResolveOutput<T>& out,
                                           ResolveResult<T>& result, bool mapValidated = false) noexcept {
     const TileMapView<T>& map = in.map;
     const std::int64_t columns = map.columns;

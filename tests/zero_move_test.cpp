@@ -94,7 +94,7 @@ Checked<T> checkZeroMove(const TileMap<T>& map, Box<T> box) {
     const bool estimated = estimated1(box.pos.x, box.size.x, map.origin.x, map.tileSize.x) &&
                            estimated1(box.pos.y, box.size.y, map.origin.y, map.tileSize.y);
     ResolveResult<T> early;
-    if (detail::resolveZeroMove(in, out, early)) {
+    if (detail::resolveZeroMove(detail::FrameInput<T>(in), out, early)) {
         c.exit = estimated ? Exit::Estimated : Exit::Settled;
         c.failure = matches(early, "resolveZeroMove");
     }
@@ -142,7 +142,7 @@ TYPED_TEST(ZeroMove, boxOnGridLinesOverlapsOnlyTheCellsItsInteriorMeets) {
     const ResolveInput<T> in{full.view(), {{16, 16}, {16, 16}}, {0, 0}};
     Cell overlaps[8];
     ResolveResult<T> early;
-    ASSERT_TRUE(detail::resolveZeroMove(in, {nullptr, 0, overlaps, 8}, early))
+    ASSERT_TRUE(detail::resolveZeroMove(detail::FrameInput<T>(in), {nullptr, 0, overlaps, 8}, early))
         << "a box on lines stays on the exit";
     ASSERT_EQ(early.startOverlapCount, 1);
     EXPECT_EQ(overlaps[0].i, 1);
@@ -389,7 +389,7 @@ TYPED_TEST(ZeroMove, invalidInputLeavesTheEarlyExitAndIsReported) {
     for (std::size_t k = 0; k < bad.size(); ++k) {
         const ResolveOutput<T> out{nullptr, 0, overlaps, 8};
         ResolveResult<T> early;
-        EXPECT_FALSE(detail::resolveZeroMove(bad[k], out, early)) << "case " << k;
+        EXPECT_FALSE(detail::resolveZeroMove(detail::FrameInput<T>(bad[k]), out, early)) << "case " << k;
         const ResolveResult<T> r = resolveMove(bad[k], out);
         EXPECT_EQ(r.status, ResolveStatus::InvalidInput) << "case " << k;
         const bool finite = std::isfinite(bad[k].box.pos.x) && std::isfinite(bad[k].box.pos.y);
