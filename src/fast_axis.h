@@ -132,8 +132,9 @@ struct FastAxis {
             static_cast<void>(hi);
             return entry >= speed;  // deliberate fault: a tie with the speed read from the high part
 #else
-            if (entry != speed) return entry > speed;
-            return compare(entryDistance(lo, hi), speed) >= 0;  // rare: the low part decides
+            if (entry < speed) return false;  // the common answer, from one comparison
+            return entry > speed ||
+                   compare(entryDistance(lo, hi), speed) >= 0;  // on a tie the low part decides
 #endif
         } else {
             static_cast<void>(lo);
