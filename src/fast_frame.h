@@ -402,8 +402,9 @@ private:
             if (xx > 0 && xy > 0) verdict = TileVerdict::StartsOverlapping;
             return true;
         }
-        if (ex > mx.speed || ey > my.speed) return true;     // E > 1
-        if (ex == mx.speed || ey == my.speed) return false;  // the low part decides
+        if (!(ex < mx.speed && ey < my.speed)) {    // rarely: an entry at or after the end
+            return ex > mx.speed || ey > my.speed;  // E > 1; on a tie, false: the low part decides
+        }
         // E < X on each axis (corner misses), then which axis enters later.
         const int xAfterYExits = pairProductFilter(ex * my.speed, xy * mx.speed);
         if (xAfterYExits >= 0) return xAfterYExits > 0;
