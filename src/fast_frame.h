@@ -189,6 +189,17 @@ public:
         return g.dir > 0 ? coordOf<Coord>(e) : sumOf<Coord>(e, g.size);
     }
 
+    /// An estimate of the first cell along `a` that the box enters at or after time t (the cell
+    /// its leading edge is in at t), for walkOneAxis to start from (skipCellsEnteredBefore, which
+    /// checks it exactly). At t = 0 there is nothing to skip: a cell before every walk's start.
+    std::int64_t firstCellNotBefore(int a, const Time& t) const noexcept {
+        const Motion& g = axis_[a];
+        const double s = approximate(t.num) / t.den;
+        if (!(s > 0)) return g.dir > 0 ? -2 : g.cells + 2;
+        const double lead = (g.dir > 0 ? g.high : g.low) + s * g.disp;
+        return clampCell((lead - g.origin) * g.invTile, g.cells);
+    }
+
     static Time zeroTime() noexcept { return {coordOf<Coord>(0), 1}; }
     [[gnu::always_inline]] int compareTimes(const Time& a, const Time& b) noexcept {
         // The same fraction (tiles entered across one face line), or two zero times (a box

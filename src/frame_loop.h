@@ -36,7 +36,8 @@
 //           coordinate, of the box's low edge at the start: exact, clamped to [-1, cells]),
 //           startCells(a), sweptCells(a) and sweptCellsOfBoth(ranges) (supersets), map()
 //   times   zeroTime(), compareTimes(a, b), certainlyLater(a, b) (a > b for certain; false may
-//           be a tie)
+//           be a tie), firstCellNotBefore(a, t) (an estimate of the first cell along a entered
+//           at or after t, checked exactly by its user)
 //   walk    primaryAxis(), prepareWalk(p), secondaryCells(walk, entry, exit)
 //   box     start(a), nearEdge(a), farEdge(a), endOf(a), touchLow(a, e), touchHigh(a, e)
 //   tile    testTile(i, j) (axis_sweep.h's test on its numbers)
@@ -415,10 +416,10 @@ private:
         // Entry times grow strictly along the walk, so once a cell is entered at or after `from`
         // every later one is: the comparison runs only until then.
         bool pastFrom = false;
-        std::int64_t k = firstCellAhead(a);
+        const std::int64_t k = skipCellsEnteredBefore<a>(firstCellAhead(a), from);
         Edge lo = m_.edge(a, k);
         Edge hi = m_.edge(a, k + 1);
-        for (; k >= 0 && k < m_.cells(a); k += ma.dir, stepEdges(a, lo, hi)) {
+        for (std::int64_t c = k; c >= 0 && c < m_.cells(a); c += ma.dir, stepEdges(a, lo, hi)) {
             if (ma.enteredByEnd(ma.walkEntry(lo, hi), lo, hi)) return;  // entered at t >= 1
             // The exact entry time, for the comparison with `from` and the hits (the compiler
             // builds it only on the paths that read it).
@@ -428,15 +429,33 @@ private:
                 pastFrom = true;
             }
             for (std::int64_t j = j0; j <= j1; ++j) {
-                const std::int64_t ci = a == 0 ? k : j;
-                const std::int64_t cj = a == 0 ? j : k;
+                const std::int64_t ci = a == 0 ? c : j;
+                const std::int64_t cj = a == 0 ? j : c;
                 if (!solidInMap(ci, cj)) continue;
                 if (!heldOverlaps(o, heldLow, heldHigh, j)) continue;
                 add(hits, {static_cast<std::int32_t>(ci), static_cast<std::int32_t>(cj)}, a, at,
-                    touchEdge(a, k));
+                    touchEdge(a, c));
             }
             if (hits.any) return;
         }
+    }
+
+    /// The first cell of walkOneAxis from cell k0: k0, or a cell further along `a` when every cell
+    /// before it is entered before `from` (such cells are skipped by the walk anyway, each after
+    /// an exact comparison of times). The arithmetic's hint (firstCellNotBefore: an estimate, which
+    /// may be wrong either way) proposes the cell; one exact comparison of the entry time of the
+    /// cell before it with `from` accepts it (entry times grow strictly along the walk), and
+    /// otherwise the walk starts at k0. A slide after a landing at 8 tiles a frame skips the
+    /// cells the box crossed before it landed.
+    template <int a>
+    [[gnu::always_inline]] std::int64_t skipCellsEnteredBefore(std::int64_t k0, const Time& from) noexcept {
+        const auto& ma = m_.axis(a);
+        const std::int64_t hint = m_.firstCellNotBefore(a, from);
+        const std::int64_t before = hint - ma.dir;                  // the last cell the hint skips
+        const bool ahead = ma.dir > 0 ? before > k0 : before < k0;  // two cells or more: worth a comparison
+        if (!ahead || before < 0 || before >= m_.cells(a)) return k0;
+        const Time entry{ma.entryDistance(m_.edge(a, before), m_.edge(a, before + 1)), ma.speed};
+        return m_.compareTimes(entry, from) < 0 ? hint : k0;
     }
 
     /// The most cells of swept bounds that collectNear scans, and the most solid ones it keeps.

@@ -128,6 +128,11 @@ public:
         return m.dir > 0 ? e : e + (m.high - m.low);
     }
 
+    /// No estimate (frame_loop.h, skipCellsEnteredBefore): a cell before every walk's start, so
+    /// that the lattice's walks visit every cell from the first ahead.
+    std::int64_t firstCellNotBefore(int a, const Time& /*t*/) const noexcept {
+        return motion_[a].dir > 0 ? -2 : grid_[a].cells + 2;
+    }
     static Time zeroTime() noexcept { return {Num::fromInt(0), Num::fromInt(1)}; }
     int compareTimes(const Time& a, const Time& b) const noexcept { return compareFractions(a, b); }
     bool certainlyLater(const Time& a, const Time& b) const noexcept { return compareFractions(a, b) > 0; }
