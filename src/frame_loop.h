@@ -15,7 +15,8 @@
 // is that entry time. Solving step 2 in frame time avoids the rational position at s altogether.
 //
 // Broadphase. Candidate tiles come from the grid, never from a scan of the map. A short move
-// lists the solid cells of its swept bounds once (at most kNearArea cells), and those serve the
+// lists the solid cells of its swept bounds once (at most kNearArea cells, or kSparseArea with few
+// solid ones), and those serve the
 // start overlaps and both steps. Otherwise the walk goes along the primary axis (the one whose
 // motion crosses more cells), cell by cell in the order the box enters them; for each primary
 // cell it takes the secondary cells the box's span covers while it is inside that primary cell,
@@ -458,18 +459,24 @@ private:
         return m_.compareTimes(entry, from) < 0 ? hint : k0;
     }
 
-    /// The most cells of swept bounds that collectNear scans, and the most solid ones it keeps.
+    /// Swept bounds of up to kNearArea cells are always listed (collectNear); larger ones, up to
+    /// kSparseArea cells, when they hold at most kSparseSolids solid cells: on a sparse map (floors
+    /// and walls) testing those few tiles costs less than walking the path cell by cell, and on a
+    /// dense one the scan gives up after the row that passes the limit.
     static constexpr std::int64_t kNearArea = 12;
+    static constexpr std::int64_t kSparseArea = 48;
+    static constexpr std::int64_t kSparseSolids = 4;
 
     /// Lists the solid cells of the frame's swept bounds, row by row, when those bounds hold at
-    /// most kNearArea cells and at most `contactCapacity` of them are solid; false otherwise
-    /// (the walk then runs). Every tile that can block either step, or that the box overlaps at
-    /// the start, lies in them: on each axis the box covers [min(low, low + disp), max(high,
-    /// high + disp)] over the frame, and step 2 stays inside that (its held axis is at a touch
-    /// position between the start and the end, its free axis on the rest of its own motion).
-    /// The arithmetic's sweptCells is a superset of that; extra cells are tested exactly and
-    /// rejected. With every tile tested, the earliest hits are the same set as the walk's, and
-    /// none is cut short (solid cells <= capacity), so the stored contacts match too.
+    /// most kNearArea cells, or at most kSparseArea of which at most kSparseSolids are solid, and
+    /// at most `contactCapacity` of them are solid; false otherwise (the walk then runs). Every
+    /// tile that can block either step, or that the box overlaps at the start, lies in them: on
+    /// each axis the box covers [min(low, low + disp), max(high, high + disp)] over the frame,
+    /// and step 2 stays inside that (its held axis is at a touch position between the start and
+    /// the end, its free axis on the rest of its own motion). The arithmetic's sweptCells is a
+    /// superset of that; extra cells are tested exactly and rejected. With every tile tested, the
+    /// earliest hits are the same set as the walk's, and none is cut short (solid cells <=
+    /// capacity), so the stored contacts match too.
     bool collectNear(std::int32_t contactCapacity) noexcept {
         CellRange range[2];
         m_.sweptCellsOfBoth(range);
@@ -479,13 +486,29 @@ private:
                 return true;
             }
         }
-        if ((range[0].last - range[0].first + 1) * (range[1].last - range[1].first + 1) > kNearArea)
-            return false;
+        const std::int64_t area = (range[0].last - range[0].first + 1) * (range[1].last - range[1].first + 1);
+        if (area > kSparseArea) return false;
         range[1] = secondaryCandidates(range[1]);
+        std::int64_t count = 0;
+        if (area <= kNearArea) {
+            count = listSolidCells<false>(range);
+        } else {
+            count = listSolidCells<true>(range);
+            if (count > kSparseSolids) return false;  // dense: the walk costs less
+        }
+        nearCount_ = static_cast<std::int32_t>(count);
+        return count <= contactCapacity;
+    }
+
+    /// Lists the cells of `range` into near_, and returns how many are solid (the solid ones come
+    /// first, in row-then-column order). Every cell is written at the next slot and kept when
+    /// solid, without a branch on the byte (a map's bytes are its data: a branch on them
+    /// mispredicts at random); the slots suffice, as the count is below the cells visited, at
+    /// most kSparseArea. `sparse`: stop after the first row that takes the count past
+    /// kSparseSolids (the caller then walks).
+    template <bool sparse>
+    [[gnu::always_inline]] std::int64_t listSolidCells(const CellRange (&range)[2]) noexcept {
         const TileMapView<T>& map = m_.map();
-        // Every cell is written at the next slot and kept when solid, without a branch on the byte
-        // (a map's bytes are its data: a branch on them mispredicts at random). The slots suffice:
-        // the count is below the cells visited, at most kNearArea.
         std::int64_t count = 0;
         for (std::int64_t j = range[1].first; j <= range[1].last; ++j) {
             const std::uint8_t* row = map.solid + j * map.columns;
@@ -495,9 +518,9 @@ private:
                 near_[count] = cell;
                 count += row[i] != 0 ? 1 : 0;
             }
+            if (sparse && count > kSparseSolids) break;
         }
-        nearCount_ = static_cast<std::int32_t>(count);
-        return count <= contactCapacity;
+        return count;
     }
 
     /// Step 1 of a short move on both axes, and its start overlaps from the same tests: every
@@ -532,7 +555,7 @@ private:
 
     Arith& m_;
     std::int32_t nearCount_ = 0;
-    Cell near_[kNearArea];
+    Cell near_[kSparseArea];
 };
 
 }  // namespace tilesweep::detail
