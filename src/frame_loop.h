@@ -15,13 +15,12 @@
 // is that entry time. Solving step 2 in frame time avoids the rational position at s altogether.
 //
 // Broadphase. Candidate tiles come from the grid, never from a scan of the map. A short move
-// lists the solid cells of its swept bounds once (at most kNearArea cells, or kSparseArea with few
-// solid ones), and those serve the
-// start overlaps and both steps. Otherwise the walk goes along the primary axis (the one whose
-// motion crosses more cells), cell by cell in the order the box enters them; for each primary
-// cell it takes the secondary cells the box's span covers while it is inside that primary cell,
-// and it stops at the first primary cell entered after the earliest time of impact found so
-// far, or at time 1. Cells entered at exactly that time are still visited: they may be hit at
+// lists the solid cells of its swept bounds once (at most kNearArea cells, or up to kSparseArea
+// with few solid ones), and those serve the start overlaps and both steps. Otherwise the walk
+// goes along the primary axis (the one whose motion crosses more cells), cell by cell in the
+// order the box enters them; for each primary cell it takes the secondary cells the box's span
+// covers while it is inside that primary cell, and it stops at the first primary cell entered
+// after the earliest time of impact found so far, or at time 1. Cells entered at exactly that time are still visited: they may be hit at
 // the same time, and the contract takes all of them at once. The cost is the number of cells the
 // path touches, independent of the map's size. Cell ranges may be supersets (the fast path
 // estimates them with a certified margin): every cell in them gets the exact tile test.
@@ -475,12 +474,13 @@ private:
     /// Lists the solid cells of the frame's swept bounds, row by row, when those bounds hold at
     /// most kNearArea cells, or are sparse (at most kSparseArea cells, kSparseAcross across, and
     /// kSparseSolids solid), and at most `contactCapacity` of them are solid; false otherwise
-    /// (the walk then runs). Every tile that can block either step, or that the box overlaps at the start,
-    /// lies in them: on each axis the box covers [min(low, low + disp), max(high, high + disp)] over the
-    /// frame, and step 2 stays inside that (its held axis is at a touch position between the start and the
-    /// end, its free axis on the rest of its own motion). The arithmetic's sweptCells is a superset of that;
-    /// extra cells are tested exactly and rejected. With every tile tested, the earliest hits are the same
-    /// set as the walk's, and none is cut short (solid cells <= capacity), so the stored contacts match too.
+    /// (the walk then runs). Every tile that can block either step, or that the box overlaps at
+    /// the start, lies in them: on each axis the box covers [min(low, low + disp), max(high,
+    /// high + disp)] over the frame, and step 2 stays inside that (its held axis is at a touch
+    /// position between the start and the end, its free axis on the rest of its own motion).
+    /// The arithmetic's sweptCells is a superset of that; extra cells are tested exactly and
+    /// rejected. With every tile tested, the earliest hits are the same set as the walk's, and
+    /// none is cut short (solid cells <= capacity), so the stored contacts match too.
     bool collectNear(std::int32_t contactCapacity) noexcept {
         CellRange range[2];
         m_.sweptCellsOfBoth(range);
