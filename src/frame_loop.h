@@ -20,10 +20,11 @@
 // goes along the primary axis (the one whose motion crosses more cells), cell by cell in the
 // order the box enters them; for each primary cell it takes the secondary cells the box's span
 // covers while it is inside that primary cell, and it stops at the first primary cell entered
-// after the earliest time of impact found so far, or at time 1. Cells entered at exactly that time are still visited: they may be hit at
-// the same time, and the contract takes all of them at once. The cost is the number of cells the
-// path touches, independent of the map's size. Cell ranges may be supersets (the fast path
-// estimates them with a certified margin): every cell in them gets the exact tile test.
+// after the earliest time of impact found so far, or at time 1. Cells entered at exactly that
+// time are still visited: they may be hit at the same time, and the contract takes all of them
+// at once. The cost is the number of cells the path touches, independent of the map's size.
+// Cell ranges may be supersets (the fast path estimates them with a certified margin): every
+// cell in them gets the exact tile test.
 //
 // What an arithmetic `Arith` provides (LatticeFrame, FastFrame):
 //   types   Scalar (float or double), Coord (a box coordinate or a distance), Edge (a tile
