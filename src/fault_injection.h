@@ -48,6 +48,9 @@
 //   FINAL_STEP_SIGN_IGNORED  the final rounding of both ends at once (float and double frames)
 //                      steps a negative value's bits as a positive one's, so it rounds away from
 //                      the start there (final_rounding.h)
+//   FREE_MOVE_PAST_ONE_TILE  the free-move shortcut (moveFreely) taken when the swept bounds'
+//                      listing holds one solid cell, not none, so that tile is never tested
+//                      (frame_loop.h)
 // Issue 20's four classes, one fault standing for each:
 //   PAIR_REFINEMENT_SWAPPED  double near-ties: the exact refinement of the pair comparison called
 //                      with its two sides swapped, so a nonzero sign inside the filter's band
@@ -71,6 +74,7 @@
     defined(TILESWEEP_FAULT_LINES_CLEAR_SIZE_IGNORED) || defined(TILESWEEP_FAULT_FLOAT_WINDOW_TOO_LOW) || \
     defined(TILESWEEP_FAULT_WINDOW_MAGNITUDE_SHORT) ||                                                    \
     defined(TILESWEEP_FAULT_WINDOW_LINES_CLEAR_BINADE_SHORT) ||                                           \
-    defined(TILESWEEP_FAULT_WALK_ENTRY_TIE_BY_HIGH_PART) || defined(TILESWEEP_FAULT_FINAL_STEP_SIGN_IGNORED)
+    defined(TILESWEEP_FAULT_WALK_ENTRY_TIE_BY_HIGH_PART) || defined(TILESWEEP_FAULT_FINAL_STEP_SIGN_IGNORED) || \
+    defined(TILESWEEP_FAULT_FREE_MOVE_PAST_ONE_TILE)
 #define TILESWEEP_FAULT_INJECTED 1
 #endif
