@@ -51,6 +51,8 @@
 //   FREE_MOVE_PAST_ONE_TILE  the free-move shortcut (moveFreely) taken when the swept bounds'
 //                      listing holds one solid cell, not none, so that tile is never tested
 //                      (frame_loop.h)
+//   SOLID_BLOCK_LAST_COLUMN_MASKED  the near listing's block of solid cells (readSolidBlock)
+//                      masks off its last column, so a solid cell there is never listed (solid_block.h)
 // Issue 20's four classes, one fault standing for each:
 //   PAIR_REFINEMENT_SWAPPED  double near-ties: the exact refinement of the pair comparison called
 //                      with its two sides swapped, so a nonzero sign inside the filter's band
@@ -75,6 +77,6 @@
     defined(TILESWEEP_FAULT_WINDOW_MAGNITUDE_SHORT) ||                                                    \
     defined(TILESWEEP_FAULT_WINDOW_LINES_CLEAR_BINADE_SHORT) ||                                           \
     defined(TILESWEEP_FAULT_WALK_ENTRY_TIE_BY_HIGH_PART) || defined(TILESWEEP_FAULT_FINAL_STEP_SIGN_IGNORED) || \
-    defined(TILESWEEP_FAULT_FREE_MOVE_PAST_ONE_TILE)
+    defined(TILESWEEP_FAULT_FREE_MOVE_PAST_ONE_TILE) || defined(TILESWEEP_FAULT_SOLID_BLOCK_LAST_COLUMN_MASKED)
 #define TILESWEEP_FAULT_INJECTED 1
 #endif

@@ -52,6 +52,7 @@
 #include "cell_range.h"
 #include "fault_injection.h"
 #include "final_rounding.h"
+#include "solid_block.h"
 
 #include "tilesweep/resolve.h"
 
@@ -171,15 +172,16 @@ private:
         ++hits.count;
     }
 
-    /// A frame whose swept bounds hold no solid cell (collectNear listed them, and none is
-    /// solid): no tile overlaps the box at the start and none can block it, so it moves to its
-    /// end with no contact, as the steps below would find after testing nothing. Decided here,
-    /// before their set-up: in the benchmarks' frames at 0.5 to 2 tiles a frame, most frames are
-    /// such, and each costs 35 to 45 instructions fewer (scripts/instructions.sh,
-    /// FloorAndWalls<double>/1: 564 a frame through the steps, 527 here). A frame that does not
-    /// move at all ends at its start either way: its ends are the start, which the final
-    /// rounding returns as it is (final_rounding.h).
-    bool moveFreely(ResolveResult<T>& result) noexcept {
+    /// A frame whose swept bounds hold no solid cell (collectNear found none): no tile overlaps
+    /// the box at the start and none can block it, so it moves to its end with no contact, as
+    /// the steps below would find after testing nothing. Decided here, before their set-up: in
+    /// the benchmarks' frames at 0.5 to 2 tiles a frame most frames are such
+    /// (scripts/instructions.sh, FloorAndWalls<double>/1: 564 instructions a frame through the
+    /// steps, 529 here with the block read of solid_block.h; FreeFlight<double>/4 509 and 437).
+    /// Always inlined: out of line it is a call on every free frame. A frame that does not move
+    /// at all ends at its start either way: its ends are the start, which the final rounding
+    /// returns as it is (final_rounding.h).
+    [[gnu::always_inline]] bool moveFreely(ResolveResult<T>& result) noexcept {
         result.status = ResolveStatus::Moved;
         result.contactCount = 0;
         result.startOverlapCount = 0;
@@ -504,7 +506,10 @@ private:
     /// position between the start and the end, its free axis on the rest of its own motion).
     /// The arithmetic's sweptCells is a superset of that; extra cells are tested exactly and
     /// rejected. With every tile tested, the earliest hits are the same set as the walk's, and
-    /// none is cut short (solid cells <= capacity), so the stored contacts match too.
+    /// none is cut short (solid cells <= capacity), so the stored contacts match too. Bounds
+    /// that hold no solid cell at all are found first, from one read of the block where it fits
+    /// (readSolidBlock: at most 4 rows of 16 cells, as a short move's bounds are), without a
+    /// loop over their cells: they list nothing, and the frame moves freely (run).
     bool collectNear(std::int32_t contactCapacity) noexcept {
         CellRange range[2];
         m_.sweptCellsOfBoth(range);
@@ -516,6 +521,12 @@ private:
         }
         const std::int64_t area = (range[0].last - range[0].first + 1) * (range[1].last - range[1].first + 1);
         range[1] = secondaryCandidates(range[1]);
+        SolidBlock block;
+        if (readSolidBlock(m_.map().solid, m_.map().columns, m_.map().rows, range[0], range[1], block) &&
+            block.bits == 0) {
+            nearCount_ = 0;
+            return true;
+        }
         std::int64_t count = 0;
         if (area <= kNearArea) {
             count = listSolidCells<false>(range);
