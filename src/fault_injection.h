@@ -48,11 +48,11 @@
 //   FINAL_STEP_SIGN_IGNORED  the final rounding of both ends at once (float and double frames)
 //                      steps a negative value's bits as a positive one's, so it rounds away from
 //                      the start there (final_rounding.h)
-//   FREE_MOVE_PAST_ONE_TILE  the free-move shortcut (moveFreely) taken when the swept bounds'
-//                      listing holds one solid cell, not none, so that tile is never tested
-//                      (frame_loop.h)
-//   SOLID_BLOCK_LAST_COLUMN_MASKED  the near listing's block of solid cells (readSolidBlock)
-//                      masks off its last column, so a solid cell there is never listed (solid_block.h)
+//   FREE_MOVE_FIRST_ROW_SKIPPED  the free-move test (sweptBoundsHoldNoSolidCell) reads the
+//                      swept bounds from their second row, so a frame whose only solid cells lie
+//                      in the first row is taken as free (free_move.h)
+//   SOLID_BLOCK_LAST_COLUMN_MASKED  the block read of the free-move test (blockHoldsNoSolidCell)
+//                      masks off its last column, so a solid cell there goes unseen (solid_block.h)
 // Issue 20's four classes, one fault standing for each:
 //   PAIR_REFINEMENT_SWAPPED  double near-ties: the exact refinement of the pair comparison called
 //                      with its two sides swapped, so a nonzero sign inside the filter's band
@@ -77,6 +77,6 @@
     defined(TILESWEEP_FAULT_WINDOW_MAGNITUDE_SHORT) ||                                                    \
     defined(TILESWEEP_FAULT_WINDOW_LINES_CLEAR_BINADE_SHORT) ||                                           \
     defined(TILESWEEP_FAULT_WALK_ENTRY_TIE_BY_HIGH_PART) || defined(TILESWEEP_FAULT_FINAL_STEP_SIGN_IGNORED) || \
-    defined(TILESWEEP_FAULT_FREE_MOVE_PAST_ONE_TILE) || defined(TILESWEEP_FAULT_SOLID_BLOCK_LAST_COLUMN_MASKED)
+    defined(TILESWEEP_FAULT_FREE_MOVE_FIRST_ROW_SKIPPED) || defined(TILESWEEP_FAULT_SOLID_BLOCK_LAST_COLUMN_MASKED)
 #define TILESWEEP_FAULT_INJECTED 1
 #endif

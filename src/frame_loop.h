@@ -16,8 +16,7 @@
 //
 // Broadphase. Candidate tiles come from the grid, never from a scan of the map. A short move
 // lists the solid cells of its swept bounds once (at most kNearArea cells, or up to kSparseArea
-// with few solid ones), and those serve the start overlaps and both steps (when none is solid,
-// the frame moves freely, decided before the steps: moveFreely). Otherwise the walk
+// with few solid ones), and those serve the start overlaps and both steps. Otherwise the walk
 // goes along the primary axis (the one whose motion crosses more cells), cell by cell in the
 // order the box enters them; for each primary cell it takes the secondary cells the box's span
 // covers while it is inside that primary cell, and it stops at the first primary cell entered
@@ -52,7 +51,6 @@
 #include "cell_range.h"
 #include "fault_injection.h"
 #include "final_rounding.h"
-#include "solid_block.h"
 
 #include "tilesweep/resolve.h"
 
@@ -82,11 +80,6 @@ public:
         // A short move: the solid cells of the swept bounds, listed once, serve the start
         // overlaps and both steps (collectNear); otherwise the walk.
         const bool nearOnly = collectNear(std::max<std::int32_t>(out.contactCapacity, 0));
-#if defined(TILESWEEP_FAULT_FREE_MOVE_PAST_ONE_TILE)
-        if (nearOnly && nearCount_ <= 1) return moveFreely(result);  // deliberate fault: one solid cell ignored
-#else
-        if (nearOnly && nearCount_ == 0) return moveFreely(result);
-#endif
         const bool bothMove = m_.axis(0).dir != 0 && m_.axis(1).dir != 0;
         Hits first{out.contacts, std::max<std::int32_t>(out.contactCapacity, 0)};
         if (nearOnly && bothMove) {
@@ -170,24 +163,6 @@ private:
         hits.touch[a] = touchEdge;
         if (hits.count < hits.capacity) hits.store[hits.count] = {cell, normalOn(a), T(0), {}};
         ++hits.count;
-    }
-
-    /// A frame whose swept bounds hold no solid cell (collectNear found none): no tile overlaps
-    /// the box at the start and none can block it, so it moves to its end with no contact, as
-    /// the steps below would find after testing nothing. Decided here, before their set-up: in
-    /// the benchmarks' frames at 0.5 to 2 tiles a frame most frames are such
-    /// (scripts/instructions.sh, FloorAndWalls<double>/1: 564 instructions a frame through the
-    /// steps, 529 here with the block read of solid_block.h; FreeFlight<double>/4 509 and 437).
-    /// Always inlined: out of line it is a call on every free frame. A frame that does not move
-    /// at all ends at its start either way: its ends are the start, which the final rounding
-    /// returns as it is (final_rounding.h).
-    [[gnu::always_inline]] bool moveFreely(ResolveResult<T>& result) noexcept {
-        result.status = ResolveStatus::Moved;
-        result.contactCount = 0;
-        result.startOverlapCount = 0;
-        result.blockedX = result.blockedY = false;
-        const Coord ends[2] = {m_.endOf(0), m_.endOf(1)};
-        return roundEnds(ends, result.position);
     }
 
     /// The final rounding of both ends (final_rounding.h): at once where the arithmetic can
@@ -506,10 +481,7 @@ private:
     /// position between the start and the end, its free axis on the rest of its own motion).
     /// The arithmetic's sweptCells is a superset of that; extra cells are tested exactly and
     /// rejected. With every tile tested, the earliest hits are the same set as the walk's, and
-    /// none is cut short (solid cells <= capacity), so the stored contacts match too. Bounds
-    /// that hold no solid cell at all are found first, from one read of the block where it fits
-    /// (readSolidBlock: at most 4 rows of 16 cells, as a short move's bounds are), without a
-    /// loop over their cells: they list nothing, and the frame moves freely (run).
+    /// none is cut short (solid cells <= capacity), so the stored contacts match too.
     bool collectNear(std::int32_t contactCapacity) noexcept {
         CellRange range[2];
         m_.sweptCellsOfBoth(range);
@@ -521,12 +493,6 @@ private:
         }
         const std::int64_t area = (range[0].last - range[0].first + 1) * (range[1].last - range[1].first + 1);
         range[1] = secondaryCandidates(range[1]);
-        SolidBlock block;
-        if (readSolidBlock(m_.map().solid, m_.map().columns, m_.map().rows, range[0], range[1], block) &&
-            block.bits == 0) {
-            nearCount_ = 0;
-            return true;
-        }
         std::int64_t count = 0;
         if (area <= kNearArea) {
             count = listSolidCells<false>(range);

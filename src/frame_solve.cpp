@@ -3,6 +3,7 @@
 
 #include "fast_frame.h"
 #include "frame_loop.h"
+#include "free_move.h"
 #include "lattice.h"
 #include "lattice_frame.h"
 #include "range_admission.h"
@@ -22,6 +23,10 @@ template <class T>
                                              ContactPositions positions, const MapRange& range, bool inWindow,
                                              ResolveResult<T>& result, bool& refined) noexcept {
     FastFrame<T> frame(input, range, inWindow);
+    if (solveFreeMove(frame, result)) {
+        refined = false;
+        return true;
+    }
     const bool solved =
         FrameLoop<FastFrame<T>>(frame).run(output, result, positions == ContactPositions::Placed);
     refined = frame.refined();
