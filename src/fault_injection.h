@@ -76,7 +76,9 @@
     defined(TILESWEEP_FAULT_LINES_CLEAR_SIZE_IGNORED) || defined(TILESWEEP_FAULT_FLOAT_WINDOW_TOO_LOW) || \
     defined(TILESWEEP_FAULT_WINDOW_MAGNITUDE_SHORT) ||                                                    \
     defined(TILESWEEP_FAULT_WINDOW_LINES_CLEAR_BINADE_SHORT) ||                                           \
-    defined(TILESWEEP_FAULT_WALK_ENTRY_TIE_BY_HIGH_PART) || defined(TILESWEEP_FAULT_FINAL_STEP_SIGN_IGNORED) || \
-    defined(TILESWEEP_FAULT_FREE_MOVE_FIRST_ROW_SKIPPED) || defined(TILESWEEP_FAULT_SOLID_BLOCK_LAST_COLUMN_MASKED)
+    defined(TILESWEEP_FAULT_WALK_ENTRY_TIE_BY_HIGH_PART) ||                                               \
+    defined(TILESWEEP_FAULT_FINAL_STEP_SIGN_IGNORED) ||                                                   \
+    defined(TILESWEEP_FAULT_FREE_MOVE_FIRST_ROW_SKIPPED) ||                                               \
+    defined(TILESWEEP_FAULT_SOLID_BLOCK_LAST_COLUMN_MASKED)
 #define TILESWEEP_FAULT_INJECTED 1
 #endif

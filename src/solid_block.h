@@ -3,10 +3,10 @@
 
 // Whether a small block of a map holds no solid cell, from its rows read 16 bytes at a time
 // (SSE2). The free-move test (free_move.h) reads a short move's swept bounds so, and finds a
-// frame whose bounds hold no solid cell without a loop over them. A frame's swept bounds change size from frame to frame (a move of 2 tiles
-// covers 3 or 4 cells on an axis), and a loop over them mispredicts its exits: on
-// FreeFlight<double>/4 (every frame free), listing the bounds cell by cell took 18 of the
-// frame's 35 ns (bench/, the listing left out).
+// frame whose bounds hold no solid cell without a loop over them. A frame's swept bounds change
+// size from frame to frame (a move of 2 tiles covers 3 or 4 cells on an axis), and a loop over
+// them mispredicts its exits: on FreeFlight<double>/4 (every frame free), listing the bounds
+// cell by cell took 18 of the frame's 35 ns (bench/, the listing left out).
 
 #include "cell_range.h"
 #include "fault_injection.h"
@@ -32,9 +32,9 @@ inline constexpr std::int64_t kSolidBlockColumns = 16;
 /// the last row again in place of those past the block, so no branch depends on the block's
 /// size; a row's 16 bytes may run into the next row, and the columns past the block are masked
 /// off.
-[[nodiscard, gnu::always_inline]] inline bool blockHoldsNoSolidCell(const std::uint8_t* solid, std::int64_t columns,
-                                                                    std::int64_t rows, CellRange x,
-                                                                    CellRange y) noexcept {
+[[nodiscard, gnu::always_inline]] inline bool blockHoldsNoSolidCell(const std::uint8_t* solid,
+                                                                    std::int64_t columns, std::int64_t rows,
+                                                                    CellRange x, CellRange y) noexcept {
 #if defined(TILESWEEP_SOLID_BLOCK_SSE2)
     const std::int64_t width = x.last - x.first + 1;
     const std::int64_t height = y.last - y.first + 1;

@@ -6,8 +6,9 @@
 // several widths, sparse and dense, with blocks of every size up to 5 x 17 at every place,
 // including the map's last columns, where a row's 16 bytes run into the next row, and its last
 // rows; solid cells in every column and row of a block, the last ones too.
-#include "cell_range.h"
 #include "solid_block.h"
+
+#include "cell_range.h"
 
 #include <gtest/gtest.h>
 
@@ -66,9 +67,11 @@ TEST(SolidBlock, saysEmptyExactlyForTheReadableBlocksWithoutASolidCell) {
                             const CellRange y{y0, y1};
                             const bool read = readable(columns, rows, x, y);
                             const bool solidCell = holdsASolidCell(solid, columns, x, y);
-                            ASSERT_EQ(blockHoldsNoSolidCell(solid.data(), columns, rows, x, y), read && !solidCell)
+                            ASSERT_EQ(blockHoldsNoSolidCell(solid.data(), columns, rows, x, y),
+                                      read && !solidCell)
                                 << "columns " << columns << " rows " << rows << " block [" << x0 << ", " << x1
-                                << "] x [" << y0 << ", " << y1 << "], readable " << read << ", solid " << solidCell;
+                                << "] x [" << y0 << ", " << y1 << "], readable " << read << ", solid "
+                                << solidCell;
                             if (!read) {
                                 ++unreadable;
                                 continue;
