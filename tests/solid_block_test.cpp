@@ -20,7 +20,8 @@ namespace tilesweep::detail {
 namespace {
 
 /// Whether the block x by y holds a nonzero byte, read one by one.
-bool holdsASolidCell(const std::vector<std::uint8_t>& solid, std::int64_t columns, CellRange x, CellRange y) {
+[[maybe_unused]] bool holdsASolidCell(const std::vector<std::uint8_t>& solid, std::int64_t columns,
+                                      CellRange x, CellRange y) {
     for (std::int64_t j = y.first; j <= y.last; ++j)
         for (std::int64_t i = x.first; i <= x.last; ++i)
             if (solid[static_cast<std::size_t>(j * columns + i)] != 0) return true;
@@ -29,7 +30,7 @@ bool holdsASolidCell(const std::vector<std::uint8_t>& solid, std::int64_t column
 
 /// Whether blockHoldsNoSolidCell can read the block: at most 4 rows of at most 16 columns, and
 /// the 16 bytes from its first column on its last row in the map's bytes.
-bool readable(std::int64_t columns, std::int64_t rows, CellRange x, CellRange y) {
+[[maybe_unused]] bool readable(std::int64_t columns, std::int64_t rows, CellRange x, CellRange y) {
     const std::int64_t width = x.last - x.first + 1;
     const std::int64_t height = y.last - y.first + 1;
     return width <= kSolidBlockColumns && height <= kSolidBlockRows &&
