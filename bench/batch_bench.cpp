@@ -12,12 +12,16 @@
 //   walking  on a floor, 1.5 px a frame sideways plus gravity
 //   falling  in open air, 5 px a frame down (the cheap exit: no solid cell in the swept bounds)
 //   fast     dashing 30 px a frame along a floor toward the walls
+// MixAfterIdle runs the float mix once a millisecond, as a game's one batch a frame: the other
+// rows run batches back to back, and find the pool's worker awake.
 #include "tilesweep/batch.h"
 
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <cstdint>
 #include <random>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -96,9 +100,34 @@ void runBatch(benchmark::State& state, const std::vector<MoveInput<T>>& movers) 
     state.counters["threads"] = static_cast<double>(pool.threadCount());
 }
 
+/// As runBatch, but each batch comes 1 ms after the last, as a game's one batch a frame does:
+/// the pool's worker has gone to sleep by then, so its wake-up is in the
+/// time. Only the batch is timed.
+template <class T>
+void runBatchAfterIdle(benchmark::State& state, const std::vector<MoveInput<T>>& movers) {
+    const World<T>& w = world<T>();
+    tilesweep::BatchPool pool(static_cast<int>(state.range(0)));
+    std::vector<MoveResult<T>> results(movers.size());
+    for (auto _ : state) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        const auto start = std::chrono::steady_clock::now();
+        tilesweep::moveAndSlideBatch(w.map, movers.data(), results.data(), movers.size(), &pool);
+        benchmark::DoNotOptimize(results.data());
+        benchmark::ClobberMemory();
+        state.SetIterationTime(
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(movers.size()));
+    state.counters["threads"] = static_cast<double>(pool.threadCount());
+}
+
 // The target: the game's mix (a quarter each), float and double, on 1 and 2 threads.
 void BM_MoveAndSlideBatch_Mix(benchmark::State& state) { runBatch<float>(state, world<float>().mix); }
 void BM_MoveAndSlideBatch_MixDouble(benchmark::State& state) { runBatch<double>(state, world<double>().mix); }
+// The float mix as a game's one batch a frame: the worker woken for it.
+void BM_MoveAndSlideBatch_MixAfterIdle(benchmark::State& state) {
+    runBatchAfterIdle<float>(state, world<float>().mix);
+}
 // Each kind alone on one thread: where the time of the mix goes.
 void BM_MoveAndSlideBatch_Resting(benchmark::State& state) { runBatch<float>(state, world<float>().resting); }
 void BM_MoveAndSlideBatch_Walking(benchmark::State& state) { runBatch<float>(state, world<float>().walking); }
@@ -107,6 +136,7 @@ void BM_MoveAndSlideBatch_Fast(benchmark::State& state) { runBatch<float>(state,
 
 BENCHMARK(BM_MoveAndSlideBatch_Mix)->ArgName("threads")->Arg(1)->Arg(2)->UseRealTime();
 BENCHMARK(BM_MoveAndSlideBatch_MixDouble)->ArgName("threads")->Arg(1)->Arg(2)->UseRealTime();
+BENCHMARK(BM_MoveAndSlideBatch_MixAfterIdle)->ArgName("threads")->Arg(1)->Arg(2)->UseManualTime();
 BENCHMARK(BM_MoveAndSlideBatch_Resting)->ArgName("threads")->Arg(1)->UseRealTime();
 BENCHMARK(BM_MoveAndSlideBatch_Walking)->ArgName("threads")->Arg(1)->UseRealTime();
 BENCHMARK(BM_MoveAndSlideBatch_Falling)->ArgName("threads")->Arg(1)->UseRealTime();

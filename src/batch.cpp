@@ -13,7 +13,7 @@
 
 // A small pool over std::thread rather than TBB: a batch is one parallel loop over independent
 // movers, so the pool needs only a hand-off (a generation counter under a mutex), an atomic
-// chunk cursor and a completion count. It allocates when it is made, never per batch; a TBB
+// range cursor and a completion count. It allocates when it is made, never per batch; a TBB
 // parallel_for would allocate tasks per call and bring a dependency to every binding of the C
 // API.
 
@@ -52,19 +52,38 @@ struct BatchPool::State {
     // The current batch: written before `open` is set, read after it is seen set.
     std::size_t count = 0;
     std::size_t chunk = 1;
+    std::size_t shares = 2;  // a range is 1/shares of what is left: twice the pool's threads
     void (*work)(void*, std::size_t, std::size_t) = nullptr;
     void* context = nullptr;
-    std::atomic<std::size_t> next{0};
-    std::atomic<bool> open{false};
+    // The shared cursor, on a cache line of its own: claiming a range moves only this line
+    // between the cores, not the one the batch's parameters are read from.
+    alignas(64) std::atomic<std::size_t> next{0};
+    alignas(64) std::atomic<bool> open{false};
     std::atomic<int> active{0};
 
-    void runChunks() noexcept {
+    /// Claims the next range of the batch: a share of what is left (so that a few large ranges
+    /// cover most of the batch and the shared cursor moves rarely), never less than `chunk`
+    /// (so that the threads finish within a chunk of each other). Returns false when none is left.
+    bool claimRange(std::size_t& begin, std::size_t& end) noexcept {
+        std::size_t at = next.load(std::memory_order_relaxed);
         for (;;) {
-            const std::size_t begin = next.fetch_add(chunk, std::memory_order_relaxed);
-            if (begin >= count) return;
-            const std::size_t end = count - begin < chunk ? count : begin + chunk;
-            work(context, begin, end);
+            if (at >= count) return false;
+            const std::size_t left = count - at;
+            std::size_t take = left / shares;
+            if (take < chunk) take = chunk;
+            if (take > left) take = left;
+            if (next.compare_exchange_weak(at, at + take, std::memory_order_relaxed)) {
+                begin = at;
+                end = at + take;
+                return true;
+            }
         }
+    }
+
+    void runRanges() noexcept {
+        std::size_t begin = 0;
+        std::size_t end = 0;
+        while (claimRange(begin, end)) work(context, begin, end);
     }
 
     void leave() noexcept {
@@ -84,7 +103,7 @@ struct BatchPool::State {
                 seen = generation;
             }
             active.fetch_add(1);
-            if (open.load()) runChunks();
+            if (open.load()) runRanges();
             leave();
         }
     }
@@ -128,6 +147,7 @@ void BatchPool::run(std::size_t count, std::size_t chunk, void (*work)(void*, st
     std::lock_guard<std::mutex> serial(s.runMutex);
     s.count = count;
     s.chunk = chunk;
+    s.shares = 2 * (s.workers.size() + 1);
     s.work = work;
     s.context = context;
     s.next.store(0, std::memory_order_relaxed);
@@ -137,7 +157,7 @@ void BatchPool::run(std::size_t count, std::size_t chunk, void (*work)(void*, st
         ++s.generation;
     }
     s.wake.notify_all();
-    s.runChunks();
+    s.runRanges();
     s.open.store(false);
     // The workers that joined are each within one chunk of the end (a chunk is about 10 us of
     // work): wait for them spinning first, and sleep only if they take longer. A sleep and its

@@ -20,6 +20,7 @@
 #include <random>
 #include <set>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace tilesweep {
@@ -90,19 +91,34 @@ TEST(Batch, emptyAndNullBatchesDoNothing) {
     EXPECT_EQ(result.contactCount, 7);
 }
 
-// A pool outlives many batches, and a large batch is split across its threads (chunks of 256).
-TEST(Batch, poolRunsEveryIndexExactlyOnce) {
+// A pool outlives many batches, and a large batch is split across its threads into disjoint
+// ranges that cover it: each at least the chunk long (but the one that ends the batch), and
+// fewer of them than chunks (large shares of what is left first, so the shared cursor moves
+// rarely).
+TEST(Batch, poolRunsEveryIndexExactlyOnceInRangesOfAtLeastAChunk) {
+    struct Record {
+        std::vector<int> hits;
+        std::mutex mutex;
+        std::vector<std::pair<std::size_t, std::size_t>> ranges;
+    };
+    constexpr std::size_t kChunk = 64;
     BatchPool pool(3);
     for (int round = 0; round < 50; ++round) {
-        std::vector<int> hits(10007, 0);
+        Record record;
+        record.hits.assign(10007, 0);
         pool.run(
-            hits.size(), 64,
+            record.hits.size(), kChunk,
             [](void* ctx, std::size_t b, std::size_t e) {
-                auto& h = *static_cast<std::vector<int>*>(ctx);
-                for (std::size_t k = b; k < e; ++k) ++h[k];
+                auto& r = *static_cast<Record*>(ctx);
+                for (std::size_t k = b; k < e; ++k) ++r.hits[k];
+                std::lock_guard<std::mutex> lock(r.mutex);
+                r.ranges.emplace_back(b, e);
             },
-            &hits);
-        for (int h : hits) ASSERT_EQ(h, 1);
+            &record);
+        for (int h : record.hits) ASSERT_EQ(h, 1);
+        for (const auto& [b, e] : record.ranges)
+            ASSERT_TRUE(e - b >= kChunk || e == record.hits.size()) << "range [" << b << ", " << e << ")";
+        EXPECT_LT(record.ranges.size(), record.hits.size() / kChunk / 2);
     }
 }
 

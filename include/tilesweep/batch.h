@@ -42,8 +42,9 @@ public:
     /// Threads a batch runs on, the caller included (>= 1).
     [[nodiscard]] int threadCount() const noexcept;
 
-    /// Calls work(context, begin, end) over disjoint ranges covering [0, count), in chunks of
-    /// `chunk` items, on every thread of the pool; returns when all are done. Allocates nothing.
+    /// Calls work(context, begin, end) over disjoint ranges covering [0, count), on every thread
+    /// of the pool; returns when all are done. Allocates nothing. Each range is a share of what
+    /// is left (large ones first) and at least `chunk` items long, but the one that ends the work.
     void run(std::size_t count, std::size_t chunk,
              void (*work)(void* context, std::size_t begin, std::size_t end), void* context) noexcept;
 
