@@ -38,7 +38,7 @@ inline constexpr std::int64_t kSolidBlockColumns = 16;
 #if defined(TILESWEEP_SOLID_BLOCK_SSE2)
     const std::int64_t width = x.last - x.first + 1;
     const std::int64_t height = y.last - y.first + 1;
-    if (width > kSolidBlockColumns || height > kSolidBlockRows || height < 1 ||
+    if (width > kSolidBlockColumns || height > kSolidBlockRows ||
         y.last * columns + x.first + 16 > columns * rows)
         return false;
     const std::uint8_t* first = solid + (y.first * columns + x.first);
