@@ -86,36 +86,27 @@ const World<T>& world() {
     return w;
 }
 
-template <class T>
-void runBatch(benchmark::State& state, const std::vector<MoveInput<T>>& movers) {
-    const World<T>& w = world<T>();
-    tilesweep::BatchPool pool(static_cast<int>(state.range(0)));
-    std::vector<MoveResult<T>> results(movers.size());
-    for (auto _ : state) {
-        tilesweep::moveAndSlideBatch(w.map, movers.data(), results.data(), movers.size(), &pool);
-        benchmark::DoNotOptimize(results.data());
-        benchmark::ClobberMemory();
-    }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(movers.size()));
-    state.counters["threads"] = static_cast<double>(pool.threadCount());
-}
+/// How the batches of a benchmark come: back to back, or each 1 ms after the last, as a game's
+/// one batch a frame does (the pool's worker has gone to sleep by then, so its wake-up is in the
+/// time; only the batch is timed, with the benchmark's manual time).
+enum class Pace { BackToBack, AfterIdle };
 
-/// As runBatch, but each batch comes 1 ms after the last, as a game's one batch a frame does:
-/// the pool's worker has gone to sleep by then, so its wake-up is in the
-/// time. Only the batch is timed.
 template <class T>
-void runBatchAfterIdle(benchmark::State& state, const std::vector<MoveInput<T>>& movers) {
+void runBatch(benchmark::State& state, const std::vector<MoveInput<T>>& movers,
+              Pace pace = Pace::BackToBack) {
     const World<T>& w = world<T>();
     tilesweep::BatchPool pool(static_cast<int>(state.range(0)));
     std::vector<MoveResult<T>> results(movers.size());
     for (auto _ : state) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(1));
-        const auto start = std::chrono::steady_clock::now();
+        if (pace == Pace::AfterIdle) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        const auto start = pace == Pace::AfterIdle ? std::chrono::steady_clock::now()
+                                                   : std::chrono::steady_clock::time_point{};
         tilesweep::moveAndSlideBatch(w.map, movers.data(), results.data(), movers.size(), &pool);
         benchmark::DoNotOptimize(results.data());
         benchmark::ClobberMemory();
-        state.SetIterationTime(
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        if (pace == Pace::AfterIdle)
+            state.SetIterationTime(
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(movers.size()));
     state.counters["threads"] = static_cast<double>(pool.threadCount());
@@ -126,7 +117,7 @@ void BM_MoveAndSlideBatch_Mix(benchmark::State& state) { runBatch<float>(state, 
 void BM_MoveAndSlideBatch_MixDouble(benchmark::State& state) { runBatch<double>(state, world<double>().mix); }
 // The float mix as a game's one batch a frame: the worker woken for it.
 void BM_MoveAndSlideBatch_MixAfterIdle(benchmark::State& state) {
-    runBatchAfterIdle<float>(state, world<float>().mix);
+    runBatch<float>(state, world<float>().mix, Pace::AfterIdle);
 }
 // Each kind alone on one thread: where the time of the mix goes.
 void BM_MoveAndSlideBatch_Resting(benchmark::State& state) { runBatch<float>(state, world<float>().resting); }
