@@ -117,15 +117,15 @@ template <class T>
     return (bits & 1) != 0;
 }
 
-/// Float frames' shortcut: the float nearest the double estimate v = fl(x0 + fl(fl(num / den) *
-/// d)) when v lies farther than its error bound from both float midpoints around it; false when
-/// it does not (or the nearest float is zero), and the exact test decides. Three roundings, each
-/// within u of its result, and |fl(num/den)*d - P| <= (2u + u^2)|P| for P = num*d/den: |v - V| <=
-/// u|v|/(1 - u) + 2.01u|P~| < 3u(|v| + |P~|), P~ the computed product; the bound, computed as
-/// fl(4u * fl(|v| + |P~|)), exceeds that. The midpoints are exact doubles (25 bits).
-[[nodiscard]] inline bool nearestFloatOfEstimate(double x0, double d, double num, double den,
-                                                 float& out) noexcept {
-    const double product = num / den * d;
+/// Float frames' shortcut: the float nearest the double estimate v = fl(x0 + fl(q * d)) when v
+/// lies farther than its error bound from both float midpoints around it; false when it does not
+/// (or the nearest float is zero), and the exact test decides. q is num / den rounded to the
+/// nearest double (roundPositionAtTime). Three roundings, each within u of its result, and
+/// |fl(q * d) - P| <= (2u + u^2)|P| for P = num*d/den: |v - V| <= u|v|/(1 - u) + 2.01u|P~| <
+/// 3u(|v| + |P~|), P~ the computed product; the bound, computed as fl(4u * fl(|v| + |P~|)),
+/// exceeds that. The midpoints are exact doubles (25 bits).
+[[nodiscard]] inline bool nearestFloatOfEstimate(double x0, double d, double q, float& out) noexcept {
+    const double product = q * d;
     const double v = x0 + product;
     const auto c = static_cast<float>(v);
     if (c == 0) return false;
@@ -139,19 +139,19 @@ template <class T>
 }
 
 /// Double frames' shortcut: the double nearest V when a cheap estimate settles it; false when
-/// it does not, and the exact test decides. With q = fl(hi / den) and p = fl(q * d), TwoSum gives
-/// v + r = x0 + p exactly (v = fl(x0 + p)). p is within (2u + u^2) / (1 - u)^2 |p| < 2.01u|p| of
-/// hi * d / den (two roundings), and lo * d / den adds at most u|hi * d / den| < 1.01u|p| (|lo| <=
-/// u|hi|): V = v + r + e with |e| < 3.02u|p| < 4u|p|, the bound, exact as computed (a power of two
+/// it does not, and the exact test decides. q is num / den rounded to the nearest double
+/// (roundPositionAtTime): |q - s| <= u s for s = num / den (s lies far above the subnormals in
+/// the range test's frames). With p = fl(q * d), TwoSum gives v + r = x0 + p exactly (v = fl(x0 +
+/// p)), and p is within u|q * d| + u|s * d| <= u|p| (1 / (1 - u) + 1 / (1 - u)^2) < 2.01u|p| of
+/// s * d: V = v + r + e with |e| < 2.01u|p| < 4u|p|, the bound, exact as computed (a power of two
 /// times |p|, far above the subnormals in the range test's frames). v is the nearest double to V
 /// when r + e lies strictly between minus half the gap below v and half the gap above it (a
 /// quarter of the spacing above |v| on the side toward zero when |v| is a power of two), which
 /// r + bound < above and r - bound > -below imply: the half gaps are doubles, and rounding is
 /// monotonic, so a computed sum below one is below it exactly. A midpoint is never taken (the
 /// bound is positive), so ties go to the exact test. Near zero (|v| < kPositionFloor) too.
-[[nodiscard]] inline bool nearestDoubleOfEstimate(double x0, double d, double hi, double den,
-                                                  double& out) noexcept {
-    const double p = hi / den * d;
+[[nodiscard]] inline bool nearestDoubleOfEstimate(double x0, double d, double q, double& out) noexcept {
+    const double p = q * d;
     const ExactPair s = twoSum(x0, p);
     if (!(std::fabs(s.hi) >= kPositionFloor)) return false;
     const double bound = 4 * kUnitRoundoff * std::fabs(p);
@@ -171,19 +171,21 @@ template <class T>
 /// The coordinate V = x0 + (num / den) * d rounded to the nearest T, ties to even, into `out`;
 /// false when it is left to the lattice (a result near zero, or an estimate more than a few T
 /// away). x0 and d are the free axis's start and displacement, num / den the contact time
-/// (0 < num < den, den > 0), all exact (see the top of this file); `refined` is set when a filter
-/// could not decide alone.
+/// (0 < num < den, den > 0), all exact (see the top of this file), and q that time rounded to the
+/// nearest double (on a float frame fl(num / den), num a double; on a double frame the frame time
+/// itself, roundTimeToDouble's, which a contact carries: no second division); `refined` is set
+/// when a filter could not decide alone.
 template <class T, class Coord>
-[[nodiscard]] bool roundPositionAtTime(double x0, double d, const Coord& num, double den, bool& refined,
-                                       T& out) noexcept {
+[[nodiscard]] bool roundPositionAtTime(double x0, double d, const Coord& num, double den, double q,
+                                       bool& refined, T& out) noexcept {
     const double hi = highPartOf(num);
     const double lo = lowPartOf(num);
     if constexpr (std::is_same<T, float>::value) {
-        if (nearestFloatOfEstimate(x0, d, hi, den, out)) return true;
+        if (nearestFloatOfEstimate(x0, d, q, out)) return true;
     } else {
-        if (nearestDoubleOfEstimate(x0, d, hi, den, out)) return true;
+        if (nearestDoubleOfEstimate(x0, d, q, out)) return true;
     }
-    T c = static_cast<T>(x0 + hi / den * d);
+    T c = static_cast<T>(x0 + q * d);
     for (int step = 0; step < 4; ++step) {
         const auto cd = static_cast<double>(c);
         if (!(std::fabs(cd) >= kPositionFloor)) {

@@ -88,6 +88,8 @@ public:
             end_[a] = sumOf<Coord>(axis_[a].low, axis_[a].disp);
             swept_[a] = sweptCells(a);
         }
+        if (inWindow_)
+            windowLinesClearBits_ = static_cast<int>(linesClear(0)) | (static_cast<int>(linesClear(1)) << 1);
 #endif
         start_[0] = in.box.pos.x;
         start_[1] = in.box.pos.y;
@@ -101,23 +103,15 @@ public:
         const Motion& m = axis_[a];
         if (inWindow_) {
             const double shift = range_.sizeGrainShift;
-            return range_.windowLinesClear[a] & ((m.size + shift) - shift == m.size);
+            return ((range_.windowLinesClearBits >> a) & 1) != 0 && (m.size + shift) - shift == m.size;
         }
         return linesClearOf(m.low, m.disp, m.size, range_.lineBit[a]);
     }
-    /// linesClear of both axes, as bits 0 (x) and 1 (y). A frame in the window tests both sizes
-    /// on two lanes where SSE2 is at hand.
+    /// linesClear of both axes, as bits 0 (x) and 1 (y). A frame in the window has them from its
+    /// set-up (windowLinesClearBits_: on two lanes where SSE2 is at hand); the final rounding asks
+    /// for them on most frames that are not free (an end with a nonzero low part).
     [[gnu::always_inline]] int linesClearBits() const noexcept {
-#if defined(TILESWEEP_FINAL_ROUNDING_SSE2)
-        if (inWindow_) {
-            const __m128d size = _mm_set_pd(axis_[1].size, axis_[0].size);
-            const __m128d shift = _mm_set1_pd(range_.sizeGrainShift);
-            const int grained =
-                _mm_movemask_pd(_mm_cmpeq_pd(_mm_sub_pd(_mm_add_pd(size, shift), shift), size));
-            return grained & (static_cast<int>(range_.windowLinesClear[0]) |
-                              (static_cast<int>(range_.windowLinesClear[1]) << 1));
-        }
-#endif
+        if (inWindow_) return windowLinesClearBits_;
         return static_cast<int>(linesClear(0)) | (static_cast<int>(linesClear(1)) << 1);
     }
     /// Whether some predicate needed its exact refinement (DecisionPath::Filtered).
@@ -279,13 +273,23 @@ public:
     }
 
     /// The box's coordinate on `a` at time t, start + t * displacement, rounded to nearest
-    /// (contact_position.h); the start itself at t = 0. False when the lattice must settle it.
-    bool positionAt(int a, const Time& t, T& out) noexcept {
+    /// (contact_position.h); the start itself at t = 0. `frameTime` is t rounded to T (roundTime's,
+    /// as the contacts carry it): on a double frame that is t rounded to the nearest double, the
+    /// estimate's quotient, so the position costs no division of its own; a float frame divides.
+    /// False when the lattice must settle it.
+    bool positionAt(int a, const Time& t, T frameTime, T& out) noexcept {
         if (highPartOf(t.num) == 0) {
             out = start_[a];
             return true;
         }
-        return roundPositionAtTime<T>(axis_[a].low, axis_[a].disp, t.num, t.den, refined_, out);
+#if defined(TILESWEEP_FAULT_POSITION_FROM_FLOAT_TIME)
+        const double q =
+            frameTime;  // deliberate fault: a float frame's time, rounded to float, as the quotient
+#else
+        double q = frameTime;
+        if constexpr (std::is_same<T, float>::value) q = t.num / t.den;  // num a double: one rounding
+#endif
+        return roundPositionAtTime<T>(axis_[a].low, axis_[a].disp, t.num, t.den, q, refined_, out);
     }
 
     // The final rounding (final_rounding.h), without a branch on the data in its common case. A
@@ -532,11 +536,19 @@ private:
 
         const __m128d lowEnd = _mm_min_pd(_mm_add_pd(pos, disp), pos);
         const __m128d highEnd = _mm_max_pd(_mm_add_pd(high, disp), high);
-        const __m128d magnitude =
-            inWindow_ ? _mm_loadu_pd(range_.windowMagnitude)
-                      : _mm_add_pd(_mm_add_pd(_mm_add_pd(_mm_andnot_pd(sign, pos), _mm_andnot_pd(sign, high)),
-                                              speed),
-                                   _mm_andnot_pd(sign, origin));
+        __m128d magnitude;
+        if (inWindow_) {
+            magnitude = _mm_loadu_pd(range_.windowMagnitude);
+            // linesClear of both axes: the grid's half from the map, the sizes' on the lanes.
+            const __m128d shift = _mm_set1_pd(range_.sizeGrainShift);
+            const int grained =
+                _mm_movemask_pd(_mm_cmpeq_pd(_mm_sub_pd(_mm_add_pd(size, shift), shift), size));
+            windowLinesClearBits_ = grained & range_.windowLinesClearBits;
+        } else {
+            magnitude =
+                _mm_add_pd(_mm_add_pd(_mm_add_pd(_mm_andnot_pd(sign, pos), _mm_andnot_pd(sign, high)), speed),
+                           _mm_andnot_pd(sign, origin));
+        }
         const __m128d margin =
             _mm_mul_pd(_mm_mul_pd(_mm_set1_pd(kCellEstimateErrorUlps * kUnitRoundoff), magnitude), invTile);
         estimateCellsOfBoth(_mm_mul_pd(_mm_sub_pd(lowEnd, origin), invTile),
@@ -570,6 +582,7 @@ private:
     T start_[2];
     bool inWindow_;
     bool refined_ = false;
+    int windowLinesClearBits_ = 0;  ///< linesClearBits of a frame in the window, from the set-up
 };
 
 }  // namespace tilesweep::detail

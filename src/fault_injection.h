@@ -53,6 +53,9 @@
 //                      in the first row is taken as free (free_move.h)
 //   SOLID_BLOCK_LAST_COLUMN_MASKED  the block read of the free-move test (blockHoldsNoSolidCell)
 //                      masks off its last column, so a solid cell there goes unseen (solid_block.h)
+//   POSITION_FROM_FLOAT_TIME  a sliding contact's position on a float frame estimated from the
+//                      frame time rounded to float, where its error bound needs the time rounded
+//                      to double (as a double frame's is) (fast_frame.h, contact_position.h)
 // Issue 20's four classes, one fault standing for each:
 //   PAIR_REFINEMENT_SWAPPED  double near-ties: the exact refinement of the pair comparison called
 //                      with its two sides swapped, so a nonzero sign inside the filter's band
@@ -79,6 +82,7 @@
     defined(TILESWEEP_FAULT_WALK_ENTRY_TIE_BY_HIGH_PART) ||                                               \
     defined(TILESWEEP_FAULT_FINAL_STEP_SIGN_IGNORED) ||                                                   \
     defined(TILESWEEP_FAULT_FREE_MOVE_FIRST_ROW_SKIPPED) ||                                               \
-    defined(TILESWEEP_FAULT_SOLID_BLOCK_LAST_COLUMN_MASKED)
+    defined(TILESWEEP_FAULT_SOLID_BLOCK_LAST_COLUMN_MASKED) ||                                            \
+    defined(TILESWEEP_FAULT_POSITION_FROM_FLOAT_TIME)
 #define TILESWEEP_FAULT_INJECTED 1
 #endif

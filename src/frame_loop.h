@@ -42,10 +42,10 @@
 //   walk    primaryAxis(), prepareWalk(p), secondaryCells(walk, entry, exit)
 //   box     start(a), nearEdge(a), farEdge(a), endOf(a), touchLow(a, e), touchHigh(a, e)
 //   tile    testTile(i, j) (axis_sweep.h's test on its numbers)
-//   result  roundTime(time, out), positionAt(a, time, out) (the box's coordinate on `a` at that
-//           time, rounded to nearest), roundEndsTogether(x, y, outX, outY) (both final
-//           coordinates at once, or false), and for roundFinal (final_rounding.h): false =
-//           undecided.
+//   result  roundTime(time, out), positionAt(a, time, frameTime, out) (the box's coordinate on
+//           `a` at that time, rounded to nearest; frameTime is roundTime's result for it),
+//           roundEndsTogether(x, y, outX, outY) (both final coordinates at once, or false), and for
+//           roundFinal (final_rounding.h): false = undecided.
 
 #include "axis_sweep.h"
 #include "cell_range.h"
@@ -201,7 +201,7 @@ private:
         if (!slides || storedFirst == 0) return true;
         const int free = first.axisHit[0] ? 1 : 0;
         T at = 0;
-        if (!m_.positionAt(free, first.time, at)) return false;
+        if (!m_.positionAt(free, first.time, first.store[0].time, at)) return false;  // finishStep's time
         for (std::int32_t k = 0; k < storedFirst; ++k)
             (free == 0 ? first.store[k].position.x : first.store[k].position.y) = at;
         return true;

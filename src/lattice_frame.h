@@ -176,8 +176,8 @@ public:
 
     /// The box's coordinate on `a` at time t, (low * den + num * disp) / den on the lattice,
     /// rounded to nearest, ties to even (a negative value that rounds to zero gives -0, as IEEE
-    /// rounding does); the start itself at t = 0.
-    bool positionAt(int a, const Time& t, T& out) const noexcept {
+    /// rounding does); the start itself at t = 0. The frame time (t rounded) is not needed here.
+    bool positionAt(int a, const Time& t, T /*frameTime*/, T& out) const noexcept {
         if (t.num.isZero()) {
             out = start_[a];
             return true;

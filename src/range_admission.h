@@ -114,7 +114,7 @@ namespace tilesweep::detail {
 /// The window's share of FastFrame::linesClearOf, for the frames in the map's window: every box
 /// input below 2^W in magnitude (the window's limit), so every end below 2^(W + 1) (an end lies
 /// between the start and the start plus the displacement). The proof of linesClearOf then needs
-/// W + 1 <= min(lineBit, the size's lowest bit) + p: per axis, windowLinesClear says whether the
+/// W + 1 <= min(lineBit, the size's lowest bit) + p: per axis, windowLinesClearBits says whether the
 /// grid's half holds; the size's half is that the size is a multiple of g = 2^(W + 1 - p), which
 /// FastFrame reads as fl(size + C) - C == size with C = 2^52 g (sizeGrainShift): a size in the
 /// window is below 2^W <= 2^52 g, so size + C lies in [C, 2C), where doubles are the multiples of
@@ -125,7 +125,8 @@ inline void setWindowLinesClear(MapRange& r, int windowExponent, int p) noexcept
 #else
     const int ends = windowExponent + 1;
 #endif
-    for (int a = 0; a < 2; ++a) r.windowLinesClear[a] = ends <= r.lineBit[a] + p;
+    r.windowLinesClearBits = 0;
+    for (int a = 0; a < 2; ++a) r.windowLinesClearBits |= (ends <= r.lineBit[a] + p ? 1 : 0) << a;
     const std::uint64_t shiftBits = static_cast<std::uint64_t>(ends - p + 52 + 1023)
                                     << 52;  // 2^(ends - p + 52)
     std::memcpy(&r.sizeGrainShift, &shiftBits, sizeof shiftBits);

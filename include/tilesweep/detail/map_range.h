@@ -16,7 +16,7 @@ namespace tilesweep::detail {
 /// those whose nonzero box inputs have magnitudes in [commonLeast, commonLimit) (the window).
 /// `windowMagnitude` per axis: for a frame in the window, a bound on the magnitudes that the fast
 /// path's cell estimates sum for their margins (src/fast_frame.h, FastFrame::magnitude).
-/// `windowLinesClear` per axis and `sizeGrainShift`: the window's share of the grid-line
+/// `windowLinesClearBits` (bit a for axis a) and `sizeGrainShift`: the window's share of the grid-line
 /// shortcut (src/range_admission.h, setWindowLinesClear).
 /// `lineBit` per axis: the exponent of the lowest set bit of the origin and the tile size, which
 /// every grid line is a multiple of (src/fast_frame.h, FastFrame::linesClearOf).
@@ -30,7 +30,7 @@ struct MapRange {
     float commonLimit = 0;
     double inverseTile[2] = {0, 0};
     double windowMagnitude[2] = {0, 0};
-    bool windowLinesClear[2] = {false, false};
+    int windowLinesClearBits = 0;
     double sizeGrainShift = 0;
 };
 
