@@ -56,6 +56,8 @@
 //   POSITION_FROM_FLOAT_TIME  a sliding contact's position on a float frame estimated from the
 //                      frame time rounded to float, where its error bound needs the time rounded
 //                      to double (as a double frame's is) (fast_frame.h, contact_position.h)
+//   SLIDE_SKIP_ONE_SHORT  a short move's slide (step 2) left untested when step 1 hit all but
+//                      one of the listed cells, not all of them (frame_loop.h)
 // Issue 20's four classes, one fault standing for each:
 //   PAIR_REFINEMENT_SWAPPED  double near-ties: the exact refinement of the pair comparison called
 //                      with its two sides swapped, so a nonzero sign inside the filter's band
@@ -83,6 +85,6 @@
     defined(TILESWEEP_FAULT_FINAL_STEP_SIGN_IGNORED) ||                                                   \
     defined(TILESWEEP_FAULT_FREE_MOVE_FIRST_ROW_SKIPPED) ||                                               \
     defined(TILESWEEP_FAULT_SOLID_BLOCK_LAST_COLUMN_MASKED) ||                                            \
-    defined(TILESWEEP_FAULT_POSITION_FROM_FLOAT_TIME)
+    defined(TILESWEEP_FAULT_POSITION_FROM_FLOAT_TIME) || defined(TILESWEEP_FAULT_SLIDE_SKIP_ONE_SHORT)
 #define TILESWEEP_FAULT_INJECTED 1
 #endif
