@@ -282,11 +282,8 @@ public:
             out = start_[a];
             return true;
         }
-#if defined(TILESWEEP_FAULT_POSITION_FROM_FLOAT_TIME)
-        const double q =
-            frameTime;  // deliberate fault: a float frame's time, rounded to float, as the quotient
-#else
-        double q = frameTime;
+        auto q = static_cast<double>(frameTime);
+#if !defined(TILESWEEP_FAULT_POSITION_FROM_FLOAT_TIME)  // the fault: a float frame's float time taken
         if constexpr (std::is_same<T, float>::value) q = t.num / t.den;  // num a double: one rounding
 #endif
         return roundPositionAtTime<T>(axis_[a].low, axis_[a].disp, t.num, t.den, q, refined_, out);
