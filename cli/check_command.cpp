@@ -7,7 +7,11 @@
 // With --resolver-cmd the claims about results run against an outside process instead
 // (properties/scene_runner.h): each worker starts the command once and keeps it, a crash or a
 // hang fails the scene it was given and the process is restarted, and RapidCheck shrinks a
-// failure as usual, asking the process again at every step.
+// failure as usual, asking the process again at every step. Before any worker starts, the
+// command is sent one known scene (properties/resolver_probe.h): a resolver that cannot answer
+// it ends the run at once with status 2. The workers are stopped at --seconds plus one
+// --resolver-timeout whatever the resolver does, and every failure of the resolver itself is
+// shown as it happens.
 //
 // RapidCheck keeps its state in process-wide statics, so the parallelism is processes: the
 // parent forks one worker per job before it starts any thread; each worker runs its share of
@@ -17,13 +21,16 @@
 #include "conformance_report.h"
 #include "outside_resolver_options.h"
 #include "property_suite.h"
+#include "resolver_probe.h"
 #include "scene_runner.h"
 #include "shard.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -50,6 +57,10 @@ constexpr double kOutsideShrinkSeconds = 10;
 /// How many failure messages a property keeps for the summary (the first ones: the shrunk
 /// counterexample, then counting rounds).
 constexpr std::size_t kMessagesPerProperty = 3;
+
+/// How many of the outside resolver's own failures are shown as they happen and kept for the
+/// summary (the rest are counted).
+constexpr int kResolverFailuresShown = 5;
 
 /// The coverage classes shown in the table, in order.
 const std::vector<std::string> kTableTags = {"hit",      "miss", "tie",        "touch-at-0",
@@ -95,6 +106,19 @@ void prefetchRound(const Property& property, const properties::RunOptions& run,
     process.prefetch(lines);
 }
 
+/// Writes one report line to the parent; a parent gone ends the worker.
+void sendLine(int out, const nlohmann::json& report) {
+    const std::string line = report.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+    if (write(out, line.data(), line.size()) < 0) _exit(3);
+}
+
+/// A worker stopped by the parent (the budget) or by the terminal (^C) takes its resolvers with it:
+/// they run in process groups of their own, which no signal to ours reaches.
+extern "C" void stopWorker(int signal) {
+    properties::killLiveResolverProcesses();
+    _exit(128 + signal);
+}
+
 /// A worker's rounds: properties index % jobs == worker, round after round with a new seed each
 /// round, until the deadline (at least one round), each run reported on `out`.
 void runRounds(const std::vector<const Property*>& work, int worker, int jobs, const CheckOptions& options,
@@ -107,6 +131,7 @@ void runRounds(const std::vector<const Property*>& work, int worker, int jobs, c
     std::unique_ptr<properties::ScopedSceneRunner<double>> useDouble;
     if (!options.resolverCmd.empty()) {
         process = std::make_shared<properties::ResolverProcess>(options.resolverCmd, options.resolverTimeout);
+        process->onFailure([out](const std::string& why) { sendLine(out, {{"resolver_failure", why}}); });
         floatRunner = std::make_unique<properties::OutsideSceneRunner<float>>(process);
         doubleRunner = std::make_unique<properties::OutsideSceneRunner<double>>(process);
         useFloat = std::make_unique<properties::ScopedSceneRunner<float>>(*floatRunner);
@@ -132,26 +157,26 @@ void runRounds(const std::vector<const Property*>& work, int worker, int jobs, c
                                 : options.resolverCmd.empty() ? 0.0
                                                               : kOutsideShrinkSeconds;
             if (run.shrink) run.corpusDir = corpusDirOf(options);  // one regression file a property
+            run.onFirstFailure = [out, k](const std::string& message, const std::string& scene) {
+                sendLine(out, {{"first_failure", message}, {"index", k}, {"scene", scene}});
+            };
             if (process) prefetchRound(*work[k], run, *process);
             const PropertyOutcome o = work[k]->run(run);
             if (!o.passed && !o.sceneLine.empty()) shrunk[k] = true;
             anyFailed = anyFailed || !o.passed;
-            const nlohmann::json report = {{"index", k},
-                                           {"passed", o.passed},
-                                           {"cases", o.cases},
-                                           {"failed_cases", o.failedCases},
-                                           {"tags", o.tagCounts},
-                                           {"message", o.message},
-                                           {"coverage", o.coverageShortfall},
-                                           {"corpus", o.corpusFile},
-                                           {"picture", o.pictureFile},
-                                           {"seconds", o.seconds},
-                                           {"seed", run.seed},
-                                           {"scene", o.sceneLine},
-                                           {"failure", o.failure}};
-            const std::string line =
-                report.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
-            if (write(out, line.data(), line.size()) < 0) _exit(3);
+            sendLine(out, {{"index", k},
+                           {"passed", o.passed},
+                           {"cases", o.cases},
+                           {"failed_cases", o.failedCases},
+                           {"tags", o.tagCounts},
+                           {"message", o.message},
+                           {"coverage", o.coverageShortfall},
+                           {"corpus", o.corpusFile},
+                           {"picture", o.pictureFile},
+                           {"seconds", o.seconds},
+                           {"seed", run.seed},
+                           {"scene", o.sceneLine},
+                           {"failure", o.failure}});
         }
         if ((anyFailed && !options.keepGoing) || std::chrono::steady_clock::now() >= deadline) break;
     }
@@ -159,6 +184,8 @@ void runRounds(const std::vector<const Property*>& work, int worker, int jobs, c
 
 [[noreturn]] void runWorker(const std::vector<const Property*>& work, int worker, int jobs,
                             const CheckOptions& options, const Shard& shard, int out) {
+    std::signal(SIGTERM, stopWorker);
+    std::signal(SIGINT, stopWorker);
     runRounds(work, worker, jobs, options, shard, out);  // its destructors stop the outside process
     close(out);
     _exit(0);
@@ -170,8 +197,11 @@ void printTable(const CheckRun& run) {
     std::printf(" %8s\n", "time s");
     for (const CheckRow& r : run.rows) {
         std::printf("%-52s %-7s %9d %5d %9.0f", r.property.c_str(),
-                    r.failures > 0 ? "FAILED" : (r.coverageShortfalls > 0 ? "coverage" : "ok"), r.cases,
-                    r.failures, r.seconds > 0 ? r.cases / r.seconds : 0.0);
+                    r.failures > 0             ? "FAILED"
+                    : r.runs == 0              ? "unrun"
+                    : r.coverageShortfalls > 0 ? "coverage"
+                                               : "ok",
+                    r.cases, r.failures, r.seconds > 0 ? r.cases / r.seconds : 0.0);
         for (const std::string& tag : kTableTags) {
             const auto it = r.tags.find(tag);
             const double share = r.cases > 0 && it != r.tags.end() ? 100.0 * it->second / r.cases : 0.0;
@@ -249,6 +279,7 @@ CLI::App* addCheckCommand(CLI::App& app, CheckOptions& options) {
 }
 
 CheckRun runChecks(const CheckOptions& options) {
+    const auto begun = std::chrono::steady_clock::now();
     Shard shard;
     std::string shardError;
     if (!parseShard(options.shard, shard, shardError)) throw std::invalid_argument(shardError);
@@ -274,6 +305,16 @@ CheckRun runChecks(const CheckOptions& options) {
             options.resolverCmd.empty() ? "" : ", resolver: ", options.resolverCmd.c_str());
         std::fflush(stdout);
     }
+    const bool outside = !options.resolverCmd.empty();
+    if (outside) {
+        const auto inScalar = [&](const char* scalar) {
+            return std::any_of(work.begin(), work.end(),
+                               [&](const Property* p) { return p->scalar == scalar; });
+        };
+        const std::string why = properties::probeResolver(options.resolverCmd, options.resolverTimeout,
+                                                          inScalar("float"), inScalar("double"));
+        if (!why.empty()) throw ResolverUnusable(why);
+    }
 
     std::vector<int> pipes;
     std::vector<pid_t> children;
@@ -294,13 +335,45 @@ CheckRun runChecks(const CheckOptions& options) {
 
     std::vector<std::string> pending(pipes.size());
     const auto started = std::chrono::steady_clock::now();
+    const auto elapsed = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    };
+    // An outside resolver may hang or crawl: the workers are stopped at the budget plus one
+    // timeout (SIGTERM; SIGKILL a second later for one that does not go), whatever it does.
+    const auto budgetEnd =
+        begun + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                    std::chrono::duration<double>(options.seconds + options.resolverTimeout));
+    int stopSignal = 0;
+    auto stopAt = budgetEnd;
     int runsDone = 0;
     std::size_t open = pipes.size();
     while (open > 0) {
         std::vector<pollfd> fds;
         for (int fd : pipes)
             if (fd >= 0) fds.push_back({fd, POLLIN, 0});
-        if (poll(fds.data(), fds.size(), -1) < 0) break;
+        int waitMs = -1;
+        if (outside && stopSignal != SIGKILL) {
+            const auto left =
+                std::chrono::ceil<std::chrono::milliseconds>(stopAt - std::chrono::steady_clock::now());
+            waitMs = static_cast<int>(std::max<long long>(0, left.count()));
+        }
+        const int ready = poll(fds.data(), fds.size(), waitMs);
+        if (ready < 0 && errno == EINTR) continue;
+        if (ready < 0) break;
+        if (ready == 0) {
+            stopSignal = stopSignal == 0 ? SIGTERM : SIGKILL;
+            for (std::size_t w = 0; w < children.size(); ++w)
+                if (pipes[w] >= 0) kill(children[w], stopSignal);
+            run.stoppedAtBudget = true;
+            stopAt = std::chrono::steady_clock::now() + std::chrono::seconds(1);
+            if (!options.quiet && stopSignal == SIGTERM) {
+                std::printf(
+                    "[%6.1f s] stopping the workers: --seconds %g plus --resolver-timeout %g have passed\n",
+                    elapsed(), options.seconds, options.resolverTimeout);
+                std::fflush(stdout);
+            }
+            continue;
+        }
         for (const pollfd& p : fds) {
             if (!(p.revents & (POLLIN | POLLHUP))) continue;
             char buffer[65536];
@@ -318,6 +391,28 @@ CheckRun runChecks(const CheckOptions& options) {
             while ((end = pending[w].find('\n')) != std::string::npos) {
                 const nlohmann::json r = nlohmann::json::parse(pending[w].substr(0, end));
                 pending[w].erase(0, end + 1);
+                if (r.contains("resolver_failure")) {
+                    const std::string why = r["resolver_failure"].get<std::string>();
+                    if (++run.resolverFailures <= kResolverFailuresShown) {
+                        run.resolverFailureMessages.push_back(why);
+                        if (!options.quiet) {
+                            std::printf("[%6.1f s] resolver failure: %s\n", elapsed(), why.c_str());
+                            if (run.resolverFailures == kResolverFailuresShown)
+                                std::printf("[%6.1f s] (further resolver failures are counted, not shown)\n",
+                                            elapsed());
+                            std::fflush(stdout);
+                        }
+                    }
+                    continue;
+                }
+                if (r.contains("first_failure")) {  // a run's first counterexample, before it shrinks
+                    CheckRow& row = run.rows[r["index"].get<std::size_t>()];
+                    if (row.firstFailure.empty()) {
+                        row.firstFailure = r["first_failure"].get<std::string>();
+                        row.firstFailureScene = r["scene"].get<std::string>();
+                    }
+                    continue;
+                }
                 CheckRow& row = run.rows[r["index"].get<std::size_t>()];
                 ++row.runs;
                 ++runsDone;
@@ -354,9 +449,7 @@ CheckRun runChecks(const CheckOptions& options) {
                         row.smallestFailure = r["message"].get<std::string>();  // a coverage shortfall
                 }
                 if (!options.quiet) {
-                    const double elapsed =
-                        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-                    std::printf("[%6.1f s] %-52s %s  %d cases  (run %d)\n", elapsed, row.property.c_str(),
+                    std::printf("[%6.1f s] %-52s %s  %d cases  (run %d)\n", elapsed(), row.property.c_str(),
                                 passed ? (coverage.empty() ? "ok    " : "coverage") : "FAILED",
                                 r["cases"].get<int>(), runsDone);
                     std::fflush(stdout);
@@ -367,7 +460,20 @@ CheckRun runChecks(const CheckOptions& options) {
     for (pid_t pid : children) {
         int status = 0;
         waitpid(pid, &status, 0);
-        run.workerFailed = run.workerFailed || !WIFEXITED(status) || WEXITSTATUS(status) != 0;
+        const bool clean = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+        const bool stoppedByUs =
+            run.stoppedAtBudget && ((WIFEXITED(status) && WEXITSTATUS(status) == 128 + SIGTERM) ||
+                                    (WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL));
+        run.workerFailed = run.workerFailed || !(clean || stoppedByUs);
+    }
+    // A run the budget stopped while it shrank keeps its first counterexample, unshrunk.
+    for (CheckRow& row : run.rows) {
+        if (row.runs > 0 || row.firstFailure.empty()) continue;
+        row.failures = 1;
+        row.messages.push_back(row.firstFailure + "\n(not shrunk: the budget ended while it shrank) scene: " +
+                               row.firstFailureScene);
+        row.smallestScene = row.firstFailureScene;
+        row.smallestFailure = row.firstFailure;
     }
     run.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return run;
@@ -379,6 +485,11 @@ int runCheckCommand(const CheckOptions& options) {
         run = runChecks(options);
     } catch (const std::invalid_argument& error) {
         std::cerr << "tilesweep check: " << error.what() << '\n';
+        return 2;
+    } catch (const ResolverUnusable& error) {
+        std::cerr << "tilesweep check: resolver unusable: " << options.resolverCmd
+                  << "\n  it did not answer the known scene (a box falling onto a floor): " << error.what()
+                  << '\n';
         return 2;
     }
     printTable(run);
@@ -401,6 +512,22 @@ int runCheckCommand(const CheckOptions& options) {
                 "\nINSUFFICIENT COVERAGE %s (the suite's scenes, not the resolver; the claim held):\n  %s\n",
                 row.property.c_str(), m.c_str());
     if (run.workerFailed) std::printf("\na worker process died; its properties are incomplete\n");
+    if (run.resolverFailures > 0) {
+        std::printf(
+            "\nthe resolver itself failed %d time%s (each fails the scenes it was asked); the first:\n",
+            run.resolverFailures, run.resolverFailures == 1 ? "" : "s");
+        for (const std::string& why : run.resolverFailureMessages) std::printf("  %s\n", why.c_str());
+    }
+    std::vector<std::string> unrun;
+    for (const CheckRow& row : run.rows)
+        if (row.runs == 0 && row.firstFailure.empty()) unrun.push_back(row.property);
+    if (!unrun.empty()) {
+        std::printf(
+            "\n%zu propert%s did not finish a round within --seconds %g plus --resolver-timeout %g "
+            "(give more --seconds):\n",
+            unrun.size(), unrun.size() == 1 ? "y" : "ies", options.seconds, options.resolverTimeout);
+        for (const std::string& name : unrun) std::printf("  %s\n", name.c_str());
+    }
     int cases = 0;  // every case judged: passed or failed
     for (const CheckRow& row : run.rows) cases += row.cases + row.failures;
     std::printf("\n%d cases in %.1f s on %d job%s: %.0f cases/s\n", cases, run.wallSeconds, run.jobs,
@@ -415,10 +542,14 @@ int runCheckCommand(const CheckOptions& options) {
                                (dir.empty() ? std::string(".") : dir) + "/conformance");
         std::printf("report: %s\n", options.report.c_str());
     }
-    const bool ok = failures == 0 && !run.workerFailed;
+    const bool ok = failures == 0 && !run.workerFailed && unrun.empty();
     const int total = static_cast<int>(run.rows.size());
-    std::printf("\n%d passed, %d failed\n", total - (ok ? 0 : std::max(failedProperties, 1)),
-                ok ? 0 : std::max(failedProperties, 1));
+    // A worker that died without a failing property still fails the run: count it as one.
+    const int failed = ok ? 0 : std::max(failedProperties, unrun.empty() ? 1 : 0);
+    const int unrunCount = static_cast<int>(unrun.size());
+    std::printf("\n%d passed, %d failed", total - failed - unrunCount, failed);
+    if (unrunCount > 0) std::printf(", %d unrun", unrunCount);
+    std::printf("\n");
     return ok ? 0 : 1;
 }
 

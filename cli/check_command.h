@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,10 @@ struct CheckRow {
     std::string smallestFailure;  ///< the claim's message on it
     std::string smallestCorpus;   ///< its regression file
     std::string smallestPicture;  ///< its picture
+    /// The first failing case seen, before shrinking: the counterexample of a run the budget
+    /// stopped while it shrank (then `runs` is 0).
+    std::string firstFailure;
+    std::string firstFailureScene;
 };
 
 /// A whole check: one row per property, in suite order.
@@ -63,13 +68,27 @@ struct CheckRun {
     bool workerFailed = false;
     int jobs = 1;
     double wallSeconds = 0;
+    /// With an outside resolver: the workers were stopped at --seconds plus --resolver-timeout;
+    /// a row with no run did not finish one.
+    bool stoppedAtBudget = false;
+    /// With an outside resolver: how often it failed a scene (crash, hang, extra output), and
+    /// the first of those reasons.
+    int resolverFailures = 0;
+    std::vector<std::string> resolverFailureMessages;
+};
+
+/// The outside resolver failed the known scene before the run (properties/resolver_probe.h):
+/// `tilesweep check` says why and exits with status 2.
+struct ResolverUnusable : std::runtime_error {
+    using std::runtime_error::runtime_error;
 };
 
 /// Declares the subcommand and its options.
 CLI::App* addCheckCommand(CLI::App& app, CheckOptions& options);
 
 /// Runs the properties the options select; prints progress unless `options.quiet`. Throws
-/// std::invalid_argument when no property matches.
+/// std::invalid_argument when no property matches, and ResolverUnusable when the outside
+/// resolver does not answer the known scene.
 [[nodiscard]] CheckRun runChecks(const CheckOptions& options);
 
 /// Runs it; returns the exit status.

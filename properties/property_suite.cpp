@@ -122,6 +122,7 @@ PropertyOutcome runClaimOnce(const std::string& propertyName, const Claim<T>& cl
             return;  // a rehearsal (scene_runner.h): the case's scenes are noted, not judged
         }
         if (!message.empty()) {
+            if (!failed && options.onFirstFailure) options.onFirstFailure(message, formatScene(g.scene));
             if (!options.shrink) {  // counting: every case is judged; the first failure is kept
                 if (!failed) {
                     lastFailure = g;

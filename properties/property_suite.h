@@ -29,6 +29,9 @@ struct RunOptions {
                                ///< smallest case found so far); 0: no limit
     bool shrink = true;        ///< false: count instead: every case is judged, the failures counted and the
                                ///< first one kept unshrunk (later rounds of a property already shrunk)
+    /// Told the claim's message and the scene line of the run's first failing case as soon as it
+    /// is found, before shrinking: a run stopped while it shrinks still has a counterexample.
+    std::function<void(const std::string& message, const std::string& sceneLine)> onFirstFailure;
 };
 
 /// The least cap on a run's cases when its floors need more than `cases` to settle: enough for

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "resolver_process.h"
 
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -62,12 +63,45 @@ std::string replaceAll(std::string command, const std::string& placeholder, cons
     return command;
 }
 
+/// The process groups of the resolvers running now (0: a free slot), for
+/// killLiveResolverProcesses. A worker runs one or two resolvers at a time; the slots are many.
+constexpr std::size_t kLiveSlots = 64;
+std::atomic<pid_t> liveGroups[kLiveSlots];
+static_assert(std::atomic<pid_t>::is_always_lock_free, "read from a signal handler");
+
+void noteLive(pid_t group) noexcept {
+    for (std::atomic<pid_t>& slot : liveGroups) {
+        pid_t free = 0;
+        if (slot.compare_exchange_strong(free, group)) return;
+    }
+}
+
+void noteGone(pid_t group) noexcept {
+    for (std::atomic<pid_t>& slot : liveGroups) {
+        pid_t expected = group;
+        if (slot.compare_exchange_strong(expected, 0)) return;
+    }
+}
+
+std::string secondsText(double seconds) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", seconds);
+    return text;
+}
+
 void keepTail(std::string& tail, const char* data, std::size_t size) {
     tail.append(data, size);
     if (tail.size() > kErrorTailBytes) tail.erase(0, tail.size() - kErrorTailBytes);
 }
 
 }  // namespace
+
+void killLiveResolverProcesses() noexcept {
+    for (std::atomic<pid_t>& slot : liveGroups) {
+        const pid_t group = slot.load();
+        if (group > 0) kill(-group, SIGKILL);
+    }
+}
 
 ResolverProcess::ResolverProcess(std::string command, double timeoutSeconds)
     : command_(std::move(command)), timeoutSeconds_(timeoutSeconds) {
@@ -89,6 +123,7 @@ ResolverProcess::~ResolverProcess() {
         for (int waited = 0; waited < kExitGraceMs; waited += 5) {
             int status = 0;
             if (waitpid(pid_, &status, WNOHANG) == pid_) {
+                noteGone(pid_);
                 pid_ = -1;
                 break;
             }
@@ -130,6 +165,7 @@ bool ResolverProcess::start(std::string& why) {
         _exit(127);
     }
     setpgid(pid, pid);  // also here: whichever of the two runs first
+    noteLive(pid);
     close(inPipe[0]);
     close(outPipe[1]);
     close(errPipe[1]);
@@ -152,6 +188,7 @@ void ResolverProcess::stop() noexcept {
         kill(pid_, SIGKILL);
         int status = 0;
         waitpid(pid_, &status, 0);
+        noteGone(pid_);
     }
     pid_ = -1;
     closeFd(in_);
@@ -166,6 +203,7 @@ std::string ResolverProcess::exitDescription() {
     for (int waited = 0; pid_ > 0 && waited <= kExitGraceMs; waited += 5) {
         if (waitpid(pid_, &status, WNOHANG) == pid_) {
             what = describeStatus(status);
+            noteGone(pid_);
             pid_ = -1;
             break;
         }
@@ -205,11 +243,12 @@ std::size_t ResolverProcess::exchangeFrom(const std::vector<std::string>& lines,
         const int ready = left.count() > 0 ? poll(fds, count, static_cast<int>(left.count())) : 0;
         if (ready < 0 && errno == EINTR) continue;
         if (ready <= 0) {
-            char seconds[32];
-            std::snprintf(seconds, sizeof seconds, "%g", timeoutSeconds_);
-            replies[next].failure = std::string("no answer within ") + seconds +
-                                    " s (--resolver-timeout): the resolver hangs on this scene" + errorTail();
-            return next;
+            failAfterHang(replies, next,
+                          "no answer within " + secondsText(timeoutSeconds_) +
+                              " s (--resolver-timeout): the resolver hangs on this scene, after answering " +
+                              std::to_string(next - from) + " of the " + std::to_string(lines.size() - from) +
+                              " scenes sent" + errorTail());
+            return lines.size();
         }
         if (writing >= 0 && fds[writing].revents != 0) {
             const std::size_t chunk = std::min<std::size_t>(text.size() - written, 65536);
@@ -266,6 +305,20 @@ std::size_t ResolverProcess::exchangeFrom(const std::vector<std::string>& lines,
     return lines.size();
 }
 
+void ResolverProcess::failAfterHang(std::vector<ResolverReply>& replies, std::size_t from,
+                                    const std::string& why) {
+    replies[from].failure = why;
+    for (std::size_t k = from + 1; k < replies.size(); ++k)
+        replies[k].failure = "not answered: the resolver hung on scene " + std::to_string(from + 1) +
+                             " of its batch (" + why + ")";
+    hung_ = true;
+    report(why);
+}
+
+void ResolverProcess::report(const std::string& why) const {
+    if (observer_) observer_(why);
+}
+
 std::string ResolverProcess::errorTail() const {
     std::string tail = errorTail_;
     while (!tail.empty() && (tail.back() == '\n' || tail.back() == '\r')) tail.pop_back();
@@ -310,7 +363,12 @@ std::vector<ResolverReply> ResolverProcess::send(const std::vector<std::string>&
     if (fileMode_) {
         for (std::size_t from = 0; from < lines.size();) {
             const std::size_t failed = runFileBatch(lines, from, replies);
+            if (hung_) {  // the rest of the batch is failed
+                hung_ = false;
+                break;
+            }
             if (failed >= lines.size()) break;
+            report(replies[failed].failure);
             from = failed + 1;  // the scene it failed on is answered by its failure; go on after it
         }
         return replies;
@@ -329,12 +387,19 @@ std::vector<ResolverReply> ResolverProcess::send(const std::vector<std::string>&
             if (!start(why)) {
                 for (std::size_t k = from; k < lines.size(); ++k)
                     replies[k].failure = "cannot start the resolver: " + why;
+                report(replies[from].failure);
                 return replies;
             }
         }
         const std::size_t failed = exchangeFrom(lines, from, replies);
+        if (hung_) {  // the rest of the batch is failed; the next batch gets a fresh process
+            hung_ = false;
+            stop();
+            break;
+        }
         if (failed >= lines.size()) break;
-        stop();  // crashed, hung or out of step: the next scene gets a fresh process
+        report(replies[failed].failure);
+        stop();  // crashed or out of step: the next scene gets a fresh process
         from = failed + 1;
     }
     return replies;
@@ -378,6 +443,7 @@ std::size_t ResolverProcess::runFileBatch(const std::vector<std::string>& lines,
         _exit(127);
     }
     setpgid(pid, pid);
+    noteLive(pid);
     close(output[1]);
     ++starts_;
     errorTail_.clear();
@@ -390,7 +456,10 @@ std::size_t ResolverProcess::runFileBatch(const std::vector<std::string>& lines,
     int status = 0;
     bool exited = false;
     char buffer[4096];
-    for (int fd = output[0]; !exited;) {
+    // Non-blocking: a process the command left behind may hold the pipe open after it exits.
+    int fd = output[0];
+    setNonBlocking(fd);
+    while (!exited) {
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
             deadline - std::chrono::steady_clock::now());
         if (left.count() <= 0) {
@@ -420,6 +489,7 @@ std::size_t ResolverProcess::runFileBatch(const std::vector<std::string>& lines,
             std::this_thread::sleep_for(std::chrono::milliseconds(2));
         }
         exited = waitpid(pid, &status, WNOHANG) == pid;
+        if (exited) noteGone(pid);
         if (exited && fd >= 0) {  // what it wrote last explains the exit best
             for (ssize_t n; (n = read(fd, buffer, sizeof buffer)) > 0;)
                 keepTail(errorTail_, buffer, static_cast<std::size_t>(n));
@@ -433,8 +503,9 @@ std::size_t ResolverProcess::runFileBatch(const std::vector<std::string>& lines,
         kill(-pid, SIGKILL);
         kill(pid, SIGKILL);
         waitpid(pid, &status, 0);
+        noteGone(pid);
     }
-    if (output[0] >= 0) close(output[0]);
+    if (fd >= 0) close(fd);
 
     // The answers written so far: whole lines, and a last line without its newline when the
     // resolver finished by itself.
@@ -462,13 +533,12 @@ std::size_t ResolverProcess::runFileBatch(const std::vector<std::string>& lines,
     if (answers.size() == sent) return lines.size();
     const std::size_t failed = from + answers.size();
     if (hung) {
-        char seconds[32];
-        std::snprintf(seconds, sizeof seconds, "%g", timeoutSeconds_);
-        replies[failed].failure =
-            std::string("no answer within ") + seconds +
-            " s (--resolver-timeout): the resolver hangs on this scene, after answering " +
-            std::to_string(answers.size()) + " of the " + std::to_string(sent) + " scenes of its batch" +
-            errorTail();
+        failAfterHang(replies, failed,
+                      "no answer within " + secondsText(timeoutSeconds_) +
+                          " s (--resolver-timeout): the resolver hangs on this scene, after answering " +
+                          std::to_string(answers.size()) + " of the " + std::to_string(sent) +
+                          " scenes of its batch" + errorTail());
+        return lines.size();
     } else {
         replies[failed].failure = "the resolver " + describeStatus(status) + " after answering " +
                                   std::to_string(answers.size()) + " of the " + std::to_string(sent) +

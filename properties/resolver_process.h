@@ -11,10 +11,11 @@
 //     of that file and of an answer file, and the answers are read from the answer file when it
 //     exits. For engines that are slow to start or cannot read a pipe (Godot 3).
 //
-// Either way a crash, a hang past the timeout, or output that does not come as one line per
-// scene fails the scene it was working on (the first one not answered), and a fresh process
-// takes the scenes after it: an engine's bad output is a per-scene result, never the end of the
-// run.
+// Either way a crash, or output that does not come as one line per scene, fails the scene it
+// was working on (the first one not answered), and a fresh process takes the scenes after it:
+// an engine's bad output is a per-scene result, never the end of the run. A hang past the
+// timeout fails every scene of the batch not yet answered (a fresh process would most likely
+// hang again, one timeout per scene), and the next batch gets a fresh process.
 //
 // Batches: `prefetch` sends many scenes at once and keeps their answers; a later `exchange` of a
 // kept line is answered from memory. `tilesweep check` prefetches every scene a property round
@@ -28,6 +29,7 @@
 // Not thread-safe: one per worker. POSIX only (fork, pipes, poll).
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <sys/types.h>
 #include <unordered_map>
@@ -40,6 +42,11 @@ struct ResolverReply {
     std::string line;     ///< the result line, without its newline (when `failure` is empty)
     std::string failure;  ///< why there is no line: crash, hang, extra output; empty when answered
 };
+
+/// Kills (SIGKILL) the process group of every resolver process this process has running, and
+/// those of file-mode runs under way. Async-signal-safe: for a SIGTERM or SIGINT handler, since a
+/// resolver runs in its own process group and a signal to ours does not reach it.
+void killLiveResolverProcesses() noexcept;
 
 /// A long-lived outside resolver process speaking JSON Lines over pipes.
 class ResolverProcess {
@@ -74,6 +81,9 @@ public:
     [[nodiscard]] int starts() const noexcept { return starts_; }
     /// Kills the process (and its process group) if it runs; the next batch starts a new one.
     void stop() noexcept;
+    /// Called with the reason each time the process fails a scene (crash, hang, extra output,
+    /// cannot start), so that a run can say what the resolver does as it happens.
+    void onFailure(std::function<void(const std::string&)> observer) { observer_ = std::move(observer); }
 
 private:
     /// Sends the lines to the resolver (no kept answers), one reply per line.
@@ -88,6 +98,9 @@ private:
     std::size_t exchangeFrom(const std::vector<std::string>& lines, std::size_t from,
                              std::vector<ResolverReply>& replies);
     std::string exitDescription();
+    /// Fails lines[from..] after a hang on lines[from]: it gets `why`, the others say so.
+    void failAfterHang(std::vector<ResolverReply>& replies, std::size_t from, const std::string& why);
+    void report(const std::string& why) const;
     [[nodiscard]] std::string errorTail() const;  ///< "; its standard error ends: ..." or empty
 
     std::string command_;
@@ -104,6 +117,8 @@ private:
     std::unordered_map<std::string, ResolverReply> kept_;
     std::uint64_t scenesSent_ = 0;
     std::uint64_t batchesSent_ = 0;
+    std::function<void(const std::string&)> observer_;
+    bool hung_ = false;  ///< the last exchange hung: the rest of its batch is failed
 };
 
 }  // namespace tilesweep::properties

@@ -1,19 +1,18 @@
 // SPDX-License-Identifier: MIT
 // The outside-resolver transport (resolver_process.h) against small shell resolvers: every
-// scene gets its answer or its own failure, in pipe and in file mode, whatever the resolver does
+// scene gets its answer or a failure, in pipe and in file mode, whatever the resolver does
 // (crash, hang, extra lines), and kept answers are not asked for again.
 #include "resolver_process.h"
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace tilesweep::properties {
 namespace {
-
-/// Scenes for the fake resolvers: their text says what the resolver does with them.
-const std::vector<std::string> kScenes = {"first", "second", "crash", "fourth", "hang", "sixth"};
 
 TEST(ResolverProcess, pipeModeAnswersOneLinePerSceneInOrder) {
     ResolverProcess process("while read -r line; do echo \"answer $line\"; done", 5);
@@ -51,27 +50,63 @@ TEST(ResolverProcess, fileModeCrashFailsOnlyTheSceneItCrashedOn) {
     EXPECT_EQ(process.starts(), 2);
 }
 
-TEST(ResolverProcess, fileModeHangFailsOnlyTheSceneItHungOn) {
+TEST(ResolverProcess, fileModeHangFailsTheRestOfItsBatchAndTheNextBatchIsAnswered) {
     ResolverProcess process(
         "while read -r line; do [ \"$line\" = hang ] && sleep 30; echo \"ok $line\" >> {out}; done < {in}",
         0.5);
+    std::vector<std::string> failures;
+    process.onFailure([&](const std::string& why) { failures.push_back(why); });
     const std::vector<ResolverReply> replies = process.exchange({"first", "hang", "third"});
     EXPECT_EQ(replies[0].line, "ok first");
-    EXPECT_NE(replies[1].failure.find("no answer within"), std::string::npos) << replies[1].failure;
-    EXPECT_EQ(replies[2].line, "ok third");
+    EXPECT_NE(replies[1].failure.find("no answer within 0.5 s"), std::string::npos) << replies[1].failure;
+    EXPECT_NE(replies[2].failure.find("hung on scene 2 of its batch"), std::string::npos)
+        << replies[2].failure;
+    ASSERT_EQ(failures.size(), 1u);  // one hang, told once
+    EXPECT_EQ(failures[0], replies[1].failure);
+    const std::vector<ResolverReply> next = process.exchange({"fourth"});
+    EXPECT_EQ(next[0].line, "ok fourth");
 }
 
-TEST(ResolverProcess, pipeModeCrashAndHangFailOnlyTheirScenes) {
+TEST(ResolverProcess, pipeModeCrashFailsItsSceneAndHangTheRestOfItsBatch) {
+    // A crash costs one scene and a restart; a hang costs one timeout for the whole batch, not
+    // one a scene.
     ResolverProcess process(
         "while read -r line; do case $line in crash) exit 4;; hang) sleep 30;; esac; echo \"ok $line\"; done",
         0.5);
-    const std::vector<ResolverReply> replies = process.exchange(kScenes);
-    ASSERT_EQ(replies.size(), kScenes.size());
+    std::vector<std::string> failures;
+    process.onFailure([&](const std::string& why) { failures.push_back(why); });
+    const std::vector<ResolverReply> replies =
+        process.exchange({"first", "second", "crash", "fourth", "hang", "sixth", "seventh"});
+    ASSERT_EQ(replies.size(), 7u);
     EXPECT_EQ(replies[0].line, "ok first");
     EXPECT_NE(replies[2].failure.find("exited with status 4"), std::string::npos) << replies[2].failure;
     EXPECT_EQ(replies[3].line, "ok fourth");
     EXPECT_NE(replies[4].failure.find("no answer within"), std::string::npos) << replies[4].failure;
-    EXPECT_EQ(replies[5].line, "ok sixth");
+    EXPECT_NE(replies[4].failure.find("after answering 1 of the 4 scenes sent"), std::string::npos)
+        << replies[4].failure;
+    for (std::size_t k = 5; k < 7; ++k)
+        EXPECT_NE(replies[k].failure.find("hung on scene 5 of its batch"), std::string::npos)
+            << replies[k].failure;
+    EXPECT_EQ(failures.size(), 2u);  // the crash and the hang
+    const std::vector<ResolverReply> next = process.exchange({"eighth"});
+    EXPECT_EQ(next[0].line, "ok eighth");
+    EXPECT_EQ(process.starts(), 3);
+}
+
+TEST(ResolverProcess, killLiveResolverProcessesEndsWhatTheResolverStarted) {
+    // The shell and the sleep it started are one process group; killing it ends both, so a
+    // worker stopped by a signal leaves nothing behind.
+    ResolverProcess process("sleep 30 & wait", 5);
+    std::vector<ResolverReply> replies;
+    std::thread killer([] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        killLiveResolverProcesses();
+    });
+    const auto began = std::chrono::steady_clock::now();
+    replies = process.exchange({"a"});
+    killer.join();
+    EXPECT_LT(std::chrono::steady_clock::now() - began, std::chrono::seconds(3));
+    EXPECT_NE(replies[0].failure.find("killed by signal 9"), std::string::npos) << replies[0].failure;
 }
 
 TEST(ResolverProcess, moreLinesThanScenesFailsTheLastScene) {
