@@ -132,6 +132,7 @@ void runRounds(const std::vector<const Property*>& work, int worker, int jobs, c
     if (!options.resolverCmd.empty()) {
         process = std::make_shared<properties::ResolverProcess>(options.resolverCmd, options.resolverTimeout);
         process->onFailure([out](const std::string& why) { sendLine(out, {{"resolver_failure", why}}); });
+        process->setBarrier(properties::knownSceneLine());
         floatRunner = std::make_unique<properties::OutsideSceneRunner<float>>(process);
         doubleRunner = std::make_unique<properties::OutsideSceneRunner<double>>(process);
         useFloat = std::make_unique<properties::ScopedSceneRunner<float>>(*floatRunner);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "outside_batch_resolver.h"
 
+#include "resolver_probe.h"
 #include "resolver_process.h"
 #include "result_reader.h"
 
@@ -13,7 +14,9 @@ namespace {
 class OutsideBatchResolver final : public audit::BatchResolver {
 public:
     OutsideBatchResolver(const std::string& command, double timeoutSeconds)
-        : process_(command, timeoutSeconds) {}
+        : process_(command, timeoutSeconds) {
+        process_.setBarrier(properties::knownSceneLine());
+    }
 
     std::vector<audit::EngineAnswer> resolve(const std::vector<Scene<float>>& scenes) override {
         std::vector<std::string> lines;

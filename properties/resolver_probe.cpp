@@ -22,6 +22,12 @@ std::string probeLine() {
     return formatScene(*parseScene<T>(kProbeScene).scene);
 }
 
+}  // namespace
+
+std::string knownSceneLine() { return probeLine<float>(); }
+
+namespace {
+
 template <class T>
 std::string judgeAnswer(const ResolverReply& reply, const char* scalar) {
     if (!reply.failure.empty()) return reply.failure;

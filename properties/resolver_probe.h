@@ -15,6 +15,9 @@
 
 namespace tilesweep::properties {
 
+/// The known scene's line (every number a hexfloat, so the same scene in float and in double).
+[[nodiscard]] std::string knownSceneLine();
+
 /// Empty when `command` answers the known scene in float (when `inFloat`) and in double (when
 /// `inDouble`) with a readable result line; else why not.
 [[nodiscard]] std::string probeResolver(const std::string& command, double timeoutSeconds, bool inFloat,

@@ -356,10 +356,58 @@ void ResolverProcess::prefetch(const std::vector<std::string>& lines) {
 }
 
 std::vector<ResolverReply> ResolverProcess::send(const std::vector<std::string>& lines) {
-    std::vector<ResolverReply> replies(lines.size());
-    if (lines.empty()) return replies;
+    if (lines.empty()) return {};
     scenesSent_ += lines.size();
     ++batchesSent_;
+    if (fileMode_ || barrier_.empty()) return sendPlain(lines);
+    // The batch between two barriers: in step, the two barrier answers are the same line.
+    std::vector<std::string> framed;
+    framed.reserve(lines.size() + 2);
+    framed.push_back(barrier_);
+    framed.insert(framed.end(), lines.begin(), lines.end());
+    framed.push_back(barrier_);
+    std::vector<ResolverReply> replies = sendPlain(framed);
+    const ResolverReply first = replies.front();
+    const ResolverReply last = replies.back();
+    replies.pop_back();
+    replies.erase(replies.begin());
+    if (!first.failure.empty() || !last.failure.empty() || first.line == last.line) {
+        // In step; or a crash or hang, already in the replies (a crash at the last barrier is
+        // the extra output that a line printed past the batch's end shows as).
+        if (!last.failure.empty() && first.failure.empty() &&
+            last.failure.find("more lines") != std::string::npos)
+            return attributeStrayLines(lines, first.line);
+        return replies;
+    }
+    return attributeStrayLines(lines, first.line);
+}
+
+std::vector<ResolverReply> ResolverProcess::attributeStrayLines(const std::vector<std::string>& lines,
+                                                                const std::string& barrierAnswer) {
+    // Some scene printed more than one line. Each scene again, followed by the barrier, to a
+    // fresh process: the scene whose barrier answer is not the barrier's printed the extra line.
+    stop();
+    std::vector<ResolverReply> replies(lines.size());
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+        const std::vector<ResolverReply> pair = sendPlain({lines[k], barrier_});
+        if (!pair[0].failure.empty()) {
+            replies[k] = pair[0];
+        } else if (pair[1].failure.empty() && pair[1].line == barrierAnswer) {
+            replies[k] = pair[0];
+        } else {
+            replies[k].failure = "the resolver printed more than one line for this scene (its first: '" +
+                                 pair[0].line.substr(0, 80) + "'; then: '" +
+                                 (pair[1].failure.empty() ? pair[1].line.substr(0, 80) : pair[1].failure) +
+                                 "')";
+            report(replies[k].failure);
+            stop();  // out of step: the next scene gets a fresh process
+        }
+    }
+    return replies;
+}
+
+std::vector<ResolverReply> ResolverProcess::sendPlain(const std::vector<std::string>& lines) {
+    std::vector<ResolverReply> replies(lines.size());
     if (fileMode_) {
         for (std::size_t from = 0; from < lines.size();) {
             const std::size_t failed = runFileBatch(lines, from, replies);

@@ -81,13 +81,25 @@ public:
     [[nodiscard]] int starts() const noexcept { return starts_; }
     /// Kills the process (and its process group) if it runs; the next batch starts a new one.
     void stop() noexcept;
+    /// Pipe mode: sends `line`, a scene the resolver answers, before and after every batch. A
+    /// scene that prints more than one line puts the second barrier answer out of step with the
+    /// first, whenever in the batch it prints it, and then that scene fails: every time, not
+    /// only when the extra line happens to arrive before the batch ends.
+    void setBarrier(std::string line) { barrier_ = std::move(line); }
     /// Called with the reason each time the process fails a scene (crash, hang, extra output,
     /// cannot start), so that a run can say what the resolver does as it happens.
     void onFailure(std::function<void(const std::string&)> observer) { observer_ = std::move(observer); }
 
 private:
-    /// Sends the lines to the resolver (no kept answers), one reply per line.
+    /// Sends the lines to the resolver (no kept answers), one reply per line; in pipe mode with a
+    /// barrier, between two barriers.
     std::vector<ResolverReply> send(const std::vector<std::string>& lines);
+    /// Sends the lines as they are.
+    std::vector<ResolverReply> sendPlain(const std::vector<std::string>& lines);
+    /// After a batch came back out of step: each scene again with the barrier after it, so that
+    /// the scenes that print more than one line fail and the others keep their answers.
+    std::vector<ResolverReply> attributeStrayLines(const std::vector<std::string>& lines,
+                                                   const std::string& barrierAnswer);
     /// File mode: runs the command once on lines[from..]; fills their replies; returns the index
     /// of the first line not answered (== lines.size() when all were), with its failure set.
     std::size_t runFileBatch(const std::vector<std::string>& lines, std::size_t from,
@@ -118,7 +130,8 @@ private:
     std::uint64_t scenesSent_ = 0;
     std::uint64_t batchesSent_ = 0;
     std::function<void(const std::string&)> observer_;
-    bool hung_ = false;  ///< the last exchange hung: the rest of its batch is failed
+    bool hung_ = false;    ///< the last exchange hung: the rest of its batch is failed
+    std::string barrier_;  ///< pipe mode: the scene sent around every batch; empty: none
 };
 
 }  // namespace tilesweep::properties

@@ -116,6 +116,29 @@ TEST(ResolverProcess, moreLinesThanScenesFailsTheLastScene) {
     EXPECT_NE(replies[1].failure.find("more lines"), std::string::npos) << replies[1].failure;
 }
 
+TEST(ResolverProcess, aStrayLineFailsItsSceneEveryTimeWhereverItIsPrinted) {
+    // "stray" prints a line before its answer, "late" one after it: without a barrier the late
+    // one arrives after the batch has been judged, and is caught only when it happens to come in
+    // time. With one, both are that scene's failure in every batch, and the others are answered.
+    ResolverProcess process(
+        "while read -r line; do [ \"$line\" = stray ] && echo junk; echo \"ok $line\"; "
+        "[ \"$line\" = late ] && { sleep 0.05; echo late-junk; }; done",
+        5);
+    process.setBarrier("barrier");
+    for (int round = 0; round < 3; ++round) {
+        const std::vector<ResolverReply> replies = process.exchange({"a", "stray", "c", "late"});
+        ASSERT_EQ(replies.size(), 4u);
+        EXPECT_EQ(replies[0].line, "ok a") << replies[0].failure;
+        EXPECT_NE(replies[1].failure.find("more than one line for this scene"), std::string::npos)
+            << replies[1].failure << replies[1].line;
+        EXPECT_EQ(replies[2].line, "ok c") << replies[2].failure;
+        EXPECT_NE(replies[3].failure.find("more than one line for this scene"), std::string::npos)
+            << replies[3].failure << replies[3].line;
+        const std::vector<ResolverReply> clean = process.exchange({"d"});
+        EXPECT_EQ(clean[0].line, "ok d") << clean[0].failure;
+    }
+}
+
 TEST(ResolverProcess, missingAnswerFileFailsEveryScene) {
     ResolverProcess process("true {in} {out}", 5);
     const std::vector<ResolverReply> replies = process.exchange({"a", "b"});
