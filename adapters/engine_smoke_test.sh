@@ -4,8 +4,8 @@
 # answer, and an error exactly where tilesweep gives one; that it answers the same through a pipe
 # as from a file; then that tilesweep reads back every answer to a valid scene through
 # --resolver-cmd (file mode for Godot, pipe mode for Rapier). Exits 77 (ctest's skip code here) with
-# "skipped: ..." when the engine's runtime is not installed: the adapters install it on demand,
-# a test does not.
+# "skipped: ..." when the engine's runtime is not installed (adapters/ENGINE/install.sh --check);
+# `bash scripts/setup.sh --engines` installs it, a test does not.
 #
 #   engine_smoke_test.sh godot|rapier TILESWEEP SCENES...
 set -euo pipefail
@@ -14,17 +14,17 @@ tilesweep=$2
 shift 2
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 case $engine in
-    godot) runtime=godot3-server ;;
-    rapier) runtime=node ;;
+    godot|rapier) ;;
     *) echo "unknown engine '$engine' (godot or rapier)" >&2; exit 2 ;;
 esac
-if ! command -v "$runtime" >/dev/null; then
-    echo "skipped: $runtime not installed (the $engine adapter installs it on first use)"
+status=0
+missing=$(bash "$here/$engine/install.sh" --check 2>&1) || status=$?
+if [ "$status" -eq 3 ]; then
+    echo "skipped: $missing"
     exit 77
-fi
-if [ "$engine" = rapier ] && ! command -v npm >/dev/null && [ ! -d "$here/rapier/node_modules" ]; then
-    echo "skipped: npm not installed, and adapters/rapier/node_modules is absent"
-    exit 77
+elif [ "$status" -ne 0 ]; then
+    echo "adapters/$engine/install.sh --check failed (status $status): $missing"
+    exit 1
 fi
 
 work=$(mktemp -d)

@@ -10,8 +10,8 @@
 #   bash scripts/bench_adapters.sh                  # 20 s each, 1000 cases a property per round
 #   bash scripts/bench_adapters.sh --seconds 60 --cases 2000 --out /tmp/adapters.md
 #
-# Needs the dev build (bash scripts/test.sh builds it); the Godot and Rapier adapters install
-# their runtimes on first use (adapters/README.md).
+# Needs the dev build (bash scripts/test.sh builds it) and, for Godot and Rapier, their runtimes
+# (bash scripts/setup.sh --engines; adapters/README.md).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 seconds=20

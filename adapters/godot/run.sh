@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Runs the Godot adapter (adapter.gd on Debian's godot3-server, headless). Installs godot3-server
-# through the project's setup on first use. Godot's banner and warnings go to stderr.
+# Runs the Godot adapter (adapter.gd on Debian's godot3-server, headless). Godot's banner and
+# warnings go to stderr. Without godot3-server it exits 3 at once, saying on stderr what to run
+# (`bash scripts/setup.sh --engines godot`, which runs install.sh).
 #
 #   run.sh IN OUT    file mode: answers the scene lines of IN into OUT, one line per scene, and
 #                    exits (tilesweep's --resolver-cmd "adapters/godot/run.sh {in} {out}")
@@ -14,9 +15,7 @@ if [ $# -ne 0 ] && [ $# -ne 2 ]; then
     echo "usage: $0 [IN OUT]   (file mode with IN OUT, else scene lines on stdin, answers on stdout)" >&2
     exit 2
 fi
-if ! command -v godot3-server >/dev/null; then
-    TILESWEEP_EXTRA_PACKAGES=godot3-server bash "$here/../../scripts/setup.sh" >&2
-fi
+bash "$here/install.sh" --check || exit
 if [ $# -eq 2 ]; then
     in="$(realpath -m -- "$1")"
     out="$(realpath -m -- "$2")"
