@@ -23,6 +23,7 @@
 #include "check_command.h"
 #include "conformance_report.h"
 #include "outside_batch_resolver.h"
+#include "resolver_probe.h"
 
 #include "tilesweep/audit/engine_rates.h"
 
@@ -192,6 +193,13 @@ int runConformance(const AuditOptions& options) {
                 }
             const std::string command = options.resolverCmds[k];
             const double timeout = options.resolverTimeout;
+            if (const std::string why = properties::probeResolver(command, timeout, true, false);
+                !why.empty()) {
+                std::cerr << "tilesweep audit: resolver unusable: " << command
+                          << "\n  it did not answer the known scene (a box falling onto a floor): " << why
+                          << '\n';
+                return 2;
+            }
             engines.push_back({label,
                                [command, timeout] { return makeOutsideBatchResolver(command, timeout); },
                                tolerance, note});
