@@ -235,6 +235,13 @@ CLI::App* addCheckCommand(CLI::App& app, CheckOptions& options) {
                      "Check an outside resolver: a shell command that reads scene lines on stdin and writes\n"
                      "one result line per scene, as `tilesweep resolve` does")
         ->type_name("CMD");
+    command
+        ->add_option("--resolver-lib", options.resolverLib,
+                     "Check your resolver in a shared library exporting ts_user_resolve_f (and _d for\n"
+                     "--scalar double; include/tilesweep/resolver_lib.h), run in a child process")
+        ->type_name("PATH.so")
+        ->check(CLI::ExistingFile)
+        ->excludes("--resolver-cmd");
     addResolverTimeoutOption(command, options.resolverTimeout);
     addClaimsOption(command, options.claims);
     command
@@ -480,7 +487,23 @@ CheckRun runChecks(const CheckOptions& options) {
     return run;
 }
 
-int runCheckCommand(const CheckOptions& options) {
+std::string libraryCommand(const std::string& library, const std::string& scalar) {
+    const auto quoted = [](const std::string& text) {
+        std::string q = "'";
+        for (const char c : text) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+        return q + "'";
+    };
+    std::error_code ignored;
+    const std::string self = std::filesystem::read_symlink("/proc/self/exe", ignored).string();
+    return "exec " + quoted(self.empty() ? std::string("tilesweep") : self) + " resolve --resolver " +
+           quoted("lib:" + std::filesystem::absolute(library).string()) + " --scalar " + scalar;
+}
+
+int runCheckCommand(const CheckOptions& given) {
+    CheckOptions options = given;
+    if (!options.resolverLib.empty())
+        options.resolverCmd =
+            libraryCommand(options.resolverLib, options.scalar.empty() ? "float" : options.scalar);
     CheckRun run;
     try {
         run = runChecks(options);

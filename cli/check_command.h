@@ -25,6 +25,7 @@ struct CheckOptions {
     std::string corpusDir;          ///< where failing cases are written; empty: the default
                                     ///< (properties/corpus, or resolver-corpus for an outside resolver)
     std::string resolverCmd;        ///< outside resolver (sh -c); empty: tilesweep's own
+    std::string resolverLib;        ///< a user's resolver library: run as the command libraryCommand gives
     double resolverTimeout = 10;    ///< seconds without an answer before the process counts as hung
     std::string claims = "all";     ///< "all" or "safety" (leaves out the bit-for-bit claims)
     std::string scalar;             ///< "float" or "double"; empty: both (built-in), float (outside)
@@ -93,6 +94,11 @@ CLI::App* addCheckCommand(CLI::App& app, CheckOptions& options);
 
 /// Runs it; returns the exit status.
 int runCheckCommand(const CheckOptions& options);
+
+/// The outside resolver command that serves a --resolver-lib library: this executable's
+/// `resolve --resolver lib:PATH --scalar SCALAR` (exec: a signal that kills it is seen as
+/// such), every word quoted for sh.
+[[nodiscard]] std::string libraryCommand(const std::string& library, const std::string& scalar);
 
 /// A check run as JSON (`tilesweep check --json`), and back; readCheckJson throws
 /// std::runtime_error on a malformed file.

@@ -31,12 +31,13 @@
 #if TILESWEEP_HAVE_AUDIT && TILESWEEP_HAVE_CHECK
 #include "merge_command.h"
 #endif
+#include "library_resolver.h"
 #include "resolvers.h"
 
 #include "tilesweep/scene/scene.h"
 
-#ifndef TILESWEEP_VERSION
-#error "TILESWEEP_VERSION must be defined by the build (cli/CMakeLists.txt does)"
+#ifndef TILESWEEP_CLI_VERSION
+#error "TILESWEEP_CLI_VERSION must be defined by the build (cli/CMakeLists.txt does)"
 #endif
 
 namespace {
@@ -157,6 +158,16 @@ int runResolveCommand(const ResolveOptions& options) {
     const std::string scalar = forced.empty() ? options.scalar : forced;
     Resolver<float> floatResolver = findResolver<float>(options.resolver);
     Resolver<double> doubleResolver = findResolver<double>(options.resolver);
+    if (scalar == "double" ? !doubleResolver : !floatResolver) {
+        // Only a library can lack one scalar's function: checkResolverName accepted the name.
+        const std::string path =
+            options.resolver.substr(std::string(tilesweep::cli::kLibraryResolverPrefix).size());
+        std::cerr << "tilesweep resolve: --resolver " << options.resolver << ": "
+                  << (scalar == "double" ? tilesweep::cli::loadLibraryResolver<double>(path).error
+                                         : tilesweep::cli::loadLibraryResolver<float>(path).error)
+                  << '\n';
+        return kExitUsage;
+    }
 #if TILESWEEP_HAVE_CHECK
     // --resolver-cmd: the outside process answers; its lines are read back exactly and printed
     // again, so a malformed answer becomes an error line naming what is wrong.
@@ -313,7 +324,7 @@ int main(int argc, char** argv) {
         "Every decision (which tiles are hit, when, on which face) is exact; final positions are\n"
         "the exact ones rounded toward the start, so a box never ends inside a tile.",
         "tilesweep"};
-    app.set_version_flag("--version", std::string("tilesweep ") + TILESWEEP_VERSION);
+    app.set_version_flag("--version", std::string("tilesweep ") + TILESWEEP_CLI_VERSION);
     app.require_subcommand(1);
     app.footer("Run 'tilesweep <command> --help' for a command's input and output formats.");
 

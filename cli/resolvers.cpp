@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "resolvers.h"
 
+#include "library_resolver.h"
+
 #include <cstdint>
 #include <string>
 
@@ -41,6 +43,8 @@ std::vector<FrameResult<T>> framesOf(const Frames& substepFrames) {
 template <class T>
 Resolver<T> findResolver(const std::string& name) {
     if (name == "core" || name == "float" || name == "double") return &runScene<T>;
+    if (name.rfind(kLibraryResolverPrefix, 0) == 0)
+        return loadLibraryResolver<T>(name.substr(std::string(kLibraryResolverPrefix).size())).resolve;
 #if TILESWEEP_HAVE_ORACLE
     if (name == "exact") return &oracle::resolveSceneExactRounded<T>;
     if (name == "seed") return [](const Scene<T>& s) { return oracle::resolveSceneSeed<T>(s); };
@@ -63,6 +67,12 @@ Resolver<T> findResolver(const std::string& name) {
 }
 
 std::string checkResolverName(const std::string& name) {
+    if (name.rfind(kLibraryResolverPrefix, 0) == 0) {
+        const std::string path = name.substr(std::string(kLibraryResolverPrefix).size());
+        const LibraryLoad<float> inFloat = loadLibraryResolver<float>(path);
+        if (inFloat.resolve || loadLibraryResolver<double>(path).resolve) return {};
+        return inFloat.error;
+    }
     if (findResolver<float>(name)) return {};
     return "unknown resolver '" + name +
            "': expected core, float, double"
@@ -72,7 +82,7 @@ std::string checkResolverName(const std::string& name) {
 #if TILESWEEP_HAVE_AUDIT
            ", twin or grid"
 #endif
-        ;
+           ", or lib:PATH (a shared library exporting ts_user_resolve_f or ts_user_resolve_d)";
 }
 
 std::string scalarForcedBy(const std::string& name) {

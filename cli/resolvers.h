@@ -11,6 +11,7 @@
 //   substep-float:N  the game-style substep loop, positions accumulated in --scalar
 //   seed             the seed article's algorithm as written (a baseline, not a reference)
 //   twin, grid       the game-style swept-AABB baselines of baselines/ (plain T, lean)
+//   lib:PATH         a user's resolver in a shared library (include/tilesweep/resolver_lib.h)
 
 #include "tilesweep/scene/scene.h"
 

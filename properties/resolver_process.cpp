@@ -39,7 +39,7 @@ std::string describeStatus(int status) {
     if (WIFSIGNALED(status)) {
         const int s = WTERMSIG(status);
         const char* name = strsignal(s);
-        return "killed by signal " + std::to_string(s) +
+        return "was killed by signal " + std::to_string(s) +
                (name ? std::string(" (") + name + ")" : std::string());
     }
     return "stopped";
