@@ -3,8 +3,11 @@
 // flaws, and every generated scene is replayable (it survives formatScene/parseScene bit for bit).
 #include "tilesweep/audit/audit.h"
 
+#include "scene_judge.h"
+
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -138,6 +141,63 @@ TEST(Audit, figuresDoNotDependOnTheNumberOfJobs) {
             EXPECT_EQ(one.cells[i][c].failures, three.cells[i][c].failures);
             EXPECT_EQ(one.cells[i][c].positionUlps, three.cells[i][c].positionUlps);
         }
+}
+
+/// A 6 x 4 map of 16 px tiles with a solid block in its top-left 3 x 2 cells, and a 40 x 24 px
+/// box at (4, 4) inside all six of them, moving right into empty space for two frames.
+Scene<float> startsInsideSixTiles() {
+    Scene<float> s;
+    s.map = {
+        {0, 0}, {16, 16}, 6, 4, {1, 1, 1, 0, 0, 0, 1, 1, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}};
+    s.box = {{4, 4}, {40, 24}};
+    s.moves = {{6, 0}, {6, 0}};
+    return s;
+}
+
+/// The judge's verdict on tilesweep's own frames with `rearrange` applied to every frame's start
+/// overlaps.
+template <class Rearrange>
+judge::SceneVerdict judgeRearranged(Rearrange rearrange) {
+    const Scene<float> scene = startsInsideSixTiles();
+    std::vector<FrameResult<float>> frames = runScene(scene);
+    for (FrameResult<float>& f : frames) {
+        EXPECT_EQ(f.startOverlaps.size(), 6u);
+        rearrange(f.startOverlaps);
+    }
+    judge::SceneJudge<float> judge(scene);
+    return judge.judge(frames);
+}
+
+bool failed(const judge::SceneVerdict& v, Metric m) { return v.failed[static_cast<std::size_t>(m)]; }
+
+TEST(SceneJudge, startOverlapsInAnyOrderAreBitExact) {
+    EXPECT_FALSE(failed(judgeRearranged([](std::vector<Cell>&) {}), Metric::Inexact));
+    EXPECT_FALSE(failed(judgeRearranged([](std::vector<Cell>& c) { std::reverse(c.begin(), c.end()); }),
+                        Metric::Inexact));
+    EXPECT_FALSE(failed(judgeRearranged([](std::vector<Cell>& c) {
+                            std::sort(c.begin(), c.end(),
+                                      [](Cell a, Cell b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
+                        }),
+                        Metric::Inexact));
+}
+
+TEST(SceneJudge, startOverlapsMissingTwiceOrWrongAreInexact) {
+    const auto reversedThen = [](auto change) {
+        return [change](std::vector<Cell>& c) {
+            std::reverse(c.begin(), c.end());
+            change(c);
+        };
+    };
+    EXPECT_TRUE(
+        failed(judgeRearranged(reversedThen([](std::vector<Cell>& c) { c.pop_back(); })), Metric::Inexact));
+    EXPECT_TRUE(failed(judgeRearranged(reversedThen([](std::vector<Cell>& c) { c.back() = c.front(); })),
+                       Metric::Inexact));
+    EXPECT_TRUE(failed(judgeRearranged(reversedThen([](std::vector<Cell>& c) { c.push_back(c.front()); })),
+                       Metric::Inexact));
+    EXPECT_TRUE(failed(judgeRearranged(reversedThen([](std::vector<Cell>& c) {
+                           c.back() = {5, 3};
+                       })),
+                       Metric::Inexact));
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -96,11 +97,13 @@ double breachQuantile(const BreachHistogram& histogram, double q) noexcept {
     if (total == 0) return 0;
     const auto needed = static_cast<std::uint64_t>(std::ceil(q * static_cast<double>(total)));
     std::uint64_t seen = 0;
-    for (std::size_t k = 0; k < kBreachBins; ++k) {
+    // The top bin gathers every breach from 2^kTopBreachBinade up, infinite ones too: its
+    // nominal upper edge bounds nothing, so a quantile there has no finite bound.
+    for (std::size_t k = 0; k + 1 < kBreachBins; ++k) {
         seen += histogram[k];
         if (seen >= needed) return k == 0 ? 0.0 : std::ldexp(1.0, static_cast<int>(k) - 41);
     }
-    return std::ldexp(1.0, static_cast<int>(kBreachBins) - 41);
+    return std::numeric_limits<double>::infinity();
 }
 
 std::uint64_t RateCell::trials(Metric m) const noexcept {
@@ -234,6 +237,22 @@ RatesResult measureRates(const RatesConfig& config, const std::vector<EngineSpec
 
 // ---- JSON -----------------------------------------------------------------------------------
 
+namespace {
+
+/// A largest breach as JSON: the number, or "inf" (JSON has no infinity; nlohmann would write
+/// null, which reads back as no number at all).
+nlohmann::ordered_json distanceJson(double pixels) {
+    if (std::isinf(pixels) && pixels > 0) return "inf";
+    return pixels;
+}
+
+double distanceOf(const nlohmann::json& j) {
+    if (j.is_string() && j.get<std::string>() == "inf") return std::numeric_limits<double>::infinity();
+    return j.get<double>();
+}
+
+}  // namespace
+
 std::string ratesJson(const RatesResult& r) {
     nlohmann::ordered_json j;
     j["kind"] = "tilesweep-rates";
@@ -259,9 +278,9 @@ std::string ratesJson(const RatesResult& r) {
                 cj["failures"][name] = c.failures[m];
                 if (c.firstFailure[m] != RateCell::kNoCase) cj["first_failure"][name] = c.firstFailure[m];
             }
-            cj["inside_depth"] = c.insideDepth;
-            cj["shortfall"] = c.shortfall;
-            cj["overshoot"] = c.overshoot;
+            cj["inside_depth"] = distanceJson(c.insideDepth);
+            cj["shortfall"] = distanceJson(c.shortfall);
+            cj["overshoot"] = distanceJson(c.overshoot);
             // Histograms as {bin: count}, the bins that are not empty.
             for (std::size_t b = 0; b < kBreachCount; ++b) {
                 nlohmann::ordered_json bins = nlohmann::ordered_json::object();
@@ -313,9 +332,9 @@ RatesResult readRatesJson(const std::string& text) {
                     if (cj.contains("first_failure") && cj["first_failure"].contains(name))
                         c.firstFailure[m] = cj["first_failure"][name].get<std::uint64_t>();
                 }
-                c.insideDepth = cj.at("inside_depth").get<double>();
-                c.shortfall = cj.at("shortfall").get<double>();
-                c.overshoot = cj.at("overshoot").get<double>();
+                c.insideDepth = distanceOf(cj.at("inside_depth"));
+                c.shortfall = distanceOf(cj.at("shortfall"));
+                c.overshoot = distanceOf(cj.at("overshoot"));
                 const auto& histograms = cj.at("breach_histograms");
                 if (histograms.size() != kBreachCount)
                     throw std::runtime_error("breach_histograms: 3 expected");
@@ -340,21 +359,54 @@ RatesResult readRatesJson(const std::string& text) {
     }
 }
 
-RatesResult mergeRates(const std::vector<RatesResult>& shards) {
+namespace {
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
+    return "[" + text + "]";
+}
+
+std::vector<std::string> familyNames(const RatesResult& r) {
+    std::vector<std::string> names;
+    for (const Family& f : r.families) names.push_back(f.name);
+    return names;
+}
+
+}  // namespace
+
+RatesResult mergeRates(const std::vector<RatesResult>& shards, const std::vector<std::string>& labels) {
     if (shards.empty()) throw std::invalid_argument("nothing to merge");
+    const auto label = [&](std::size_t k) {
+        return k < labels.size() ? labels[k] : "shard file " + std::to_string(k + 1);
+    };
     RatesResult merged = shards.front();
+    std::vector<std::size_t> from(merged.shards.size(), 0);  // which shard file gave each index
     for (std::size_t k = 1; k < shards.size(); ++k) {
         const RatesResult& s = shards[k];
-        if (s.config.seed != merged.config.seed || s.config.cases != merged.config.cases ||
-            s.config.shardCount != merged.config.shardCount || s.engines != merged.engines ||
-            s.families.size() != merged.families.size())
-            throw std::invalid_argument(
-                "shard " + std::to_string(k + 1) +
-                " is of another run (seed, cases, shard count, engines or families differ)");
+        const auto differs = [&](const std::string& field, const std::string& got, const std::string& want) {
+            return std::invalid_argument(label(k) + ": " + field + " " + got + " differs from " + label(0) +
+                                         "'s " + want + " (a shard of another run)");
+        };
+        if (s.config.seed != merged.config.seed)
+            throw differs("seed", std::to_string(s.config.seed), std::to_string(merged.config.seed));
+        if (s.config.cases != merged.config.cases)
+            throw differs("cases", std::to_string(s.config.cases), std::to_string(merged.config.cases));
+        if (s.config.shardCount != merged.config.shardCount)
+            throw differs("shard count", std::to_string(s.config.shardCount),
+                          std::to_string(merged.config.shardCount));
+        if (s.engines != merged.engines) throw differs("engines", joined(s.engines), joined(merged.engines));
+        if (familyNames(s) != familyNames(merged))
+            throw differs("families", joined(familyNames(s)), joined(familyNames(merged)));
         for (const int index : s.shards) {
-            if (std::find(merged.shards.begin(), merged.shards.end(), index) != merged.shards.end())
-                throw std::invalid_argument("shard " + std::to_string(index) + " is given twice");
+            const auto seen = std::find(merged.shards.begin(), merged.shards.end(), index);
+            if (seen != merged.shards.end())
+                throw std::invalid_argument(
+                    label(k) + ": shard " + std::to_string(index) + "/" +
+                    std::to_string(merged.config.shardCount) + " is given twice (also in " +
+                    label(from[static_cast<std::size_t>(seen - merged.shards.begin())]) + ")");
             merged.shards.push_back(index);
+            from.push_back(k);
         }
         for (std::size_t e = 0; e < merged.cells.size(); ++e)
             for (std::size_t f = 0; f < merged.cells[e].size(); ++f) merged.cells[e][f].merge(s.cells[e][f]);
@@ -475,7 +527,10 @@ std::string ratesMarkdown(const RatesResult& r) {
                   " px";
         md +=
             ". Each cell: the largest breach, then the tolerance under which the claim holds on 99% of the "
-            "scenes (an upper bound, a power of two: the breaches are counted in binades):\n\n"
+            "scenes (an upper bound, a power of two: the breaches are counted in binades; \"≥ 2^" +
+            std::to_string(kTopBreachBinade) +
+            "\" when it lies in the top binade, which also holds every larger breach, infinite ones "
+            "included):\n\n"
             "| distance | deepest inside a tile | farthest short of touching | farthest past the exact end "
             "|\n"
             "|---|---:|---:|---:|\n";
@@ -483,10 +538,14 @@ std::string ratesMarkdown(const RatesResult& r) {
             if (r.families[f].kind != FamilyKind::Far) continue;
             const RateCell& c = r.cells[e][f];
             const double tol = r.documentedTolerance[e];
+            // The largest as measured ("inf" when infinite); the 99% bound a bin's upper edge,
+            // or, in the top bin, which has no upper edge, the bin's lower one as "≥ 2^39".
             auto cell = [&](double largest, Breach b) {
                 const double p99 = breachQuantile(c.breaches[static_cast<std::size_t>(b)], 0.99);
-                return pixels(largest) + (tol > 0 && largest > tol ? " (over)" : "") +
-                       "; 99%: " + (p99 == 0 ? std::string("0") : "≤ " + pixels(p99));
+                const std::string bound = p99 == 0          ? std::string("0")
+                                          : std::isinf(p99) ? "≥ 2^" + std::to_string(kTopBreachBinade)
+                                                            : "≤ " + pixels(p99);
+                return pixels(largest) + (tol > 0 && largest > tol ? " (over)" : "") + "; 99%: " + bound;
             };
             md += "| " + distanceName(r.families[f].magnitude) + " | " +
                   cell(c.insideDepth, Breach::InsideDepth) + " | " + cell(c.shortfall, Breach::Shortfall) +

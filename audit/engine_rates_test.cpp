@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <string>
 
 namespace tilesweep::audit {
@@ -91,6 +93,31 @@ TEST(BreachHistogram, binsByBinadeAndGivesQuantilesAsUpperEdges) {
     EXPECT_EQ(breachQuantile(h, 0.98), 0.0);
     EXPECT_EQ(breachQuantile(h, 0.99), 0.5);
     EXPECT_EQ(breachQuantile(h, 1.0), 8.0);
+    // The top bin has no upper edge: a breach there bounds nothing finite.
+    h[breachBin(std::numeric_limits<double>::infinity())] = 1;
+    EXPECT_EQ(breachBin(std::numeric_limits<double>::infinity()), kBreachBins - 1);
+    EXPECT_EQ(breachBin(std::ldexp(1.0, kTopBreachBinade)), kBreachBins - 1);
+    EXPECT_EQ(breachBin(std::ldexp(1.0, kTopBreachBinade - 1)), kBreachBins - 2);
+    EXPECT_EQ(breachQuantile(h, 1.0), std::numeric_limits<double>::infinity());
+}
+
+TEST(EngineRates, aBreachBeyondTheTopBinadeIsReportedAsItIs) {
+    RatesResult r = run();
+    RateCell* far = nullptr;
+    for (std::size_t f = 0; f < r.families.size(); ++f)
+        if (r.families[f].kind == FamilyKind::Far) far = &r.cells[2][f];  // flaky: 0.08 px documented
+    ASSERT_NE(far, nullptr);
+    far->insideDepth = std::numeric_limits<double>::infinity();
+    far->overshoot = 0x1p50;
+    far->breaches[static_cast<std::size_t>(Breach::InsideDepth)] = BreachHistogram{};
+    far->breaches[static_cast<std::size_t>(Breach::InsideDepth)][kBreachBins - 1] = far->scenes;
+    const RatesResult back = readRatesJson(ratesJson(r));
+    EXPECT_EQ(ratesJson(back), ratesJson(r));
+    const std::string md = ratesMarkdown(back);
+    EXPECT_NE(md.find("| inf (over); 99%: ≥ 2^" + std::to_string(kTopBreachBinade) + " |"), std::string::npos)
+        << md;
+    EXPECT_NE(md.find("1.13e+15"), std::string::npos) << md;  // 2^50 as it is, not "≤ 2^40"
+    EXPECT_EQ(md.find("≤ 5.5e+11"), std::string::npos);
 }
 
 TEST(EngineRates, tilesweepReadsZeroAndTheTwinDoesNot) {
@@ -138,6 +165,14 @@ TEST(EngineRates, shardsAddUpToTheWholeRun) {
         }
     EXPECT_THROW((void)mergeRates({run(0, 3), run(0, 3)}), std::invalid_argument);
     EXPECT_THROW((void)mergeRates({run(0, 3), run(0, 2)}), std::invalid_argument);
+    RatesResult renamed = run(1, 3);  // as many families, one named otherwise: another run
+    renamed.families.back().name += "-renamed";
+    try {
+        (void)mergeRates({run(0, 3), renamed}, {"a.json", "b.json"});
+        ADD_FAILURE() << "a shard with another family merged";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("b.json: families"), std::string::npos) << e.what();
+    }
 }
 
 TEST(EngineRates, jsonReadsBackAsWritten) {

@@ -28,8 +28,9 @@
 //     exact end, exactly when rounding back up would carry the far edge over a grid line; and
 //     whenever the rule asks for that value, the position is not the one rounded back up.
 //   - StartOverlaps, WellFormed: the reported start overlaps are exactly the solid tiles the box
-//     overlaps at the start (by row, then column); the status, counts, contact cells, normals
-//     and frame times are of the shape the contract gives them.
+//     overlaps at the start, each once, in any order (the contract leaves the order free); the
+//     status, counts, contact cells, normals and frame times are of the shape the contract gives
+//     them.
 //
 // These are the rules every result must obey, not the whole contract: which tile is hit, and
 // the exact time, are the oracles' business (oracle/, properties/).
@@ -132,8 +133,27 @@ void listOverlaps(const TileMapView<T>& map, const MapEdges<T>& edges, Vec2<T> p
 struct SafetyScratch {
     std::vector<Cell> atStart;
     std::vector<Cell> atEnd;
+    std::vector<Cell> listed;       ///< a reported list, sorted (sameCellsInAnyOrder)
     std::uint64_t roundedDown = 0;  ///< axes the rounding rule's exception rounded down, so far
 };
+
+/// Whether cell `a` comes before `b` by row, then column: listOverlaps' order.
+[[nodiscard]] inline bool comesBeforeByRow(Cell a, Cell b) noexcept {
+    return a.j != b.j ? a.j < b.j : a.i < b.i;
+}
+
+/// Whether the `count` cells at `listed` are the cells of `exact` in any order, each listed once.
+/// The contract leaves the order of started_overlapping free but not its content: a cell left
+/// out, or listed twice, is another answer. `exact` is by row, then column with no cell twice
+/// (listOverlaps, the exact oracle's startOverlaps); `sorted` receives the listed cells in that
+/// order, reused so that a long run allocates nothing per frame.
+[[nodiscard]] inline bool sameCellsInAnyOrder(const std::vector<Cell>& exact, const Cell* listed,
+                                              std::size_t count, std::vector<Cell>& sorted) {
+    if (count != exact.size()) return false;
+    sorted.assign(listed, listed + count);
+    std::sort(sorted.begin(), sorted.end(), comesBeforeByRow);
+    return std::equal(sorted.begin(), sorted.end(), exact.begin());
+}
 
 /// The first solid tile the box at `end` overlaps that it did not overlap at `start` (same size),
 /// or nothing. `scratch.atStart` and `scratch.atEnd` are left holding both lists.
@@ -287,8 +307,8 @@ template <class T>
     if (std::optional<Cell> entered = findNewOverlap(frame.map, edges, frame.start, r.position, scratch))
         return {SafetyRule::EndsInsideNewTile,
                 "ends inside solid tile " + describeCell(*entered) + " it did not start in"};
-    const bool sameStart = scratch.atStart.size() == static_cast<std::size_t>(r.startOverlapCount) &&
-                           std::equal(scratch.atStart.begin(), scratch.atStart.end(), frame.startOverlaps);
+    const bool sameStart = sameCellsInAnyOrder(scratch.atStart, frame.startOverlaps,
+                                               static_cast<std::size_t>(r.startOverlapCount), scratch.listed);
     if (!sameStart)
         return {SafetyRule::StartOverlaps, "reported start overlaps (" + std::to_string(r.startOverlapCount) +
                                                ") differ from the exact ones (" +

@@ -12,12 +12,14 @@ namespace tilesweep::properties {
 using namespace claim_support;
 
 /// A frame whose move is zero changes nothing and touches nothing, and reports as start overlaps
-/// exactly the solid tiles the box overlaps (checked apart from the resolver). The scene's box
+/// exactly the solid tiles the box overlaps (checked apart from the resolver), each once, in any
+/// order (the contract leaves the order of started_overlapping free). The scene's box
 /// rarely starts inside a tile, so the claim also places it a quarter tile into the first solid
 /// tile of the map and asks the same there; both scenes go to the resolver in one call.
 template <class T>
 std::string zeroMoveChangedNothing(const Scene<T>& scene, const std::vector<FrameResult<T>>& frames) {
     std::vector<Cell> overlapping;
+    std::vector<Cell> sorted;
     checks::listOverlaps(scene.map.view(), checks::computeEdges(scene.map.view()), scene.box.pos,
                          scene.box.size, overlapping);
     for (std::size_t f = 0; f < frames.size(); ++f) {
@@ -26,8 +28,8 @@ std::string zeroMoveChangedNothing(const Scene<T>& scene, const std::vector<Fram
             return "frame " + std::to_string(f) + ": a zero move changed the position";
         if (!frames[f].contacts.empty())
             return "frame " + std::to_string(f) + ": a zero move reported a contact";
-        if (frames[f].startOverlaps.size() != overlapping.size() ||
-            !std::equal(overlapping.begin(), overlapping.end(), frames[f].startOverlaps.begin()))
+        if (!checks::sameCellsInAnyOrder(overlapping, frames[f].startOverlaps.data(),
+                                         frames[f].startOverlaps.size(), sorted))
             return "frame " + std::to_string(f) + ": start overlaps differ from the tiles the box overlaps";
     }
     return {};

@@ -69,15 +69,21 @@ inline const std::vector<Metric> kRateMetrics = {Metric::Tunnel,    Metric::Insi
 [[nodiscard]] std::vector<Family> rateFamilies();
 
 /// A histogram of breach distances, in binades: bin 0 holds the scenes that did not break the
-/// claim; bin k >= 1 those whose breach lay in [2^(k-42), 2^(k-41)) pixels (clamped at both
-/// ends). Mergeable, so that shards give the quantiles one run would.
+/// claim; bin k >= 1 those whose breach lay in [2^(k-42), 2^(k-41)) pixels, except at the ends:
+/// bin 1 holds every breach below 2^-40 px, and the top bin every breach of 2^kTopBreachBinade px
+/// or more, infinite ones included, so it has no upper edge. Mergeable, so that shards give the
+/// quantiles one run would.
 constexpr std::size_t kBreachBins = 82;
 using BreachHistogram = std::array<std::uint64_t, kBreachBins>;
+/// The top bin holds the breaches of 2^kTopBreachBinade px (2^39) or more.
+constexpr int kTopBreachBinade = static_cast<int>(kBreachBins) - 43;
 
 /// The bin of a breach of `pixels` (0 or less: no breach).
 [[nodiscard]] std::size_t breachBin(double pixels) noexcept;
 /// The smallest tolerance, as a bin's upper edge, under which the claim holds on at least the
-/// share `q` of the histogram's scenes: 0 when that many did not break it.
+/// share `q` (in [0, 1]) of the histogram's scenes: 0 when that many did not break it, and
+/// +infinity when it lies in the top bin, which has no upper edge (a breach there may be any
+/// size, or infinite).
 [[nodiscard]] double breachQuantile(const BreachHistogram& histogram, double q) noexcept;
 
 /// The breach distances measured per scene, in the order of RateCell::breaches.
@@ -89,9 +95,9 @@ struct RateCell {
     std::uint64_t scenes = 0;
     std::array<std::uint64_t, kMetricCount> failures{};
     std::uint64_t restingEligible = 0;  ///< scenes with a frame that starts resting on a floor (snag)
-    double insideDepth = 0;             ///< the largest depth inside a tile, pixels
-    double shortfall = 0;               ///< the largest distance short of touching, pixels
-    double overshoot = 0;               ///< the largest distance past the exact end, pixels
+    double insideDepth = 0;             ///< the largest depth inside a tile, pixels (may be infinite)
+    double shortfall = 0;               ///< the largest distance short of touching, pixels (likewise)
+    double overshoot = 0;               ///< the largest distance past the exact end, pixels (likewise)
     std::array<BreachHistogram, kBreachCount> breaches{};  ///< per Breach, every scene's distance
     /// The lowest case index that broke each metric (regenerate it with generateScene), or none.
     std::array<std::uint64_t, kMetricCount> firstFailure;
@@ -134,12 +140,16 @@ struct RatesResult {
 [[nodiscard]] RatesResult measureRates(const RatesConfig& config, const std::vector<EngineSpec>& engines);
 
 /// A scalar's view of results in JSON text, and back; throws std::runtime_error on a malformed file.
+/// An infinite largest breach is written as the string "inf" (JSON has no infinity).
 [[nodiscard]] std::string ratesJson(const RatesResult& result);
 [[nodiscard]] RatesResult readRatesJson(const std::string& text);
 
-/// Adds up shards of the same run (same seed, cases, engines and families); throws
-/// std::invalid_argument when they are not, or when a shard appears twice.
-[[nodiscard]] RatesResult mergeRates(const std::vector<RatesResult>& shards);
+/// Adds up shards of the same run (same seed, cases, shard count, engines and families, names in
+/// order); throws std::invalid_argument when they are not, or when a shard appears twice, naming
+/// the shard by `labels[k]` (its file, say) when given, else as "shard file k+1", and the field
+/// that differs.
+[[nodiscard]] RatesResult mergeRates(const std::vector<RatesResult>& shards,
+                                     const std::vector<std::string>& labels = {});
 
 /// The Markdown section: per engine the rate table (families by metrics, share and interval)
 /// and the tolerance table (distance by claim), with the first failing scene of each metric.
