@@ -147,8 +147,8 @@ TEST(Audit, figuresDoNotDependOnTheNumberOfJobs) {
 /// box at (4, 4) inside all six of them, moving right into empty space for two frames.
 Scene<float> startsInsideSixTiles() {
     Scene<float> s;
-    s.map = {
-        {0, 0}, {16, 16}, 6, 4, {1, 1, 1, 0, 0, 0, 1, 1, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}};
+    s.map = {{0, 0}, {16, 16}, 6, 4, {1, 1, 1, 0, 0, 0, 1, 1, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+             {}};
     s.box = {{4, 4}, {40, 24}};
     s.moves = {{6, 0}, {6, 0}};
     return s;

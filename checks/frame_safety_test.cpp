@@ -55,7 +55,8 @@ TEST(FrameSafety, acceptsStartOverlapsInAnyOrder) {
     EXPECT_FALSE(f.check(reversed)) << f.check(reversed).detail;
     // By column, then row: the order a checker sorting by (i, j) would expect.
     std::vector<Cell> byColumn = f.exact();
-    std::sort(byColumn.begin(), byColumn.end(), [](Cell a, Cell b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
+    std::sort(byColumn.begin(), byColumn.end(),
+              [](Cell a, Cell b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
     ASSERT_NE(byColumn, f.exact());
     EXPECT_FALSE(f.check(byColumn)) << f.check(byColumn).detail;
     std::vector<Cell> rotated = f.exact();
@@ -96,7 +97,8 @@ TEST(FrameSafety, sameCellsInAnyOrderReusesItsStorage) {
     std::vector<Cell> sorted;
     ASSERT_TRUE(sameCellsInAnyOrder(exact, reversed.data(), reversed.size(), sorted));
     const Cell* storage = sorted.data();
-    for (int k = 0; k < 3; ++k) EXPECT_TRUE(sameCellsInAnyOrder(exact, reversed.data(), reversed.size(), sorted));
+    for (int k = 0; k < 3; ++k)
+        EXPECT_TRUE(sameCellsInAnyOrder(exact, reversed.data(), reversed.size(), sorted));
     EXPECT_EQ(sorted.data(), storage);  // no allocation once it holds the longest list
     EXPECT_TRUE(sameCellsInAnyOrder({}, nullptr, 0, sorted));
     EXPECT_FALSE(sameCellsInAnyOrder(exact, reversed.data(), 0, sorted));

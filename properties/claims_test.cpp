@@ -4,6 +4,7 @@
 // leaves the order of started_overlapping free; with a cell left out, listed twice or replaced
 // they fail.
 #include "claims.h"
+
 #include "scene_runner.h"
 
 #include <gtest/gtest.h>
@@ -23,7 +24,8 @@ using Rearrange = std::function<void(std::vector<Cell>&)>;
 class RearrangingRunner final : public SceneRunner<float> {
 public:
     explicit RearrangingRunner(Rearrange rearrange) : rearrange_(std::move(rearrange)) {}
-    std::vector<std::vector<FrameResult<float>>> runAll(const std::vector<const Scene<float>*>& scenes) override {
+    std::vector<std::vector<FrameResult<float>>> runAll(
+        const std::vector<const Scene<float>*>& scenes) override {
         std::vector<std::vector<FrameResult<float>>> all;
         for (const Scene<float>* scene : scenes) {
             std::vector<FrameResult<float>> frames = runScene(*scene);

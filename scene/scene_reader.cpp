@@ -122,7 +122,8 @@ template <class T>
     return std::string("byte 0x") + kHex[byte >> 4] + kHex[byte & 0xf];
 }
 
-// "map.rows": equal-length strings of '#' (solid) and '.' (empty), the top row first.
+// "map.rows": equal-length strings of '#' (solid), '-' (one-way) and '.' (empty), the top row
+// first. map.oneWay is filled only when some cell is '-'.
 // No rows, or rows of length zero, make an empty map: every cell is empty, and its size is
 // stored as 0 x 0 so that no edge of a tile that does not exist has to be representable.
 template <class T>
@@ -134,7 +135,7 @@ void readRows(const JsonValue& rows, TileMap<T>& map) {
         const JsonValue& row = rows.items[j];
         if (row.kind != Kind::String)
             fail(indexed(field, j),
-                 std::string("expected a string of '#' and '.', got ") + detail::describe(row.kind));
+                 std::string("expected a string of '#', '-' and '.', got ") + detail::describe(row.kind));
         if (row.text.size() != rows.items.front().text.size())
             fail(field, "ragged rows (row " + std::to_string(j) + " has length " +
                             std::to_string(row.text.size()) + ", row 0 has " +
@@ -152,15 +153,22 @@ void readRows(const JsonValue& rows, TileMap<T>& map) {
     map.columns = static_cast<std::int32_t>(columns);
     map.rows = static_cast<std::int32_t>(rowCount);
     map.solid.reserve(columns * rowCount);
+    bool anyOneWay = false;
     for (std::size_t j = 0; j < rowCount; ++j) {
         const std::string& row = rows.items[j].text;
         for (std::size_t i = 0; i < columns; ++i) {
-            if (row[i] != '#' && row[i] != '.')
+            if (row[i] != '#' && row[i] != '.' && row[i] != '-')
                 fail(indexed(field, j), "unknown tile character " + describeTileCharacter(row[i]) +
-                                            " at column " + std::to_string(i) + " (expected '#' or '.')");
+                                            " at column " + std::to_string(i) +
+                                            " (expected '#', '-' or '.')");
             map.solid.push_back(row[i] == '#' ? 1 : 0);
+            anyOneWay = anyOneWay || row[i] == '-';
         }
     }
+    if (!anyOneWay) return;
+    map.oneWay.reserve(columns * rowCount);
+    for (std::size_t j = 0; j < rowCount; ++j)
+        for (const char c : rows.items[j].text) map.oneWay.push_back(c == '-' ? 1 : 0);
 }
 
 // Refuses a map unless the core resolver accepts it: in particular every tile edge must be a T,

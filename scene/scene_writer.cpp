@@ -52,18 +52,23 @@ void appendIntPair(std::string& out, int a, int b) {
     out += ']';
 }
 
-// The rows of a map as strings of '#' and '.', the top row first.
+// The rows of a map as strings of '#', '-' and '.', the top row first.
 template <class T>
 void appendRows(std::string& out, const TileMap<T>& map) {
     if (map.columns < 0 || map.rows < 0 ||
         map.solid.size() != static_cast<std::size_t>(map.columns) * static_cast<std::size_t>(map.rows))
         throw std::invalid_argument("formatScene: map.solid does not hold columns*rows cells");
+    if (!map.oneWay.empty() && map.oneWay.size() != map.solid.size())
+        throw std::invalid_argument("formatScene: map.oneWay is neither empty nor as long as map.solid");
     const auto columns = static_cast<std::size_t>(map.columns);
     out += '[';
     for (std::size_t j = 0; j < static_cast<std::size_t>(map.rows); ++j) {
         if (j != 0) out += ", ";
         out += '"';
-        for (std::size_t i = 0; i < columns; ++i) out += map.solid[j * columns + i] != 0 ? '#' : '.';
+        for (std::size_t i = 0; i < columns; ++i) {
+            const std::size_t k = j * columns + i;
+            out += map.solid[k] != 0 ? '#' : !map.oneWay.empty() && map.oneWay[k] != 0 ? '-' : '.';
+        }
         out += '"';
     }
     out += ']';

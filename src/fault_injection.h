@@ -58,6 +58,8 @@
 //                      to double (as a double frame's is) (fast_frame.h, contact_position.h)
 //   SLIDE_SKIP_ONE_SHORT  a short move's slide (step 2) left untested when step 1 hit all but
 //                      one of the listed cells, not all of them (frame_loop.h)
+//   ONE_WAY_SIDE_BLOCKS  a one-way tile entered through a side blocks on x (frame_loop.h)
+//   ONE_WAY_TIE_ON_X   an exact corner landing on a one-way tile blocks on x, not y (frame_loop.h)
 // Issue 20's four classes, one fault standing for each:
 //   PAIR_REFINEMENT_SWAPPED  double near-ties: the exact refinement of the pair comparison called
 //                      with its two sides swapped, so a nonzero sign inside the filter's band
@@ -85,6 +87,7 @@
     defined(TILESWEEP_FAULT_FINAL_STEP_SIGN_IGNORED) ||                                                   \
     defined(TILESWEEP_FAULT_FREE_MOVE_FIRST_ROW_SKIPPED) ||                                               \
     defined(TILESWEEP_FAULT_SOLID_BLOCK_LAST_COLUMN_MASKED) ||                                            \
-    defined(TILESWEEP_FAULT_POSITION_FROM_FLOAT_TIME) || defined(TILESWEEP_FAULT_SLIDE_SKIP_ONE_SHORT)
+    defined(TILESWEEP_FAULT_POSITION_FROM_FLOAT_TIME) || defined(TILESWEEP_FAULT_SLIDE_SKIP_ONE_SHORT) || \
+    defined(TILESWEEP_FAULT_ONE_WAY_SIDE_BLOCKS) || defined(TILESWEEP_FAULT_ONE_WAY_TIE_ON_X)
 #define TILESWEEP_FAULT_INJECTED 1
 #endif

@@ -26,6 +26,13 @@
 // Cell ranges may be supersets (the fast path estimates them with a certified margin): every
 // cell in them gets the exact tile test.
 //
+// One-way tiles (CONTRACT.md, "One-way tiles"). They can block only when the box moves
+// down (oneWayDown_), and then only on y: in step 1 when the tile test says BlocksOnY or Tie
+// (testOneWayAndRecord), in a step 2 sliding down exactly as a solid tile would, and never in a
+// move or slide along x. Otherwise they are empty cells: start overlaps, the exposed-face rule
+// and every other read of `solid` ignore them. A frame that cannot meet one (no one-way cell in
+// the map, or no motion down) takes the same paths as before, one flag test aside.
+//
 // What an arithmetic `Arith` provides (LatticeFrame, FastFrame):
 //   types   Scalar (float or double), Coord (a box coordinate or a distance), Edge (a tile
 //           edge), Time (a ratio {Coord num, Speed den}), Motion (one axis of the box's
@@ -77,6 +84,7 @@ public:
     /// (the caller then solves the frame on the lattice). `placeContactPositions` false leaves
     /// the stored contacts' positions unwritten (frame_solve.h, ContactPositions).
     bool run(const ResolveOutput<T>& out, ResolveResult<T>& result, bool placeContactPositions) noexcept {
+        oneWayDown_ = m_.map().oneWay != nullptr && m_.axis(1).dir > 0;
         // A short move: the solid cells of the swept bounds, listed once, serve the start
         // overlaps and both steps (collectNear); otherwise the walk.
         const bool nearOnly = collectNear(std::max<std::int32_t>(out.contactCapacity, 0));
@@ -239,7 +247,8 @@ private:
         return m_.axis(a).overlapsAtStart(m_.edge(a, k), m_.edge(a, k + 1));
     }
 
-    /// Solid cells the box overlaps (open) at the start, by row then column: a solid byte in the
+    /// Solid cells the box overlaps (open) at the start, by row then column (one-way cells are
+    /// never listed; their bytes are in `oneWay`, not here): a solid byte in the
     /// candidate range is the only thing that costs an exact test.
     std::int32_t listStartOverlaps(Cell* store, std::int32_t capacity) const noexcept {
         const CellRange cx = m_.startCells(0);
@@ -318,8 +327,11 @@ private:
             for (std::int64_t j = range.first; j <= range.last; ++j) {
                 const std::int64_t ci = p == 0 ? k : j;
                 const std::int64_t cj = p == 0 ? j : k;
-                if (!solidInMap(ci, cj)) continue;
-                testAndRecord(ci, cj, hits);
+                if (solidInMap(ci, cj)) {
+                    testAndRecord(ci, cj, hits);
+                } else if (oneWayDown_ && oneWayInMap(ci, cj)) {
+                    testOneWayAndRecord(ci, cj, hits);
+                }
             }
         }
     }
@@ -332,6 +344,20 @@ private:
         const TileMapView<T>& map = m_.map();
         assert(i >= 0 && i < map.columns && j >= 0 && j < map.rows);
         return map.solid[j * map.columns + i] != 0;
+    }
+
+    /// Whether cell (i, j), which lies in the map and is not solid, is one-way; only asked when
+    /// oneWayDown_ (so the map has a `oneWay` layer).
+    [[gnu::always_inline]] bool oneWayInMap(std::int64_t i, std::int64_t j) const noexcept {
+        const TileMapView<T>& map = m_.map();
+        assert(oneWayDown_ && !solidInMap(i, j));
+        return map.oneWay[j * map.columns + i] != 0;
+    }
+
+    /// Whether a one-way cell can block a move along `a` alone: only one along y, moving down.
+    template <int a>
+    [[gnu::always_inline]] bool oneWayBlocksAlong() const noexcept {
+        return a == 1 && oneWayDown_;
     }
 
     /// The secondary cells the broadphase tests: those of the walk's secondary range, or the rows
@@ -370,6 +396,35 @@ private:
         add(hits, {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)}, a, test.time,
             touchEdge(a, a == 0 ? i : j));
         return false;
+    }
+
+    /// Tests one-way tile (i, j) in a step 1 moving down (oneWayDown_) and records it when it
+    /// blocks: the contract's rule for one-way tiles, stated once. It blocks on its top face
+    /// alone, at entry_y, when the box's bottom is at or above the tile's top at the start and the
+    /// box reaches the top while it overlaps the tile on x, or exactly as it starts to
+    /// (entry_y >= entry_x). That is the tile test's BlocksOnY, or its Tie (a corner landing
+    /// blocks on y): either means 0 <= entry_y < 1, entry_y >= entry_x and I meets (0, 1)
+    /// (axis_sweep.h), and with r_y > 0, entry_y >= 0 is bottom <= top. Every other verdict is
+    /// no block: BlocksOnX is an entry through a side, StartsOverlapping a box already inside.
+    void testOneWayAndRecord(std::int64_t i, std::int64_t j, Hits& hits) noexcept {
+        const auto test = m_.testTile(i, j);
+#if defined(TILESWEEP_FAULT_ONE_WAY_SIDE_BLOCKS)
+        if (test.verdict == TileVerdict::BlocksOnX) {  // deliberate fault: a side entry blocks on x
+            add(hits, {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)}, 0, test.time,
+                touchEdge(0, i));
+            return;
+        }
+#endif
+#if defined(TILESWEEP_FAULT_ONE_WAY_TIE_ON_X)
+        if (test.verdict == TileVerdict::Tie) {  // deliberate fault: a corner landing blocks on x
+            add(hits, {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)}, 0, test.time,
+                touchEdge(0, i));
+            return;
+        }
+#endif
+        if (test.verdict != TileVerdict::BlocksOnY && test.verdict != TileVerdict::Tie) return;
+        add(hits, {static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)}, 1, test.time,
+            touchEdge(1, j));
     }
 
     /// Whether the held span [heldLow, heldHigh] on axis `o` overlaps (open) cell k's span;
@@ -412,6 +467,10 @@ private:
         const auto& ma = m_.axis(a);
         for (std::int32_t n = 0; n < nearCount_; ++n) {
             const std::int64_t k = a == 0 ? near_[n].i : near_[n].j;
+            // A listed one-way cell (oneWayDown_) blocks a slide down as a solid tile does: with x
+            // held, entry_x is minus infinity, and an entry in [from, 1) is a bottom at or above
+            // the top at the step's start. It never blocks a move along x.
+            if (!oneWayBlocksAlong<a>() && oneWayDown_ && !solidInMap(near_[n].i, near_[n].j)) continue;
             if (!heldOverlaps(o, heldLow, heldHigh, a == 0 ? near_[n].j : near_[n].i)) continue;
             const Coord entry = ma.entryDistance(m_.edge(a, k), m_.edge(a, k + 1));
             if (compare(entry, ma.speed) >= 0) continue;  // entered at t >= 1
@@ -448,7 +507,8 @@ private:
             for (std::int64_t j = j0; j <= j1; ++j) {
                 const std::int64_t ci = a == 0 ? c : j;
                 const std::int64_t cj = a == 0 ? j : c;
-                if (!solidInMap(ci, cj)) continue;
+                // One-way cells block a move down along y as solid ones do (sweepOneAxisNear).
+                if (!solidInMap(ci, cj) && !(oneWayBlocksAlong<a>() && oneWayInMap(ci, cj))) continue;
                 if (!heldOverlaps(o, heldLow, heldHigh, j)) continue;
                 add(hits, {static_cast<std::int32_t>(ci), static_cast<std::int32_t>(cj)}, a, at,
                     touchEdge(a, c));
@@ -511,35 +571,40 @@ private:
         range[1] = secondaryCandidates(range[1]);
         std::int64_t count = 0;
         if (area <= kNearArea) {
-            count = listSolidCells<false>(range);
+            count = oneWayDown_ ? listSolidCells<false, true>(range) : listSolidCells<false, false>(range);
         } else {
             const std::int64_t across =
                 std::min(range[0].last - range[0].first, range[1].last - range[1].first) + 1;
             if (area > kSparseArea || across > kSparseAcross) return false;
-            count = listSolidCells<true>(range);
+            count = oneWayDown_ ? listSolidCells<true, true>(range) : listSolidCells<true, false>(range);
             if (count > kSparseSolids) return false;  // dense: the walk costs less
         }
         nearCount_ = static_cast<std::int32_t>(count);
         return count <= contactCapacity;
     }
 
-    /// Lists the cells of `range` into near_, and returns how many are solid (the solid ones come
-    /// first, in row-then-column order). Every cell is written at the next slot and kept when
-    /// solid, without a branch on the byte (a map's bytes are its data: a branch on them
-    /// mispredicts at random); the slots suffice, as the count is below the cells visited, at
-    /// most kSparseArea. `sparse`: stop after the first row that takes the count past
+    /// Lists the cells of `range` into near_, and returns how many are solid, or one-way too when
+    /// `oneWay` (the frame moves down: oneWayDown_); those come first, in row-then-column order. Every cell
+    /// is written at the next slot and kept when solid, without a branch on the byte (a map's bytes are its
+    /// data: a branch on them mispredicts at random); the slots suffice, as the count is below the cells
+    /// visited, at most kSparseArea. `sparse`: stop after the first row that takes the count past
     /// kSparseSolids (the caller then walks).
-    template <bool sparse>
+    template <bool sparse, bool oneWay>
     [[gnu::always_inline]] std::int64_t listSolidCells(const CellRange (&range)[2]) noexcept {
         const TileMapView<T>& map = m_.map();
         std::int64_t count = 0;
         for (std::int64_t j = range[1].first; j <= range[1].last; ++j) {
             const std::uint8_t* row = map.solid + j * map.columns;
+            const std::uint8_t* oneWayRow = oneWay ? map.oneWay + j * map.columns : nullptr;
             Cell cell{0, static_cast<std::int32_t>(j)};
             for (std::int64_t i = range[0].first; i <= range[0].last; ++i) {
                 cell.i = static_cast<std::int32_t>(i);
                 near_[count] = cell;
-                count += row[i] != 0 ? 1 : 0;
+                if constexpr (oneWay) {
+                    count += (row[i] | oneWayRow[i]) != 0 ? 1 : 0;
+                } else {
+                    count += row[i] != 0 ? 1 : 0;
+                }
             }
             if (sparse && count > kSparseSolids) break;
         }
@@ -556,6 +621,11 @@ private:
     std::int32_t testNear(Cell* store, std::int32_t capacity, Hits& hits) noexcept {
         std::int32_t count = 0;
         for (std::int32_t n = 0; n < nearCount_; ++n) {
+            if (oneWayDown_ &&
+                !solidInMap(near_[n].i, near_[n].j)) {  // a one-way cell: never a start overlap
+                testOneWayAndRecord(near_[n].i, near_[n].j, hits);
+                continue;
+            }
             if (!testAndRecord(near_[n].i, near_[n].j, hits)) continue;
             if (count < capacity) store[count] = near_[n];
             ++count;
@@ -569,6 +639,7 @@ private:
         std::int32_t count = 0;
         for (std::int32_t n = 0; n < nearCount_; ++n) {
             const Cell c = near_[n];
+            if (oneWayDown_ && !solidInMap(c.i, c.j)) continue;  // a one-way cell is never listed
             if (!overlapsCellAtStart(1, c.j) || !overlapsCellAtStart(0, c.i)) continue;
             if (count < capacity) store[count] = c;
             ++count;
@@ -577,6 +648,7 @@ private:
     }
 
     Arith& m_;
+    bool oneWayDown_ = false;  ///< the map has one-way cells and the box moves down: they may block
     std::int32_t nearCount_ = 0;
     Cell near_[kSparseArea];
 };

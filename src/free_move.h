@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-// A free move: a frame whose swept bounds hold no solid cell. No tile overlaps the box at the
+// A free move: a frame whose swept bounds hold no solid cell, nor a one-way cell when the box
+// moves down (the only motion one can block). No tile overlaps the box at the
 // start and none can block it, so the frame moves to its end with no contact, as the frame loop
 // (frame_loop.h) would find after testing nothing; only the final rounding is left. Most frames
 // of a game at 0.5 to 2 tiles a frame are such (a fall through open air, a flight), and they are
@@ -44,7 +45,10 @@ template <class T>
 #if defined(TILESWEEP_FAULT_FREE_MOVE_FIRST_ROW_SKIPPED)
     if (range[1].first < range[1].last) ++range[1].first;  // deliberate fault: the first row unread
 #endif
-    return blockHoldsNoSolidCell(map.solid, map.columns, map.rows, range[0], range[1]);
+    if (!blockHoldsNoSolidCell(map.solid, map.columns, map.rows, range[0], range[1])) return false;
+    // One-way cells block only a box moving down (frame_loop.h): then their block is read too.
+    return map.oneWay == nullptr || frame.axis(1).dir <= 0 ||
+           blockHoldsNoSolidCell(map.oneWay, map.columns, map.rows, range[0], range[1]);
 }
 
 /// Solves a free move into `result`: moved to its ends, rounded by the final rule, with no

@@ -61,6 +61,14 @@ public:
     [[nodiscard]] Vec2<double> inverseTileSize() const noexcept {
         return {range_.inverseTile[0], range_.inverseTile[1]};
     }
+    /// This map with its one-way cells left out (TileMapView::withoutOneWay): the map to pass
+    /// for a frame that drops through every platform. Prepare it once, beside the map; the
+    /// choice is per call and costs the frame nothing.
+    [[nodiscard]] PreparedMap withoutOneWay() const noexcept {
+        PreparedMap map = *this;
+        map.view_.oneWay = nullptr;
+        return map;
+    }
     /// Internal: the map's half of the resolver's range test, computed once here instead of
     /// every frame (src/range_admission.h reads it).
     [[nodiscard]] const detail::MapRange& mapRange() const noexcept { return range_; }

@@ -9,13 +9,22 @@
 //
 // Tile (i, j) is the closed rectangle [origin.x + i*tileSize.x, origin.x + (i+1)*tileSize.x] x
 // [origin.y + j*tileSize.y, origin.y + (j+1)*tileSize.y], where i is the column and j the row
-// (row 0 is the top). Cells outside [0, columns) x [0, rows) are empty. A map is valid when
+// (row 0 is the top). Cells outside [0, columns) x [0, rows) are empty. A cell is empty, solid,
+// or one-way (a jump-through platform: it blocks only a box moving down onto its top face, from
+// at or above it; CONTRACT.md, "One-way tiles"). A map is valid when
 // every tile edge it defines is exactly representable in T: the resolver is exact either way,
 // but a contact position must be able to land exactly on the edge it touches.
 
 namespace tilesweep {
 
-/// A non-owning view of a grid of solid and empty cells; it borrows `solid`.
+/// What a cell holds.
+enum class CellKind : std::uint8_t {
+    Empty,
+    Solid,   ///< blocks from every side
+    OneWay,  ///< blocks only a box moving down onto its top face from at or above it
+};
+
+/// A non-owning view of a grid of cells; it borrows `solid` and `oneWay`.
 template <class T>
 struct TileMapView {
     Vec2<T> origin;            ///< top-left corner of cell (0, 0), in length units
@@ -24,10 +33,33 @@ struct TileMapView {
     std::int32_t rows = 0;     ///< number of rows, >= 0
     const std::uint8_t* solid =
         nullptr;  ///< columns*rows flags, row-major from the top row; nonzero is solid
+    /// columns*rows flags laid out as `solid`, nonzero is one-way where `solid` is zero (a solid
+    /// flag wins); null when the map has no one-way cell. A frame resolved with it null treats
+    /// every one-way cell as empty: that is how a game drops through a platform (withoutOneWay).
+    const std::uint8_t* oneWay = nullptr;
 
     /// True when cell (i, j) lies in the map and is solid; cells outside the map are empty.
     [[nodiscard]] constexpr bool isSolid(std::int64_t i, std::int64_t j) const noexcept {
         return i >= 0 && j >= 0 && i < columns && j < rows && solid[j * columns + i] != 0;
+    }
+
+    /// True when cell (i, j) lies in the map and is one-way (not solid, its oneWay flag set).
+    [[nodiscard]] constexpr bool isOneWay(std::int64_t i, std::int64_t j) const noexcept {
+        return oneWay != nullptr && i >= 0 && j >= 0 && i < columns && j < rows &&
+               solid[j * columns + i] == 0 && oneWay[j * columns + i] != 0;
+    }
+
+    /// What cell (i, j) holds; cells outside the map are empty.
+    [[nodiscard]] constexpr CellKind kind(std::int64_t i, std::int64_t j) const noexcept {
+        return isSolid(i, j) ? CellKind::Solid : isOneWay(i, j) ? CellKind::OneWay : CellKind::Empty;
+    }
+
+    /// The same map with its one-way cells left out: the view a frame that drops through every
+    /// platform resolves on (the contract's per-call option; scene files do not carry it).
+    [[nodiscard]] constexpr TileMapView withoutOneWay() const noexcept {
+        TileMapView view = *this;
+        view.oneWay = nullptr;
+        return view;
     }
 };
 

@@ -26,10 +26,24 @@ struct TileMap {
     std::int32_t columns = 0;
     std::int32_t rows = 0;
     std::vector<std::uint8_t> solid;  ///< row-major from the top row; 1 is solid, 0 empty
+    /// Laid out as `solid`, 1 where the cell is one-way ('-'); empty when no cell is.
+    std::vector<std::uint8_t> oneWay;
 
     /// A view of this map, valid while the map lives and is not resized.
     [[nodiscard]] TileMapView<T> view() const noexcept {
-        return {origin, tileSize, columns, rows, solid.data()};
+        return {origin, tileSize, columns, rows, solid.data(), oneWay.empty() ? nullptr : oneWay.data()};
+    }
+
+    /// What cell (i, j) holds; cells outside the map are empty.
+    [[nodiscard]] CellKind kind(std::int64_t i, std::int64_t j) const noexcept { return view().kind(i, j); }
+
+    /// Sets cell (i, j), which lies in the map, to `kind` (allocating `oneWay` on the first
+    /// one-way cell).
+    void set(std::int64_t i, std::int64_t j, CellKind kind) {
+        const auto k = static_cast<std::size_t>(j * columns + i);
+        solid[k] = kind == CellKind::Solid ? 1 : 0;
+        if (kind == CellKind::OneWay && oneWay.empty()) oneWay.assign(solid.size(), 0);
+        if (!oneWay.empty()) oneWay[k] = kind == CellKind::OneWay ? 1 : 0;
     }
 };
 
