@@ -26,12 +26,13 @@
 // Cell ranges may be supersets (the fast path estimates them with a certified margin): every
 // cell in them gets the exact tile test.
 //
-// One-way tiles (CONTRACT.md, "One-way tiles"). They can block only when the box moves
-// down (oneWayDown_), and then only on y: in step 1 when the tile test says BlocksOnY or Tie
-// (testOneWayAndRecord), in a step 2 sliding down exactly as a solid tile would, and never in a
-// move or slide along x. Otherwise they are empty cells: start overlaps, the exposed-face rule
-// and every other read of `solid` ignore them. A frame that cannot meet one (no one-way cell in
-// the map, or no motion down) takes the same paths as before, one flag test aside.
+// One-way tiles (CONTRACT.md, "One-way tiles"). They can block only when the box moves down, so
+// such a frame, on a map that has them (oneWayCellsMayBlock), runs on FrameLoop<Arith, true>
+// (kOneWayDown), and every other frame on the loop compiled without a test of them: the caller
+// chooses before it builds the frame's arithmetic. They block only on y: in step 1 when
+// the tile test says BlocksOnY or Tie (testOneWayAndRecord), in a step 2 sliding down exactly as
+// a solid tile would, and never in a move or slide along x. Otherwise they are empty cells: start
+// overlaps, the exposed-face rule and every other read of `solid` ignore them.
 //
 // What an arithmetic `Arith` provides (LatticeFrame, FastFrame):
 //   types   Scalar (float or double), Coord (a box coordinate or a distance), Edge (a tile
@@ -67,10 +68,18 @@
 
 namespace tilesweep::detail {
 
+/// Whether a frame may meet a one-way cell that blocks it: the map has one-way cells and the box
+/// moves down (a one-way cell blocks nothing else). Such a frame runs on FrameLoop<Arith, true>.
+template <class T>
+[[nodiscard, gnu::always_inline]] constexpr bool oneWayCellsMayBlock(const TileMapView<T>& map,
+                                                                     const Vec2<T>& displacement) noexcept {
+    return map.oneWay != nullptr && displacement.y > 0;
+}
+
 // The small steps of the loop (add, firstCellAhead, the overlap and edge helpers) are always
 // inlined (gnu::always_inline; other compilers ignore it), as they were when each arithmetic had
 // its own solver: the fast path is measured against that (bench/).
-template <class Arith>
+template <class Arith, bool kOneWayDown = false>
 class FrameLoop {
 public:
     using T = typename Arith::Scalar;
@@ -84,7 +93,6 @@ public:
     /// (the caller then solves the frame on the lattice). `placeContactPositions` false leaves
     /// the stored contacts' positions unwritten (frame_solve.h, ContactPositions).
     bool run(const ResolveOutput<T>& out, ResolveResult<T>& result, bool placeContactPositions) noexcept {
-        oneWayDown_ = m_.map().oneWay != nullptr && m_.axis(1).dir > 0;
         // A short move: the solid cells of the swept bounds, listed once, serve the start
         // overlaps and both steps (collectNear); otherwise the walk.
         const bool nearOnly = collectNear(std::max<std::int32_t>(out.contactCapacity, 0));
@@ -329,7 +337,7 @@ private:
                 const std::int64_t cj = p == 0 ? j : k;
                 if (solidInMap(ci, cj)) {
                     testAndRecord(ci, cj, hits);
-                } else if (oneWayDown_ && oneWayInMap(ci, cj)) {
+                } else if (kOneWayDown && oneWayInMap(ci, cj)) {
                     testOneWayAndRecord(ci, cj, hits);
                 }
             }
@@ -347,17 +355,17 @@ private:
     }
 
     /// Whether cell (i, j), which lies in the map and is not solid, is one-way; only asked when
-    /// oneWayDown_ (so the map has a `oneWay` layer).
+    /// kOneWayDown (so the map has a `oneWay` layer).
     [[gnu::always_inline]] bool oneWayInMap(std::int64_t i, std::int64_t j) const noexcept {
         const TileMapView<T>& map = m_.map();
-        assert(oneWayDown_ && !solidInMap(i, j));
+        assert(kOneWayDown && !solidInMap(i, j));
         return map.oneWay[j * map.columns + i] != 0;
     }
 
     /// Whether a one-way cell can block a move along `a` alone: only one along y, moving down.
     template <int a>
     [[gnu::always_inline]] bool oneWayBlocksAlong() const noexcept {
-        return a == 1 && oneWayDown_;
+        return a == 1 && kOneWayDown;
     }
 
     /// The secondary cells the broadphase tests: those of the walk's secondary range, or the rows
@@ -398,7 +406,7 @@ private:
         return false;
     }
 
-    /// Tests one-way tile (i, j) in a step 1 moving down (oneWayDown_) and records it when it
+    /// Tests one-way tile (i, j) in a step 1 moving down (kOneWayDown) and records it when it
     /// blocks: the contract's rule for one-way tiles, stated once. It blocks on its top face
     /// alone, at entry_y, when the box's bottom is at or above the tile's top at the start and the
     /// box reaches the top while it overlaps the tile on x, or exactly as it starts to
@@ -467,10 +475,10 @@ private:
         const auto& ma = m_.axis(a);
         for (std::int32_t n = 0; n < nearCount_; ++n) {
             const std::int64_t k = a == 0 ? near_[n].i : near_[n].j;
-            // A listed one-way cell (oneWayDown_) blocks a slide down as a solid tile does: with x
+            // A listed one-way cell (kOneWayDown) blocks a slide down as a solid tile does: with x
             // held, entry_x is minus infinity, and an entry in [from, 1) is a bottom at or above
             // the top at the step's start. It never blocks a move along x.
-            if (!oneWayBlocksAlong<a>() && oneWayDown_ && !solidInMap(near_[n].i, near_[n].j)) continue;
+            if (!oneWayBlocksAlong<a>() && kOneWayDown && !solidInMap(near_[n].i, near_[n].j)) continue;
             if (!heldOverlaps(o, heldLow, heldHigh, a == 0 ? near_[n].j : near_[n].i)) continue;
             const Coord entry = ma.entryDistance(m_.edge(a, k), m_.edge(a, k + 1));
             if (compare(entry, ma.speed) >= 0) continue;  // entered at t >= 1
@@ -571,12 +579,12 @@ private:
         range[1] = secondaryCandidates(range[1]);
         std::int64_t count = 0;
         if (area <= kNearArea) {
-            count = oneWayDown_ ? listSolidCells<false, true>(range) : listSolidCells<false, false>(range);
+            count = listSolidCells<false, kOneWayDown>(range);
         } else {
             const std::int64_t across =
                 std::min(range[0].last - range[0].first, range[1].last - range[1].first) + 1;
             if (area > kSparseArea || across > kSparseAcross) return false;
-            count = oneWayDown_ ? listSolidCells<true, true>(range) : listSolidCells<true, false>(range);
+            count = listSolidCells<true, kOneWayDown>(range);
             if (count > kSparseSolids) return false;  // dense: the walk costs less
         }
         nearCount_ = static_cast<std::int32_t>(count);
@@ -584,7 +592,7 @@ private:
     }
 
     /// Lists the cells of `range` into near_, and returns how many are solid, or one-way too when
-    /// `oneWay` (the frame moves down: oneWayDown_); those come first, in row-then-column order. Every cell
+    /// `oneWay` (the frame moves down: kOneWayDown); those come first, in row-then-column order. Every cell
     /// is written at the next slot and kept when solid, without a branch on the byte (a map's bytes are its
     /// data: a branch on them mispredicts at random); the slots suffice, as the count is below the cells
     /// visited, at most kSparseArea. `sparse`: stop after the first row that takes the count past
@@ -621,7 +629,7 @@ private:
     std::int32_t testNear(Cell* store, std::int32_t capacity, Hits& hits) noexcept {
         std::int32_t count = 0;
         for (std::int32_t n = 0; n < nearCount_; ++n) {
-            if (oneWayDown_ &&
+            if (kOneWayDown &&
                 !solidInMap(near_[n].i, near_[n].j)) {  // a one-way cell: never a start overlap
                 testOneWayAndRecord(near_[n].i, near_[n].j, hits);
                 continue;
@@ -639,7 +647,7 @@ private:
         std::int32_t count = 0;
         for (std::int32_t n = 0; n < nearCount_; ++n) {
             const Cell c = near_[n];
-            if (oneWayDown_ && !solidInMap(c.i, c.j)) continue;  // a one-way cell is never listed
+            if (kOneWayDown && !solidInMap(c.i, c.j)) continue;  // a one-way cell is never listed
             if (!overlapsCellAtStart(1, c.j) || !overlapsCellAtStart(0, c.i)) continue;
             if (count < capacity) store[count] = c;
             ++count;
@@ -648,7 +656,6 @@ private:
     }
 
     Arith& m_;
-    bool oneWayDown_ = false;  ///< the map has one-way cells and the box moves down: they may block
     std::int32_t nearCount_ = 0;
     Cell near_[kSparseArea];
 };

@@ -45,6 +45,16 @@ template <class T>
                                                            const ResolveOutput<T>& output,
                                                            ContactPositions positions) noexcept;
 
+/// resolveMovingFrame for a frame that may meet a blocking one-way cell: the frame loop compiled
+/// with their test, in a unit of its own (frame_solve_one_way.cpp, frame_paths.h), on `prepared`
+/// or, when it is null, on the bare map.
+template <class T>
+[[nodiscard]] ResolveResult<T> resolveFrameWithOneWayCells(const TileMapView<T>& map,
+                                                           const MoveInput<T>& move,
+                                                           const ResolveOutput<T>& output,
+                                                           ContactPositions positions,
+                                                           const MapRange* prepared) noexcept;
+
 /// resolveMovingFrame on `prepared` (the range of a PreparedMap), or on the bare map when it is
 /// null. Each caller passes a constant, so the choice folds away.
 template <class T>
@@ -74,8 +84,12 @@ template <class T>
 [[nodiscard]] inline ResolveResult<T> resolveFrame(const TileMapView<T>& map, const MoveInput<T>& move,
                                                    const ResolveOutput<T>& output, ContactPositions positions,
                                                    const MapRange* prepared) noexcept {
-    if (move.displacement.x != 0 || move.displacement.y != 0)  // a NaN too: the moving frame refuses it
+    if (move.displacement.x != 0 || move.displacement.y != 0) {  // a NaN too: the moving frame refuses it
+        // A frame that may meet a blocking one-way cell (frame_loop.h, oneWayCellsMayBlock).
+        if (map.oneWay != nullptr && move.displacement.y > 0)
+            return resolveFrameWithOneWayCells(map, move, output, positions, prepared);
         return resolveMovingOn(map, move, output, positions, prepared);
+    }
     return resolveStillFrame(map, move, output, positions, prepared);
 }
 
@@ -96,6 +110,16 @@ extern template ResolveResult<double> resolveMovingFrameOnBareMap<double>(const 
                                                                           const ResolveOutput<double>&,
                                                                           ContactPositions) noexcept;
 
+extern template ResolveResult<float> resolveFrameWithOneWayCells<float>(const TileMapView<float>&,
+                                                                        const MoveInput<float>&,
+                                                                        const ResolveOutput<float>&,
+                                                                        ContactPositions,
+                                                                        const MapRange*) noexcept;
+extern template ResolveResult<double> resolveFrameWithOneWayCells<double>(const TileMapView<double>&,
+                                                                          const MoveInput<double>&,
+                                                                          const ResolveOutput<double>&,
+                                                                          ContactPositions,
+                                                                          const MapRange*) noexcept;
 extern template ResolveResult<float> resolveStillFrame<float>(const TileMapView<float>&,
                                                               const MoveInput<float>&,
                                                               const ResolveOutput<float>&, ContactPositions,

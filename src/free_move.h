@@ -33,10 +33,11 @@
 
 namespace tilesweep::detail {
 
-/// Whether the frame's swept bounds hold no solid cell, decided from one read of their block
+/// Whether the frame's swept bounds hold no solid cell (nor a one-way one when kOneWayDown: the
+/// frame may meet a blocking one, frame_loop.h), decided from one read of their block
 /// (blockHoldsNoSolidCell: bounds of at most 4 rows of 16 cells, as a short move's are); false
 /// too where the block cannot be read (the loop then lists the bounds as it does any frame's).
-template <class T>
+template <bool kOneWayDown, class T>
 [[nodiscard, gnu::always_inline]] inline bool sweptBoundsHoldNoSolidCell(const FastFrame<T>& frame) noexcept {
     CellRange range[2];
     frame.sweptCellsOfBoth(range);
@@ -46,18 +47,17 @@ template <class T>
     if (range[1].first < range[1].last) ++range[1].first;  // deliberate fault: the first row unread
 #endif
     if (!blockHoldsNoSolidCell(map.solid, map.columns, map.rows, range[0], range[1])) return false;
-    // One-way cells block only a box moving down (frame_loop.h): then their block is read too.
-    return map.oneWay == nullptr || frame.axis(1).dir <= 0 ||
-           blockHoldsNoSolidCell(map.oneWay, map.columns, map.rows, range[0], range[1]);
+    // A frame that may meet a blocking one-way cell (oneWayCellsMayBlock) reads their block too.
+    return !kOneWayDown || blockHoldsNoSolidCell(map.oneWay, map.columns, map.rows, range[0], range[1]);
 }
 
 /// Solves a free move into `result`: moved to its ends, rounded by the final rule, with no
 /// contact and no start overlap. False, writing nothing, when the frame is not free or the
 /// rounding of both ends at once cannot decide (the frame loop then solves the frame).
-template <class T>
+template <bool kOneWayDown, class T>
 [[nodiscard, gnu::always_inline]] inline bool solveFreeMove(const FastFrame<T>& frame,
                                                             ResolveResult<T>& result) noexcept {
-    if (!sweptBoundsHoldNoSolidCell(frame)) return false;
+    if (!sweptBoundsHoldNoSolidCell<kOneWayDown>(frame)) return false;
     Vec2<T> position;
     if (!frame.roundEndsTogether(frame.endOf(0), frame.endOf(1), position.x, position.y)) return false;
     result.status = ResolveStatus::Moved;
