@@ -15,6 +15,9 @@
 //   - the box moves to the time of impact (Box2D stops it b2_linearSlop short: its target
 //     separation), the rest of the motion loses its component along the normal (slide), and
 //     the loop runs at most two steps;
+//   - a one-way cell ('-') is a tile like a solid one, taken as a candidate the way Box2D's
+//     one-sided platform example (testbed, PreSolve) enables its contact: only while the box
+//     moves down and its bottom is above the tile's top less 3 b2_linearSlop;
 //   - start overlaps are the tiles b2TestOverlap reports (which counts the skin, so touching
 //     tiles are listed); reported normals are the dominant axis of Box2D's normal.
 //
@@ -65,6 +68,13 @@ std::vector<FrameResult<float>> runBox2D(const Scene<float>& scene) {
         return map.solid[static_cast<std::size_t>(j) * static_cast<std::size_t>(map.columns) +
                          static_cast<std::size_t>(i)] != 0;
     };
+    // Box2D's one-sided platform test: the box's bottom (pixels) no lower than the top plus 3
+    // slops, as the testbed's PreSolve keeps a contact enabled.
+    const auto oneWayBlocks = [&](std::int32_t i, std::int32_t j, b2Vec2 posPixels, b2Vec2 motion) {
+        if (map.kind(i, j) != CellKind::OneWay || motion.y <= 0) return false;
+        const float top = map.origin.y + static_cast<float>(j) * map.tileSize.y;
+        return posPixels.y + scene.box.size.y <= top + 3.0f * b2_linearSlop * kPixelsPerMeter;
+    };
     const auto tileCenter = [&](std::int32_t i, std::int32_t j) {
         return meters(map.origin.x + (static_cast<float>(i) + 0.5f) * map.tileSize.x,
                       map.origin.y + (static_cast<float>(j) + 0.5f) * map.tileSize.y);
@@ -104,7 +114,7 @@ std::vector<FrameResult<float>> runBox2D(const Scene<float>& scene) {
             }
             for (std::int32_t j = j0; j <= j1; ++j)
                 for (std::int32_t i = i0; i <= i1; ++i) {
-                    if (!solid(i, j)) continue;
+                    if (!solid(i, j) && !oneWayBlocks(i, j, p, r)) continue;
                     b2TOIInput input;
                     input.proxyA.Set(&boxShape, 0);
                     input.proxyB.Set(&tileShape, 0);

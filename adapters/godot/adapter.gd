@@ -7,6 +7,9 @@
 #
 #   - the map is built as TileMap builds it: per solid cell a static body at the cell's top-left
 #     corner holding one RectangleShape2D of the tile's half size, offset by that half size;
+#   - a one-way cell ('-') is the same body with its shape set one-way as a TileSet's one-way
+#     collision sets it (body_set_shape_as_one_way_collision, TileSet's default margin 1 px):
+#     Godot then blocks only motion along the shape's +y, down the screen, onto its top;
 #   - the box is a kinematic body built the same way (origin at its top-left corner);
 #   - per frame, what move_and_slide does with two slides at most: body_test_motion (what
 #     move_and_collide calls) with Godot's default safe margin 0.08, the body moved by the
@@ -45,9 +48,13 @@ var owner_ref = Reference.new()  # bodies need an object instance id (intersect_
 var motion_result = Physics2DTestMotionResult.new()
 var bits_buffer = StreamPeerBuffer.new()
 
-var pool = []            # static bodies; the first `active` are the current scene's solid cells
+# TileSet's default one-way collision margin (tile_set_shape_one_way_margin), in pixels.
+const ONE_WAY_MARGIN = 1.0
+
+var pool = []            # static bodies; the first `active` are the current scene's solid and one-way cells
 var pool_shapes = []     # each body's rectangle
 var pool_half = []       # each rectangle's half size
+var pool_one_way = []    # whether each body's shape is one-way
 var active = 0
 var pool_index_of = {}   # body RID id -> index in pool
 var cell_of = []         # pool index -> [i, j] for the current scene
@@ -317,6 +324,7 @@ func parse_scene(line):
 	if rows.size() > 0 and typeof(rows[0]) == TYPE_STRING:
 		scene.columns = rows[0].length()
 	var solid = []
+	var one_way = []
 	for j in range(rows.size()):
 		var row = rows[j]
 		if typeof(row) != TYPE_STRING:
@@ -325,15 +333,20 @@ func parse_scene(line):
 		if row.length() != scene.columns:
 			fail("map.rows", "ragged rows (row %d has length %d, row 0 %d)" % [j, row.length(), scene.columns])
 			return null
-		if row.replace("#", "").replace(".", "") != "":
-			var c = row.replace("#", "").replace(".", "")[0]
-			fail("map.rows[%d]" % j, "unknown tile character '" + c + "' (use '#' or '.')")
+		var other = row.replace("#", "").replace(".", "").replace("-", "")
+		if other != "":
+			fail("map.rows[%d]" % j, "unknown tile character '" + other[0] + "' (use '#', '-' or '.')")
 			return null
 		var i = row.find("#")
 		while i >= 0:
 			solid.append([i, j])
 			i = row.find("#", i + 1)
+		i = row.find("-")
+		while i >= 0:
+			one_way.append([i, j])
+			i = row.find("-", i + 1)
 	scene.solid = solid  # [i, j] of the solid cells, by row then column
+	scene.one_way = one_way  # [i, j] of the one-way cells, likewise
 	# Every tile edge must be a float32 (the contract refuses the map otherwise).
 	for k in range(scene.columns + 1):
 		var edge = scene.origin.x + k * scene.tile.x  # exact in double
@@ -404,11 +417,13 @@ func add_pool_body():
 	pool.append(body)
 	pool_shapes.append(shape)
 	pool_half.append(Vector2(-1, -1))
+	pool_one_way.append(false)
 
 
 func place_map(scene):
 	var half = scene.tile / 2
-	var count = scene.solid.size()
+	var cells = scene.solid + scene.one_way
+	var count = cells.size()
 	if pool.size() < count:
 		var target = pool.size()
 		while target < count:
@@ -421,13 +436,17 @@ func place_map(scene):
 			ps.shape_set_data(pool_shapes[k], half)
 			ps.body_set_shape_transform(body, 0, Transform2D(0, half))
 			pool_half[k] = half
-		var cell = scene.solid[k]
+		var one_way = k >= scene.solid.size()
+		if pool_one_way[k] != one_way:
+			ps.body_set_shape_as_one_way_collision(body, 0, one_way, ONE_WAY_MARGIN)
+			pool_one_way[k] = one_way
+		var cell = cells[k]
 		var corner = Vector2(scene.origin.x + cell[0] * scene.tile.x, scene.origin.y + cell[1] * scene.tile.y)
 		ps.body_set_state(body, Physics2DServer.BODY_STATE_TRANSFORM, Transform2D(0, corner))
 	for k in range(count, active):
 		ps.body_set_state(pool[k], Physics2DServer.BODY_STATE_TRANSFORM, PARKED)
 	active = count
-	cell_of = scene.solid
+	cell_of = cells
 
 
 # The int32 broad-phase cell Godot files a coordinate under. Out of the int32 range the

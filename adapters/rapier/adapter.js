@@ -14,6 +14,10 @@
 //   - each computedCollision(i) is a contact: the tile from the collider's handle, the normal
 //     the dominant axis of normal1, and t the fraction of the frame elapsed at the hit, from
 //     the translation applied before it and the translation remaining;
+//   - a one-way cell ('-') is a tile collider too. Rapier has no one-way collider (its character
+//     controller leaves them to the user), so the adapter does what its users do: a filter
+//     predicate that, each frame, leaves a one-way collider out of the controller's obstacles
+//     unless the box moves down and its bottom starts at or above the collider's top;
 //   - started_overlapping is computed from the map by the contract's definition (Rapier has no
 //     notion of it).
 //
@@ -50,17 +54,20 @@ class TileWorld {
         this.boxSize = [1, 1];
         this.tiles = [];             // pooled tile colliders
         this.cellOfHandle = new Map();  // collider handle -> [i, j]
+        this.oneWayHandles = new Set(); // the handles of the current scene's one-way cells
         this.active = 0;             // tiles in use by the current scene
     }
 
-    // Places the scene's solid cells: one cuboid per cell, centred on it.
+    // Places the scene's solid and one-way cells: one cuboid per cell, centred on it.
     placeMap(scene) {
         const [ox, oy] = scene.origin;
         const [tw, th] = scene.tile;
         let used = 0;
+        this.oneWayHandles.clear();
         for (let j = 0; j < scene.rows; ++j)
             for (let i = 0; i < scene.columns; ++i) {
-                if (!scene.solid[j * scene.columns + i]) continue;
+                const k = j * scene.columns + i;
+                if (!scene.solid[k] && !scene.oneWay[k]) continue;
                 let collider = this.tiles[used];
                 if (collider === undefined) {
                     collider = this.world.createCollider(
@@ -78,6 +85,7 @@ class TileWorld {
                 }
                 collider.setTranslation({x: ox + (i + 0.5) * tw, y: oy + (j + 0.5) * th});
                 this.cellOfHandle.set(collider.handle, [i, j]);
+                if (!scene.solid[k]) this.oneWayHandles.add(collider.handle);
                 ++used;
             }
         for (let k = used; k < this.active; ++k) this.tiles[k].setEnabled(false);
@@ -99,7 +107,15 @@ class TileWorld {
         for (const [dx, dy] of scene.moves) {
             const startedOverlapping = overlappedTiles(scene, x, y);
             this.box.setTranslation({x: x + w / 2, y: y + h / 2});
-            this.controller.computeColliderMovement(this.box, {x: dx, y: dy});
+            // One-way colliders block this frame only when it moves down from at or above them.
+            const [, oy] = scene.origin;
+            const th = scene.tile[1];
+            const keep = this.oneWayHandles.size === 0 ? undefined : (collider) => {
+                if (!this.oneWayHandles.has(collider.handle)) return true;
+                const [, j] = this.cellOfHandle.get(collider.handle);
+                return dy > 0 && y + h <= oy + j * th;
+            };
+            this.controller.computeColliderMovement(this.box, {x: dx, y: dy}, undefined, undefined, keep);
             const movement = this.controller.computedMovement();
             const contacts = [];
             let elapsed = 0;          // fraction of the frame before the current slide

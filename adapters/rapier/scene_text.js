@@ -84,7 +84,8 @@ function readPair(value, field) {
     return [readScalar(value[0], `${field}[0]`), readScalar(value[1], `${field}[1]`)];
 }
 
-// The parsed scene: {origin, tile, columns, rows, solid (row-major 0/1), box: [x, y, w, h], moves}.
+// The parsed scene: {origin, tile, columns, rows, solid and oneWay (row-major 0/1: '#' and '-'),
+// box: [x, y, w, h], moves}.
 function parseScene(line) {
     let root;
     try {
@@ -102,13 +103,15 @@ function parseScene(line) {
     const rows = map.rows.length;
     const columns = rows > 0 && typeof map.rows[0] === 'string' ? map.rows[0].length : 0;
     const solid = new Uint8Array(columns * rows);
+    const oneWay = new Uint8Array(columns * rows);
     map.rows.forEach((row, j) => {
         if (typeof row !== 'string') fail(`map.rows[${j}]`, 'expected a string');
         if (row.length !== columns) fail('map.rows', `ragged rows (row ${j} has length ${row.length}, row 0 ${columns})`);
         for (let i = 0; i < columns; ++i) {
             const c = row[i];
             if (c === '#') solid[j * columns + i] = 1;
-            else if (c !== '.') fail(`map.rows[${j}]`, `unknown tile character '${c}' (use '#' or '.')`);
+            else if (c === '-') oneWay[j * columns + i] = 1;
+            else if (c !== '.') fail(`map.rows[${j}]`, `unknown tile character '${c}' (use '#', '-' or '.')`);
         }
     });
     // Every tile edge must be a float32 (the contract refuses the map otherwise).
@@ -130,7 +133,7 @@ function parseScene(line) {
         if (root.moves.length === 0) fail('moves', 'must not be empty');
         moves = root.moves.map((m, k) => readPair(m, `moves[${k}]`));
     }
-    return {origin, tile, columns, rows, solid, box, moves};
+    return {origin, tile, columns, rows, solid, oneWay, box, moves};
 }
 
 // The float32 just above (dir = 1) or below (dir = -1) v.
