@@ -96,6 +96,34 @@ void BM_ResolveMove_FloorAndWalls(benchmark::State& state) {
 BENCHMARK_TEMPLATE(BM_ResolveMove_FloorAndWalls, float)->Arg(1)->Arg(4)->Arg(16)->Arg(64);
 BENCHMARK_TEMPLATE(BM_ResolveMove_FloorAndWalls, double)->Arg(1)->Arg(4)->Arg(16)->Arg(64);
 
+// The same level with every other floor a row of one-way platforms ('-'): a frame moving down
+// runs the loop that tests them (src/frame_paths.h), the others the loop without; beside
+// BM_ResolveMove_FloorAndWalls, the cost of the platforms.
+template <class T>
+const Scenario<T>& platformScenario(int speedArg) {
+    static std::vector<std::pair<int, Scenario<T>>> cache;
+    for (const auto& entry : cache)
+        if (entry.first == speedArg) return entry.second;
+    Scenario<T> s = makeScenario<T>(256, Level::FloorAndWalls, speedArg / 2.0);
+    s.map.oneWay.assign(s.map.solid.size(), 0);
+    const auto columns = static_cast<std::size_t>(s.map.columns);
+    for (std::size_t j = 11; j < static_cast<std::size_t>(s.map.rows); j += 24)
+        for (std::size_t i = 0; i < columns; ++i)
+            if (s.map.solid[j * columns + i] != 0) {
+                s.map.solid[j * columns + i] = 0;
+                s.map.oneWay[j * columns + i] = 1;
+            }
+    cache.emplace_back(speedArg, std::move(s));
+    return cache.back().second;
+}
+
+template <class T>
+void BM_ResolveMove_Platforms(benchmark::State& state) {
+    resolveLoop<T>(state, platformScenario<T>(static_cast<int>(state.range(0))));
+}
+BENCHMARK_TEMPLATE(BM_ResolveMove_Platforms, float)->Arg(1)->Arg(4)->Arg(16)->Arg(64);
+BENCHMARK_TEMPLATE(BM_ResolveMove_Platforms, double)->Arg(1)->Arg(4)->Arg(16)->Arg(64);
+
 // The map's size must cost nothing: the same motion (8 tiles/frame) on 64^2, 1024^2, 4096^2.
 void BM_ResolveMove_MapSize(benchmark::State& state) {
     resolveLoop<float>(state, scenario<float>(static_cast<int>(state.range(0)), Level::Random30, 16));
