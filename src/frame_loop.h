@@ -27,12 +27,13 @@
 // cell in them gets the exact tile test.
 //
 // One-way tiles (CONTRACT.md, "One-way tiles"). They can block only when the box moves down, so
-// such a frame, on a map that has them (oneWayCellsMayBlock), runs on FrameLoop<Arith, true>
-// (kOneWayDown), and every other frame on the loop compiled without a test of them: the caller
-// chooses before it builds the frame's arithmetic. They block only on y: in step 1 when
-// the tile test says BlocksOnY or Tie (testOneWayAndRecord), in a step 2 sliding down exactly as
-// a solid tile would, and never in a move or slide along x. Otherwise they are empty cells: start
-// overlaps, the exposed-face rule and every other read of `solid` ignore them.
+// such a frame, on a map that has them (oneWayCellsMayBlock, frame_solve.h), runs on
+// FrameLoop<Arith, true> (kOneWayDown), and every other frame on the loop compiled without a
+// test of them: the caller chooses before it builds the frame's arithmetic. They block only on
+// y: in step 1 when the tile test says BlocksOnY or Tie (testOneWayAndRecord), in a step 2
+// sliding down exactly as a solid tile would, and never in a move or slide along x. Otherwise
+// they are empty cells: start overlaps, the exposed-face rule and every other read of `solid`
+// ignore them.
 //
 // What an arithmetic `Arith` provides (LatticeFrame, FastFrame):
 //   types   Scalar (float or double), Coord (a box coordinate or a distance), Edge (a tile
@@ -67,14 +68,6 @@
 #include <cstdint>
 
 namespace tilesweep::detail {
-
-/// Whether a frame may meet a one-way cell that blocks it: the map has one-way cells and the box
-/// moves down (a one-way cell blocks nothing else). Such a frame runs on FrameLoop<Arith, true>.
-template <class T>
-[[nodiscard, gnu::always_inline]] constexpr bool oneWayCellsMayBlock(const TileMapView<T>& map,
-                                                                     const Vec2<T>& displacement) noexcept {
-    return map.oneWay != nullptr && displacement.y > 0;
-}
 
 // The small steps of the loop (add, firstCellAhead, the overlap and edge helpers) are always
 // inlined (gnu::always_inline; other compilers ignore it), as they were when each arithmetic had

@@ -3,7 +3,7 @@
 
 // A moving frame, solved (solveMovingFrame): on the fast path (solveFastOn) when the range test
 // admits it, else on the exact lattice (solveOnLatticeAs). Compiled twice: for frames that may
-// meet a blocking one-way cell (kOneWayDown, oneWayCellsMayBlock in frame_loop.h), instantiated
+// meet a blocking one-way cell (kOneWayDown, oneWayCellsMayBlock in frame_solve.h), instantiated
 // in frame_solve_one_way.cpp, and for the others, in frame_solve.cpp. resolveFrame
 // (frame_solve.h) chooses before anything else, so the others run the code they ran before
 // one-way cells existed, one test aside; and each copy sits in a unit of its own, so that neither takes the
@@ -30,7 +30,7 @@ namespace tilesweep::detail {
 /// Solves an admitted frame (range_admission.h) on the fast path into `result`; false when it
 /// meets a case it hands to the lattice. `refined` is set when some predicate needed its exact
 /// refinement (DecisionPath::Filtered).
-/// `kOneWayDown`: the frame may meet a blocking one-way cell (oneWayCellsMayBlock, frame_loop.h).
+/// `kOneWayDown`: the frame may meet a blocking one-way cell (oneWayCellsMayBlock, frame_solve.h).
 template <bool kOneWayDown, class T>
 [[gnu::always_inline]] inline bool solveFastOn(FrameInput<T> input, const ResolveOutput<T>& output,
                                                ContactPositions positions, const MapRange& range,

@@ -45,6 +45,15 @@ template <class T>
                                                            const ResolveOutput<T>& output,
                                                            ContactPositions positions) noexcept;
 
+/// Whether a frame may meet a one-way cell that blocks it: the map has one-way cells and the box
+/// moves down (a one-way cell blocks nothing else). Such a frame runs on FrameLoop<Arith, true>
+/// (frame_loop.h), through resolveFrameWithOneWayCells.
+template <class T>
+[[nodiscard, gnu::always_inline]] constexpr bool oneWayCellsMayBlock(const TileMapView<T>& map,
+                                                                     const Vec2<T>& displacement) noexcept {
+    return map.oneWay != nullptr && displacement.y > 0;
+}
+
 /// resolveMovingFrame for a frame that may meet a blocking one-way cell: the frame loop compiled
 /// with their test, in a unit of its own (frame_solve_one_way.cpp, frame_paths.h), on `prepared`
 /// or, when it is null, on the bare map.
@@ -85,8 +94,7 @@ template <class T>
                                                    const ResolveOutput<T>& output, ContactPositions positions,
                                                    const MapRange* prepared) noexcept {
     if (move.displacement.x != 0 || move.displacement.y != 0) {  // a NaN too: the moving frame refuses it
-        // A frame that may meet a blocking one-way cell (frame_loop.h, oneWayCellsMayBlock).
-        if (map.oneWay != nullptr && move.displacement.y > 0)
+        if (oneWayCellsMayBlock(map, move.displacement))
             return resolveFrameWithOneWayCells(map, move, output, positions, prepared);
         return resolveMovingOn(map, move, output, positions, prepared);
     }

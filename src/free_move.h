@@ -47,7 +47,8 @@ template <bool kOneWayDown, class T>
     if (range[1].first < range[1].last) ++range[1].first;  // deliberate fault: the first row unread
 #endif
     if (!blockHoldsNoSolidCell(map.solid, map.columns, map.rows, range[0], range[1])) return false;
-    // A frame that may meet a blocking one-way cell (oneWayCellsMayBlock) reads their block too.
+    // A frame that may meet a blocking one-way cell (oneWayCellsMayBlock, frame_solve.h) reads their block
+    // too.
     return !kOneWayDown || blockHoldsNoSolidCell(map.oneWay, map.columns, map.rows, range[0], range[1]);
 }
 
