@@ -28,20 +28,25 @@ ts_allocator allocatorOf(const ts_allocator* given) noexcept {
 
 }  // namespace
 
-// A map is one block from its allocator: this header, then columns * rows cells.
+// A map is one block from its allocator: two headers, then columns * rows solid bytes, then (in
+// a map from ts_map_create_one_way_*) columns * rows one-way bytes. The first header is the map;
+// the second is the same map without its one-way cells (ts_map_without_one_way_*), over the
+// same bytes, so that it sees every ts_map_set_* and dies with the map.
 template <class T>
 struct MapBlock {
     ts_allocator allocator;
-    std::size_t bytes;  ///< the block's size, header included
+    std::size_t bytes;  ///< the block's size, headers included
     tilesweep::PreparedMap<T> map;
-
-    [[nodiscard]] std::uint8_t* cells() noexcept { return reinterpret_cast<std::uint8_t*>(this + 1); }
+    std::uint8_t* solid;   ///< the block's solid bytes
+    std::uint8_t* oneWay;  ///< the block's one-way bytes; null when the map has no one-way layer
+    bool isDropThrough;    ///< the second header: ts_map_destroy_* ignores it
 };
 
 struct ts_map_f : MapBlock<float> {};
 struct ts_map_d : MapBlock<double> {};
-static_assert(sizeof(ts_map_f) == sizeof(MapBlock<float>) && sizeof(ts_map_d) == sizeof(MapBlock<double>),
-              "the cells start right after the header");
+static_assert(std::is_trivially_destructible<ts_map_f>::value &&
+                  std::is_trivially_destructible<ts_map_d>::value,
+              "a map's block is released without destructor calls");
 static_assert(std::is_trivially_destructible<tilesweep::Contact<float>>::value &&
                   std::is_trivially_destructible<tilesweep::Contact<double>>::value,
               "a scratch contact list is released without destructor calls");
@@ -159,7 +164,8 @@ typename Types<T>::Vec clipVelocity(typename Types<T>::Vec v, const typename Typ
 }
 
 template <class T>
-ts_error createMap(const typename Types<T>::Desc* desc, typename Types<T>::Map** out) noexcept {
+ts_error createMap(const typename Types<T>::Desc* desc, const std::uint8_t* oneWay, bool withOneWay,
+                   typename Types<T>::Map** out) noexcept {
     using Map = typename Types<T>::Map;
     if (out == nullptr) return TS_ERROR_NULL_ARGUMENT;
     *out = nullptr;
@@ -172,37 +178,75 @@ ts_error createMap(const typename Types<T>::Desc* desc, typename Types<T>::Map**
     const ts_allocator allocator = allocatorOf(desc->allocator);
     // validateTileMap bounds columns * rows by kMaxCells (2^31 - 1): no overflow.
     const auto cells = static_cast<std::size_t>(desc->columns) * static_cast<std::size_t>(desc->rows);
-    const std::size_t bytes = sizeof(Map) + cells;
+    const std::size_t bytes = 2 * sizeof(Map) + (withOneWay ? 2 : 1) * cells;
     void* memory = allocator.allocate(bytes, allocator.user);
     if (memory == nullptr) return TS_ERROR_OUT_OF_MEMORY;
     auto* map = new (memory) Map{};  // the library's own block, not the caller's storage
+    auto* dropThrough = new (map + 1) Map{};
     map->allocator = allocator;
     map->bytes = bytes;
-    std::uint8_t* copy = map->cells();
-    for (std::size_t k = 0; k < cells; ++k) copy[k] = desc->solid[k];
-    view.solid = copy;
+    map->solid = reinterpret_cast<std::uint8_t*>(map + 2);
+    for (std::size_t k = 0; k < cells; ++k) map->solid[k] = desc->solid[k];
+    view.solid = map->solid;
+    if (withOneWay) {
+        map->oneWay = map->solid + cells;
+        for (std::size_t k = 0; k < cells; ++k) map->oneWay[k] = oneWay != nullptr ? oneWay[k] : 0;
+        view.oneWay = map->oneWay;
+    }
     map->map = tilesweep::prepareMap(view);
+    *dropThrough = *map;
+    dropThrough->map = map->map.withoutOneWay();
+    dropThrough->isDropThrough = true;
     *out = map;
     return errorOf(map->map.error());
 }
 
 template <class Map>
 void destroyMap(Map* map) noexcept {
-    if (map == nullptr) return;
+    if (map == nullptr || map->isDropThrough) return;
     const ts_allocator allocator = map->allocator;
     const std::size_t bytes = map->bytes;
-    map->~Map();
-    allocator.release(map, bytes, allocator.user);
+    allocator.release(map, bytes, allocator.user);  // both headers are trivially destructible
 }
 
 template <class T>
-ts_error setSolid(typename Types<T>::Map* map, std::int32_t i, std::int32_t j, int solid) noexcept {
+ts_error setCell(typename Types<T>::Map* map, std::int32_t i, std::int32_t j, int kind) noexcept {
     if (map == nullptr) return TS_ERROR_NULL_ARGUMENT;
     const auto& v = map->map.view();
     if (i < 0 || j < 0 || i >= v.columns || j >= v.rows) return TS_ERROR_CELL_OUT_OF_RANGE;
-    map->cells()[static_cast<std::size_t>(j) * static_cast<std::size_t>(v.columns) +
-                 static_cast<std::size_t>(i)] = solid != 0 ? 1 : 0;
+    if (kind != TS_CELL_EMPTY && kind != TS_CELL_SOLID && kind != TS_CELL_ONE_WAY) return TS_ERROR_CELL_KIND;
+    if (kind == TS_CELL_ONE_WAY && map->oneWay == nullptr) return TS_ERROR_CELL_KIND;
+    const std::size_t k =
+        static_cast<std::size_t>(j) * static_cast<std::size_t>(v.columns) + static_cast<std::size_t>(i);
+    map->solid[k] = kind == TS_CELL_SOLID ? 1 : 0;
+    if (map->oneWay != nullptr) map->oneWay[k] = kind == TS_CELL_ONE_WAY ? 1 : 0;
     return TS_OK;
+}
+
+template <class T>
+ts_error getCell(const typename Types<T>::Map* map, std::int32_t i, std::int32_t j,
+                 std::uint8_t* kind) noexcept {
+    if (map == nullptr || kind == nullptr) return TS_ERROR_NULL_ARGUMENT;
+    const auto& v = map->map.view();
+    if (i < 0 || j < 0 || i >= v.columns || j >= v.rows) return TS_ERROR_CELL_OUT_OF_RANGE;
+    switch (v.kind(i, j)) {
+        case tilesweep::CellKind::Empty:
+            *kind = TS_CELL_EMPTY;
+            break;
+        case tilesweep::CellKind::Solid:
+            *kind = TS_CELL_SOLID;
+            break;
+        case tilesweep::CellKind::OneWay:
+            *kind = TS_CELL_ONE_WAY;
+            break;
+    }
+    return TS_OK;
+}
+
+template <class Map>
+const Map* withoutOneWay(const Map* map) noexcept {
+    if (map == nullptr || map->isDropThrough) return map;
+    return map + 1;
 }
 
 template <class T>
@@ -326,20 +370,49 @@ const char* ts_error_message(int error) {
         case TS_ERROR_INEXACT_ARITHMETIC:
             return "arithmetic: the floating-point environment is not exact (rounding mode not to nearest, "
                    "fused multiply-add or excess precision); the library refuses every map";
+        case TS_ERROR_CELL_KIND:
+            return "cell: kind is not TS_CELL_EMPTY, TS_CELL_SOLID or TS_CELL_ONE_WAY, or is TS_CELL_ONE_WAY "
+                   "in a "
+                   "map made without one-way cells (use ts_map_create_one_way_*)";
     }
     return "unknown tilesweep error code";
 }
 
-ts_error ts_map_create_f(const ts_map_desc_f* desc, ts_map_f** out) { return createMap<float>(desc, out); }
-ts_error ts_map_create_d(const ts_map_desc_d* desc, ts_map_d** out) { return createMap<double>(desc, out); }
+ts_error ts_map_create_f(const ts_map_desc_f* desc, ts_map_f** out) {
+    return createMap<float>(desc, nullptr, false, out);
+}
+ts_error ts_map_create_d(const ts_map_desc_d* desc, ts_map_d** out) {
+    return createMap<double>(desc, nullptr, false, out);
+}
 void ts_map_destroy_f(ts_map_f* map) { destroyMap(map); }
 void ts_map_destroy_d(ts_map_d* map) { destroyMap(map); }
 ts_error ts_map_set_solid_f(ts_map_f* map, int32_t i, int32_t j, int solid) {
-    return setSolid<float>(map, i, j, solid);
+    return setCell<float>(map, i, j, solid != 0 ? TS_CELL_SOLID : TS_CELL_EMPTY);
 }
 ts_error ts_map_set_solid_d(ts_map_d* map, int32_t i, int32_t j, int solid) {
-    return setSolid<double>(map, i, j, solid);
+    return setCell<double>(map, i, j, solid != 0 ? TS_CELL_SOLID : TS_CELL_EMPTY);
 }
+
+ts_error ts_map_create_one_way_f(const ts_map_desc_f* desc, const uint8_t* one_way, ts_map_f** out) {
+    return createMap<float>(desc, one_way, true, out);
+}
+ts_error ts_map_create_one_way_d(const ts_map_desc_d* desc, const uint8_t* one_way, ts_map_d** out) {
+    return createMap<double>(desc, one_way, true, out);
+}
+ts_error ts_map_set_cell_f(ts_map_f* map, int32_t i, int32_t j, int kind) {
+    return setCell<float>(map, i, j, kind);
+}
+ts_error ts_map_set_cell_d(ts_map_d* map, int32_t i, int32_t j, int kind) {
+    return setCell<double>(map, i, j, kind);
+}
+ts_error ts_map_get_cell_f(const ts_map_f* map, int32_t i, int32_t j, uint8_t* kind) {
+    return getCell<float>(map, i, j, kind);
+}
+ts_error ts_map_get_cell_d(const ts_map_d* map, int32_t i, int32_t j, uint8_t* kind) {
+    return getCell<double>(map, i, j, kind);
+}
+const ts_map_f* ts_map_without_one_way_f(const ts_map_f* map) { return withoutOneWay(map); }
+const ts_map_d* ts_map_without_one_way_d(const ts_map_d* map) { return withoutOneWay(map); }
 
 int32_t ts_max_contacts_f(ts_vec2_f box, ts_vec2_f tile) {
     return tilesweep::maxContacts(tilesweep::Vec2<float>{box.x, box.y},

@@ -31,6 +31,12 @@
  *     y = r.position.y;
  *     velocity = ts_clip_velocity_f(velocity, &r);  // stops on floors, ceilings and walls
  *     ts_map_destroy_f(map);
+ *
+ * One-way (jump-through) cells (0.4): make the map with ts_map_create_one_way_f(&desc, one_way,
+ * &map) instead, one_way laid out as the cells, nonzero one-way. A frame that drops through the
+ * platforms passes ts_map_without_one_way_f(map) in place of map to any move or batch call.
+ * Every struct and function of 0.3 is unchanged (no struct grew a field), and a map made by
+ * ts_map_create_* has no one-way cells and resolves as it did.
  */
 
 #include <stddef.h>
@@ -38,7 +44,7 @@
 
 /* The version of this header; CMakeLists.txt reads the project version from these lines. */
 #define TILESWEEP_VERSION_MAJOR 0
-#define TILESWEEP_VERSION_MINOR 3
+#define TILESWEEP_VERSION_MINOR 4
 #define TILESWEEP_VERSION_PATCH 0
 /* major * 10000 + minor * 100 + patch, as ts_get_version() returns it. */
 #define TILESWEEP_VERSION \
@@ -80,8 +86,16 @@ typedef enum ts_error {
     TS_ERROR_CELL_OUT_OF_RANGE = 10,         /**< a cell index outside the map */
     TS_ERROR_OUT_OF_MEMORY = 11,             /**< allocation failed (map or pool creation only) */
     TS_ERROR_THREADS = 12,                   /**< a worker thread could not be started */
-    TS_ERROR_INEXACT_ARITHMETIC = 13         /**< rounding not to nearest, FMA or excess precision */
+    TS_ERROR_INEXACT_ARITHMETIC = 13,        /**< rounding not to nearest, FMA or excess precision */
+    TS_ERROR_CELL_KIND = 14                  /**< not a ts_cell_kind, or one-way in a map without them */
 } ts_error;
+
+/** What a cell holds (0.4): ts_map_set_cell_*, ts_map_get_cell_*. */
+typedef enum ts_cell_kind {
+    TS_CELL_EMPTY = 0,
+    TS_CELL_SOLID = 1,  /**< blocks from every side */
+    TS_CELL_ONE_WAY = 2 /**< blocks only a box moving down onto its top face from at or above it */
+} ts_cell_kind;
 
 /** How a move ended (ts_result_*.status). */
 typedef enum ts_move_status {
@@ -126,7 +140,7 @@ typedef struct ts_map_desc_f {
     int32_t columns;
     int32_t rows;
     const uint8_t* solid;
-    /** NULL: malloc and free. Otherwise the map (one block: its header and a copy of the cells)
+    /** NULL: malloc and free. Otherwise the map (one block: its headers and a copy of the cells)
      *  and the scratch list of a wide box's contacts come from it; it is copied into the map. */
     const ts_allocator* allocator;
 } ts_map_desc_f;
@@ -216,12 +230,39 @@ TILESWEEP_EXPORT const char* ts_error_message(int error);
  *  with ts_map_destroy_*). */
 TILESWEEP_EXPORT ts_error ts_map_create_f(const ts_map_desc_f* desc, ts_map_f** out);
 TILESWEEP_EXPORT ts_error ts_map_create_d(const ts_map_desc_d* desc, ts_map_d** out);
-/** Frees a map; NULL is allowed. */
+/** Frees a map; NULL is allowed, and so is a ts_map_without_one_way_* handle, which is ignored. */
 TILESWEEP_EXPORT void ts_map_destroy_f(ts_map_f* map);
 TILESWEEP_EXPORT void ts_map_destroy_d(ts_map_d* map);
-/** Sets cell (i, j) solid (nonzero) or empty, between frames. */
+/** Sets cell (i, j) solid (nonzero) or empty, between frames: ts_map_set_cell_* with
+ *  TS_CELL_SOLID or TS_CELL_EMPTY. */
 TILESWEEP_EXPORT ts_error ts_map_set_solid_f(ts_map_f* map, int32_t i, int32_t j, int solid);
 TILESWEEP_EXPORT ts_error ts_map_set_solid_d(ts_map_d* map, int32_t i, int32_t j, int solid);
+
+/** ts_map_create_* with one-way cells (0.4). one_way holds columns * rows bytes laid out as
+ *  desc->solid, nonzero one-way where desc->solid is zero (a solid byte wins); NULL gives a map
+ *  with none yet. Both are copied. The map keeps a one-way layer either way, so that
+ *  ts_map_set_cell_* can add platforms later; its frames that move down read that layer, which a
+ *  map from ts_map_create_* does not have and does not pay for. */
+TILESWEEP_EXPORT ts_error ts_map_create_one_way_f(const ts_map_desc_f* desc, const uint8_t* one_way,
+                                                  ts_map_f** out);
+TILESWEEP_EXPORT ts_error ts_map_create_one_way_d(const ts_map_desc_d* desc, const uint8_t* one_way,
+                                                  ts_map_d** out);
+/** Sets cell (i, j) to kind, a ts_cell_kind, between frames (0.4). TS_ERROR_CELL_KIND for any
+ *  other value, and for TS_CELL_ONE_WAY in a map made by ts_map_create_* (no one-way layer). */
+TILESWEEP_EXPORT ts_error ts_map_set_cell_f(ts_map_f* map, int32_t i, int32_t j, int kind);
+TILESWEEP_EXPORT ts_error ts_map_set_cell_d(ts_map_d* map, int32_t i, int32_t j, int kind);
+/** The ts_cell_kind of cell (i, j) into *kind, as moves through this map see it: through
+ *  ts_map_without_one_way_* a one-way cell is TS_CELL_EMPTY (0.4). */
+TILESWEEP_EXPORT ts_error ts_map_get_cell_f(const ts_map_f* map, int32_t i, int32_t j, uint8_t* kind);
+TILESWEEP_EXPORT ts_error ts_map_get_cell_d(const ts_map_d* map, int32_t i, int32_t j, uint8_t* kind);
+/** The same map with its one-way cells left out (0.4): every move through it treats each
+ *  TS_CELL_ONE_WAY cell as empty, which is how a player drops through a platform. Pass it in
+ *  place of map to any move or batch call for the frames that drop through; the choice is per
+ *  call and costs nothing. It is part of map: it shares map's cells (ts_map_set_* on map shows
+ *  in it), is valid until map is destroyed, and is never destroyed itself (ts_map_destroy_*
+ *  ignores it). NULL for NULL. */
+TILESWEEP_EXPORT const ts_map_f* ts_map_without_one_way_f(const ts_map_f* map);
+TILESWEEP_EXPORT const ts_map_d* ts_map_without_one_way_d(const ts_map_d* map);
 
 /** The most contacts one frame of a box this size can record: a buffer this large never falls
  *  short. 0 for sizes that are not finite and > 0. */

@@ -233,6 +233,210 @@ static void testAllocator(void) {
     CHECK(counts.live == 0 && counts.bytes == 0);
 }
 
+/* 6 columns x 6 rows of 16-pixel tiles: a solid floor on row 5 and a one-way platform on row 2,
+ * columns 1 to 3 (x in [16, 64], its top at y = 32). platformSolid is the same map without the
+ * platform, and platformOneWay its one-way layer (the byte under the solid (0, 5) is set too:
+ * a solid byte wins). */
+static const uint8_t platformSolid[36] = {
+    0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1,
+};
+static const uint8_t platformOneWay[36] = {
+    0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 0, 0,
+    0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0,
+};
+
+static void testOneWayFloat(void) {
+    ts_map_desc_f desc = {{0, 0}, {16, 16}, 6, 6, platformSolid, NULL};
+    ts_map_f* map = NULL;
+    ts_map_f* solidOnly = NULL;
+    const ts_map_f* drop;
+    ts_result_f r;
+    ts_contact_f contacts[8];
+    uint8_t kind = 99;
+    CHECK(ts_map_create_one_way_f(&desc, platformOneWay, &map) == TS_OK && map != NULL);
+    drop = ts_map_without_one_way_f(map);
+    CHECK(drop != NULL && drop != map && ts_map_without_one_way_f(drop) == drop);
+    CHECK(ts_map_without_one_way_f(NULL) == NULL);
+    /* The cells, as moves through each handle see them. */
+    CHECK(ts_map_get_cell_f(map, 2, 2, &kind) == TS_OK && kind == TS_CELL_ONE_WAY);
+    CHECK(ts_map_get_cell_f(drop, 2, 2, &kind) == TS_OK && kind == TS_CELL_EMPTY);
+    CHECK(ts_map_get_cell_f(map, 0, 5, &kind) == TS_OK && kind == TS_CELL_SOLID); /* solid wins */
+    CHECK(ts_map_get_cell_f(drop, 0, 5, &kind) == TS_OK && kind == TS_CELL_SOLID);
+    CHECK(ts_map_get_cell_f(map, 0, 2, &kind) == TS_OK && kind == TS_CELL_EMPTY);
+    CHECK(ts_map_get_cell_f(map, 6, 0, &kind) == TS_ERROR_CELL_OUT_OF_RANGE);
+    CHECK(ts_map_get_cell_f(map, 0, 0, NULL) == TS_ERROR_NULL_ARGUMENT);
+    {
+        /* Landed on: a 12x14 box at (20, 8), bottom 22, falls 16. Its bottom is above the top at
+         * 32 and it moves down, so it lands at t = 10/16 on (1, 2) alone (x in [20, 32] touches
+         * column 2 without overlapping it), at y = 18, normal (0, -1). */
+        ts_mover_f fall = {{{20, 8}, {12, 14}}, {0, 16}};
+        CHECK(ts_move_and_slide_f(map, &fall, &r, contacts, 8) == TS_OK);
+        CHECK(r.status == TS_MOVE_BLOCKED && r.position.x == 20.0f && r.position.y == 18.0f);
+        CHECK(r.on_ground && r.blocked_y && !r.on_ceiling && !r.on_wall);
+        CHECK(r.contact_count == 1 && r.contacts_stored && contacts[0].i == 1 && contacts[0].j == 2);
+        CHECK(contacts[0].nx == 0 && contacts[0].ny == -1 && contacts[0].time == 0.625f);
+        /* Dropped through: the same fall through the handle without one-way cells goes the whole
+         * way, to y = 24, inside the platform's row. */
+        CHECK(ts_move_and_slide_f(drop, &fall, &r, contacts, 8) == TS_OK);
+        CHECK(r.status == TS_MOVE_MOVED && r.position.y == 24.0f && r.contact_count == 0 && !r.on_ground);
+    }
+    {
+        /* Standing on it (bottom exactly at 32) and pushing down 8: it stays; dropping through,
+         * it falls the 8. */
+        ts_mover_f stand = {{{20, 18}, {12, 14}}, {0, 8}};
+        CHECK(ts_move_and_slide_f(map, &stand, &r, NULL, 0) == TS_OK);
+        CHECK(r.status == TS_MOVE_BLOCKED && r.position.y == 18.0f && r.on_ground);
+        CHECK(ts_move_and_slide_f(drop, &stand, &r, NULL, 0) == TS_OK);
+        CHECK(r.status == TS_MOVE_MOVED && r.position.y == 26.0f);
+    }
+    {
+        /* Jumped through: from below (y = 50, top 50 under the platform's bottom at 48) up 40, to
+         * y = 10: nothing blocks a move up. */
+        ts_mover_f jump = {{{20, 50}, {12, 14}}, {0, -40}};
+        CHECK(ts_move_and_slide_f(map, &jump, &r, NULL, 0) == TS_OK);
+        CHECK(r.status == TS_MOVE_MOVED && r.position.y == 10.0f && !r.on_ceiling);
+    }
+    {
+        /* Falling back while inside it (bottom 38 below the top at 32 at the start) goes on down,
+         * and the platform it overlaps is not a start overlap: those are solid tiles only. */
+        ts_mover_f inside = {{{20, 24}, {12, 14}}, {0, 8}};
+        CHECK(ts_move_and_slide_f(map, &inside, &r, NULL, 0) == TS_OK);
+        CHECK(r.status == TS_MOVE_MOVED && r.position.y == 32.0f && r.start_overlap_count == 0);
+    }
+    {
+        /* Walked into from the side: a box level with the platform (y in [34, 46]) walking right
+         * from x = 0 passes through it, to x = 40. */
+        ts_mover_f walk = {{{0, 34}, {12, 12}}, {40, 0}};
+        CHECK(ts_move_and_slide_f(map, &walk, &r, NULL, 0) == TS_OK);
+        CHECK(r.status == TS_MOVE_MOVED && r.position.x == 40.0f);
+    }
+    {
+        /* A batch through either handle gives what single moves through it give. */
+        ts_mover_f movers[2] = {{{{20, 8}, {12, 14}}, {0, 16}}, {{{40, 18}, {12, 14}}, {0, 8}}};
+        ts_result_f results[2];
+        CHECK(ts_move_and_slide_batch_f(map, movers, results, 2, NULL) == TS_OK);
+        CHECK(results[0].position.y == 18.0f && results[1].position.y == 18.0f && results[1].on_ground);
+        CHECK(ts_move_and_slide_batch_f(drop, movers, results, 2, NULL) == TS_OK);
+        CHECK(results[0].position.y == 24.0f && results[1].position.y == 26.0f && !results[1].on_ground);
+    }
+    {
+        /* Cells set between frames, seen through both handles: a platform at (4, 2) stops a fall
+         * at column 4 (x in [68, 80]), but not through the drop-through handle; emptied with
+         * ts_map_set_solid_f, it stops nothing. */
+        ts_mover_f fall = {{{68, 8}, {12, 14}}, {0, 16}};
+        CHECK(ts_move_and_slide_f(map, &fall, &r, NULL, 0) == TS_OK && r.position.y == 24.0f);
+        CHECK(ts_map_set_cell_f(map, 4, 2, TS_CELL_ONE_WAY) == TS_OK);
+        CHECK(ts_map_get_cell_f(map, 4, 2, &kind) == TS_OK && kind == TS_CELL_ONE_WAY);
+        CHECK(ts_move_and_slide_f(map, &fall, &r, NULL, 0) == TS_OK && r.position.y == 18.0f && r.on_ground);
+        CHECK(ts_move_and_slide_f(drop, &fall, &r, NULL, 0) == TS_OK && r.position.y == 24.0f);
+        CHECK(ts_map_set_solid_f(map, 4, 2, 0) == TS_OK);
+        CHECK(ts_map_get_cell_f(map, 4, 2, &kind) == TS_OK && kind == TS_CELL_EMPTY);
+        CHECK(ts_move_and_slide_f(map, &fall, &r, NULL, 0) == TS_OK && r.position.y == 24.0f);
+        /* Solid set over a one-way cell: solid through both handles. */
+        CHECK(ts_map_set_cell_f(map, 4, 2, TS_CELL_SOLID) == TS_OK);
+        CHECK(ts_map_get_cell_f(drop, 4, 2, &kind) == TS_OK && kind == TS_CELL_SOLID);
+        CHECK(ts_move_and_slide_f(drop, &fall, &r, NULL, 0) == TS_OK && r.position.y == 18.0f);
+        CHECK(ts_map_set_cell_f(map, 4, 2, TS_CELL_EMPTY) == TS_OK);
+        CHECK(ts_map_set_cell_f(map, 4, 2, 3) == TS_ERROR_CELL_KIND);
+        CHECK(ts_map_set_cell_f(map, 4, 2, -1) == TS_ERROR_CELL_KIND);
+        CHECK(ts_map_set_cell_f(map, 6, 2, TS_CELL_EMPTY) == TS_ERROR_CELL_OUT_OF_RANGE);
+        CHECK(ts_map_set_cell_f(NULL, 0, 0, TS_CELL_EMPTY) == TS_ERROR_NULL_ARGUMENT);
+    }
+    /* A map made by ts_map_create_f has no one-way layer: the platform cannot be set, its
+     * drop-through handle moves as it does, and ts_map_destroy_f ignores that handle. */
+    CHECK(ts_map_create_f(&desc, &solidOnly) == TS_OK);
+    CHECK(ts_map_set_cell_f(solidOnly, 2, 2, TS_CELL_ONE_WAY) == TS_ERROR_CELL_KIND);
+    CHECK(ts_map_get_cell_f(solidOnly, 2, 2, &kind) == TS_OK && kind == TS_CELL_EMPTY);
+    {
+        ts_mover_f fall = {{{20, 8}, {12, 14}}, {0, 16}};
+        CHECK(ts_move_and_slide_f(solidOnly, &fall, &r, NULL, 0) == TS_OK && r.position.y == 24.0f);
+        CHECK(ts_move_and_slide_f(ts_map_without_one_way_f(solidOnly), &fall, &r, NULL, 0) == TS_OK &&
+              r.position.y == 24.0f);
+    }
+    ts_map_destroy_f((ts_map_f*)drop); /* ignored: the map still resolves */
+    {
+        ts_mover_f stand = {{{20, 18}, {12, 14}}, {0, 8}};
+        CHECK(ts_move_and_slide_f(map, &stand, &r, NULL, 0) == TS_OK && r.position.y == 18.0f);
+    }
+    {
+        ts_map_f* refused = map;
+        CHECK(ts_map_create_one_way_f(NULL, platformOneWay, &refused) == TS_ERROR_NULL_ARGUMENT &&
+              refused == NULL);
+    }
+    ts_map_destroy_f(solidOnly);
+    ts_map_destroy_f(map);
+}
+
+static void testOneWayDouble(void) {
+    /* testOneWayFloat's landing and drop, in double, with the allocator: one block, freed once. */
+    ts_map_desc_d desc = {{0, 0}, {16, 16}, 6, 6, platformSolid, NULL};
+    Counts counts = {0, 0, 0, 0};
+    ts_allocator allocator = {countingAllocate, countingRelease, NULL};
+    ts_map_d* map = NULL;
+    ts_mover_d fall = {{{20, 8}, {12, 14}}, {0, 16}};
+    ts_result_d r;
+    uint8_t kind = 99;
+    allocator.user = &counts;
+    desc.allocator = &allocator;
+    CHECK(ts_map_create_one_way_d(&desc, platformOneWay, &map) == TS_OK && counts.live == 1);
+    CHECK(ts_map_get_cell_d(map, 1, 2, &kind) == TS_OK && kind == TS_CELL_ONE_WAY);
+    CHECK(ts_move_and_slide_d(map, &fall, &r, NULL, 0) == TS_OK);
+    CHECK(r.status == TS_MOVE_BLOCKED && r.position.y == 18.0 && r.on_ground);
+    CHECK(ts_move_and_slide_d(ts_map_without_one_way_d(map), &fall, &r, NULL, 0) == TS_OK);
+    CHECK(r.status == TS_MOVE_MOVED && r.position.y == 24.0);
+    CHECK(ts_map_set_cell_d(map, 1, 2, TS_CELL_EMPTY) == TS_OK);
+    CHECK(ts_move_and_slide_d(map, &fall, &r, NULL, 0) == TS_OK && r.position.y == 24.0);
+    CHECK(ts_map_set_cell_d(map, 1, 2, TS_CELL_ONE_WAY) == TS_OK);
+    CHECK(ts_move_and_slide_d(map, &fall, &r, NULL, 0) == TS_OK && r.position.y == 18.0);
+    ts_map_destroy_d((ts_map_d*)ts_map_without_one_way_d(map)); /* ignored */
+    CHECK(counts.live == 1);
+    /* Without a one-way layer (NULL): every platform byte reads empty. */
+    {
+        ts_map_d* none = NULL;
+        CHECK(ts_map_create_one_way_d(&desc, NULL, &none) == TS_OK && counts.live == 2);
+        CHECK(ts_map_get_cell_d(none, 1, 2, &kind) == TS_OK && kind == TS_CELL_EMPTY);
+        CHECK(ts_move_and_slide_d(none, &fall, &r, NULL, 0) == TS_OK && r.position.y == 24.0);
+        ts_map_destroy_d(none);
+    }
+    ts_map_destroy_d(map);
+    CHECK(counts.live == 0 && counts.bytes == 0);
+}
+
+static void testSolidOnlyUnchanged(void) {
+    /* A solid-only caller: the same moves through ts_map_create_f's map, through
+     * ts_map_create_one_way_f's with no one-way layer, and through either's drop-through handle
+     * give the same results, bit for bit (level, 300 moves of a 10x10 box). */
+    ts_map_desc_f desc = {{0, 0}, {16, 16}, 8, 4, level, NULL};
+    ts_map_f* plain = NULL;
+    ts_map_f* layered = NULL;
+    int k;
+    CHECK(ts_map_create_f(&desc, &plain) == TS_OK && ts_map_create_one_way_f(&desc, NULL, &layered) == TS_OK);
+    for (k = 0; k < 300; ++k) {
+        ts_mover_f m = {{{(float)(k % 100), (float)(k % 37)}, {10, 10}},
+                        {(float)(k % 13) - 6.5f, (float)(k % 7) * 4.25f - 12.0f}};
+        ts_result_f a, b, c, d;
+        ts_contact_f ca[8], cb[8];
+        memset(&a, 0, sizeof a);
+        memset(&b, 0, sizeof b);
+        memset(&c, 0, sizeof c);
+        memset(&d, 0, sizeof d);
+        CHECK(ts_move_and_slide_f(plain, &m, &a, ca, 8) == TS_OK);
+        CHECK(ts_move_and_slide_f(layered, &m, &b, cb, 8) == TS_OK);
+        CHECK(ts_move_and_slide_f(ts_map_without_one_way_f(plain), &m, &c, NULL, 0) == TS_OK);
+        CHECK(ts_move_and_slide_f(ts_map_without_one_way_f(layered), &m, &d, NULL, 0) == TS_OK);
+        CHECK(memcmp(&a, &b, sizeof a) == 0 && a.contacts_stored);
+        for (int n = 0; n < a.contact_count && n < 8; ++n)
+            CHECK(ca[n].i == cb[n].i && ca[n].j == cb[n].j && ca[n].nx == cb[n].nx && ca[n].ny == cb[n].ny &&
+                  ca[n].time == cb[n].time && ca[n].position.x == cb[n].position.x &&
+                  ca[n].position.y == cb[n].position.y);
+        CHECK(memcmp(&a.position, &c.position, sizeof a.position) == 0 && a.on_ground == c.on_ground);
+        CHECK(memcmp(&c, &d, sizeof c) == 0);
+    }
+    ts_map_destroy_f(plain);
+    ts_map_destroy_f(layered);
+}
+
 static void testRefusedMovesLeaveContactsAlone(void) {
     /* A refused move stores no contact: the buffer keeps what the caller put in it. */
     ts_map_desc_f desc = {{0, 0}, {16, 16}, 8, 4, level, NULL};
@@ -308,12 +512,13 @@ static void testVersion(void) {
 
 static void testMessages(void) {
     int code;
-    for (code = 0; code <= 13; ++code) {
+    for (code = 0; code <= 14; ++code) {
         const char* m = ts_error_message(code);
         CHECK(m != NULL && strlen(m) > 0 && strcmp(m, "unknown tilesweep error code") != 0);
     }
     CHECK(strcmp(ts_error_message(99), "unknown tilesweep error code") == 0);
     CHECK(strstr(ts_error_message(TS_ERROR_MAP_NON_POSITIVE_TILE_SIZE), "tile_size") != NULL);
+    CHECK(strstr(ts_error_message(TS_ERROR_CELL_KIND), "TS_CELL_ONE_WAY") != NULL);
 }
 
 int main(void) {
@@ -326,6 +531,9 @@ int main(void) {
     testRefusedMovesLeaveContactsAlone();
     testVersion();
     testTaskSystem();
+    testOneWayFloat();
+    testOneWayDouble();
+    testSolidOnlyUnchanged();
     if (failures != 0) {
         fprintf(stderr, "%d checks failed\n", failures);
         return 1;
