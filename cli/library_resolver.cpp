@@ -51,6 +51,7 @@ std::vector<FrameResult<T>> resolveThrough(typename CTypes<T>::Function function
     in.map.rows = scene.map.rows;
     in.map.solid = scene.map.solid.data();
     in.map.allocator = nullptr;
+    in.one_way = scene.map.oneWay.empty() ? nullptr : scene.map.oneWay.data();
     in.box.pos = {scene.box.pos.x, scene.box.pos.y};
     in.box.size = {scene.box.size.x, scene.box.size.y};
     std::vector<typename C::VecT> moves;

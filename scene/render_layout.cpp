@@ -12,7 +12,8 @@ SceneLayout<T>::SceneLayout(const Scene<T>& scene_, const std::vector<FrameResul
     : scene(scene_), frames(frames_) {
     const TileMap<T>& map = scene.map;
     if (map.columns < 0 || map.rows < 0 ||
-        map.solid.size() != static_cast<std::size_t>(map.columns) * static_cast<std::size_t>(map.rows))
+        map.solid.size() != static_cast<std::size_t>(map.columns) * static_cast<std::size_t>(map.rows) ||
+        (!map.oneWay.empty() && map.oneWay.size() != map.solid.size()))
         throw std::invalid_argument("renderSceneSvg: the map's cells do not match its size");
     if (frames.size() != scene.moves.size())
         throw std::invalid_argument("renderSceneSvg: " + std::to_string(frames.size()) + " frames for " +

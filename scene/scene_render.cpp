@@ -36,6 +36,11 @@ constexpr const char* kTileStroke = "#57606a";
 constexpr const char* kMapFill = "#f6f8fa";
 constexpr const char* kGrid = "#d0d7de";
 constexpr const char* kOverlapStroke = "#bf8700";
+// One-way tiles green: a slab at the cell's top (its only face) and a dashed outline of the cell.
+constexpr const char* kOneWayFill = "#2da44e";
+constexpr const char* kOneWayStroke = "#116329";
+/// The slab's height, as a fraction of the cell's.
+constexpr Real kOneWaySlab = 0.25L;
 constexpr const char* kFont = "font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\"";
 constexpr const char* kMonoFont = "font-family=\"DejaVu Sans Mono, Menlo, Consolas, monospace\"";
 // A white outline under label text keeps it readable over tiles and lines.
@@ -79,7 +84,7 @@ public:
 
     std::string render() {
         listing_ = listingLines();
-        layout_.fit(countCodePoints(title()), countCodePoints(caption()), listing_, kLegendItems);
+        layout_.fit(countCodePoints(title()), countCodePoints(caption()), listing_, legendItems());
         out_.reserve(8192 + frames_.size() * 512 + scene_.map.solid.size() * 96);
         out_ += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" +
                 px(layout_.canvasWidth) + "\" height=\"" + px(layout_.canvasHeight) + "\" viewBox=\"0 0 " +
@@ -179,6 +184,7 @@ private:
                            tileStyle + " data-cell=\"" + std::to_string(i) + "," + std::to_string(j) + "\"");
             }
         }
+        appendOneWayTiles(cellW, cellH);
         appendRect(out_, left, top, right - left, bottom - top,
                    std::string("fill=\"none\" stroke=\"") + kTileStroke + "\" stroke-width=\"1.2\"");
 
@@ -194,6 +200,38 @@ private:
             appendText(out_, left - 5, layout_.view.y((static_cast<Real>(j) + 0.5L) * layout_.th) + 3.5L,
                        std::to_string(j), "end", indexStyle);
         out_ += "</g>\n";
+    }
+
+    /// One-way tiles, in their own style: a slab along the top face (`class="tile-one-way"`, one
+    /// per cell) over a dashed outline of the rest of the cell (`class="one-way-outline"`).
+    void appendOneWayTiles(Real cellW, Real cellH) {
+        const TileMap<T>& map = scene_.map;
+        if (!hasOneWay()) return;
+        const std::string outlineStyle =
+            std::string("fill=\"none\" stroke=\"") + kOneWayStroke +
+            "\" stroke-width=\"1\" stroke-dasharray=\"3 2\" class=\"one-way-outline\"";
+        const std::string slabStyle = std::string("fill=\"") + kOneWayFill + "\" stroke=\"" + kOneWayStroke +
+                                      "\" stroke-width=\"1\" class=\"tile-one-way\"";
+        const Real slab = std::min(std::max(cellH * kOneWaySlab, Real{1}), cellH);
+        const TileMapView<T> view = map.view();
+        for (std::int32_t j = 0; j < map.rows; ++j) {
+            for (std::int32_t i = 0; i < map.columns; ++i) {
+                if (view.kind(i, j) != CellKind::OneWay) continue;
+                const std::string cell = " data-cell=\"" + std::to_string(i) + "," + std::to_string(j) + "\"";
+                const Real x = layout_.view.x(static_cast<Real>(i) * layout_.tw);
+                const Real y = layout_.view.y(static_cast<Real>(j) * layout_.th);
+                appendRect(out_, x, y, cellW, cellH, outlineStyle + cell);
+                appendRect(out_, x, y, cellW, slab, slabStyle + cell);
+            }
+        }
+    }
+
+    /// True when the map holds a one-way cell: only then does the legend show one.
+    [[nodiscard]] bool hasOneWay() const {
+        const TileMap<T>& map = scene_.map;
+        for (std::size_t k = 0; k < map.oneWay.size(); ++k)
+            if (map.oneWay[k] != 0 && map.solid[k] == 0) return true;
+        return false;
     }
 
     /// Started-overlapping hatches and hit-tile outlines, each cell once.
@@ -380,15 +418,27 @@ private:
         }
     }
 
-    static constexpr std::size_t kLegendItems = 11;
+    /// The legend's items 0 to 10; kOneWayItem follows the solid tile when the map has one-way cells.
+    static constexpr std::size_t kFixedLegendItems = 11;
+    static constexpr std::size_t kOneWayItem = kFixedLegendItems;
+
+    [[nodiscard]] std::size_t legendItems() const { return kFixedLegendItems + (hasOneWay() ? 1 : 0); }
+
+    /// The item shown at legend slot `slot`.
+    [[nodiscard]] std::size_t legendItemAt(std::size_t slot) const {
+        if (!hasOneWay() || slot == 0) return slot;
+        return slot == 1 ? kOneWayItem : slot - 1;
+    }
 
     void appendLegend() {
         out_ += "<g class=\"legend\">\n";
         const std::string textStyle = std::string("font-size=\"12\" ") + kFont + " fill=\"" + kInk + "\"";
-        for (std::size_t item = 0; item < kLegendItems; ++item) {
-            const Real x = 16 + static_cast<Real>(item % layout_.legendColumns) * kLegendColumnWidth;
+        const std::size_t items = legendItems();
+        for (std::size_t slot = 0; slot < items; ++slot) {
+            const Real x = 16 + static_cast<Real>(slot % layout_.legendColumns) * kLegendColumnWidth;
             const Real y =
-                layout_.legendTop + static_cast<Real>(item / layout_.legendColumns) * kLegendRowHeight;
+                layout_.legendTop + static_cast<Real>(slot / layout_.legendColumns) * kLegendRowHeight;
+            const std::size_t item = legendItemAt(slot);
             appendLegendSwatch(item, x, y);
             appendText(out_, x + 34, y + 11, legendText(item), "start", textStyle);
         }
@@ -448,6 +498,13 @@ private:
             case 9:
                 appendArrowShape(out_, x + 2, y + 7, 1, 0, 24, kContactRed);
                 break;
+            case kOneWayItem:
+                appendRect(
+                    out_, x, y, 26, 14,
+                    std::string("fill=\"none\" stroke=\"") + kOneWayStroke + "\" stroke-dasharray=\"3 2\"");
+                appendRect(out_, x, y, 26, 14 * kOneWaySlab,
+                           std::string("fill=\"") + kOneWayFill + "\" stroke=\"" + kOneWayStroke + "\"");
+                break;
             default:
                 appendRect(out_, x, y, 26, 14,
                            std::string("fill=\"url(#tilesweep-hatch)\" stroke=\"") + kOverlapStroke +
@@ -478,6 +535,8 @@ private:
                 return "tile hit";
             case 9:
                 return "contact normal, from the face hit";
+            case kOneWayItem:
+                return "one-way tile (blocks from above)";
             default:
                 return "started overlapping";
         }

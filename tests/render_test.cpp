@@ -279,6 +279,64 @@ TEST(renderSceneSvg, drawsOneRectPerSolidTileAtItsCell) {
     EXPECT_NEAR(number(at("1,2"), "y") - number(at("0,0"), "y"), 2 * number(at("0,0"), "height"), 0.02);
 }
 
+TEST(renderSceneSvg, drawsOneWayTilesInTheirOwnStyle) {
+    // A platform "--" at row 1 over a solid floor; the box lands on the platform.
+    const std::string svg =
+        render(R"({"map": {"origin": [0, 0], "tile": [16, 8], "rows": ["....", ".--.", "####"]},)"
+               R"( "box": [18, 0, 6, 4], "move": [0, 6]})");
+    ASSERT_TRUE(wellFormed(svg));
+    const std::vector<std::string> slabs = elementsOfClass(svg, "rect", "tile-one-way");
+    const std::vector<std::string> outlines = elementsOfClass(svg, "rect", "one-way-outline");
+    const std::vector<std::string> solids = elementsOfClass(svg, "rect", "tile-solid");
+    ASSERT_EQ(slabs.size(), 2u);
+    ASSERT_EQ(outlines.size(), 2u);
+    ASSERT_EQ(solids.size(), 4u);  // the platform is not drawn as solid
+    std::set<std::string> slabCells, outlineCells;
+    for (const std::string& slab : slabs) slabCells.insert(attribute(slab, "data-cell"));
+    for (const std::string& outline : outlines) outlineCells.insert(attribute(outline, "data-cell"));
+    EXPECT_EQ(slabCells, (std::set<std::string>{"1,1", "2,1"}));
+    EXPECT_EQ(outlineCells, slabCells);
+    // Its own colour, and the outline dashed and unfilled.
+    EXPECT_NE(attribute(slabs[0], "fill"), attribute(solids[0], "fill"));
+    EXPECT_NE(attribute(slabs[0], "fill"), "none");
+    EXPECT_EQ(attribute(outlines[0], "fill"), "none");
+    EXPECT_FALSE(attribute(outlines[0], "stroke-dasharray").empty());
+    EXPECT_EQ(solids[0].find("stroke-dasharray"), std::string::npos);
+    // The slab lies along the top face: the cell's x, y and width, a quarter of its height. A
+    // solid tile's rect is the whole cell: same width, four times the slab's height.
+    for (const std::string& slab : slabs) {
+        const std::string cell = attribute(slab, "data-cell");
+        const std::string outline =
+            *std::find_if(outlines.begin(), outlines.end(),
+                          [&](const std::string& o) { return attribute(o, "data-cell") == cell; });
+        EXPECT_NEAR(number(slab, "x"), number(outline, "x"), 0.02) << cell;
+        EXPECT_NEAR(number(slab, "y"), number(outline, "y"), 0.02) << cell;
+        EXPECT_NEAR(number(slab, "width"), number(outline, "width"), 0.02) << cell;
+        EXPECT_NEAR(number(outline, "width"), number(solids[0], "width"), 0.02) << cell;
+        EXPECT_NEAR(number(outline, "height"), number(solids[0], "height"), 0.02) << cell;
+        EXPECT_NEAR(4 * number(slab, "height"), number(solids[0], "height"), 0.05) << cell;
+    }
+    // The platform's row is one tile height above the floor's.
+    EXPECT_NEAR(number(solids[0], "y") - number(slabs[0], "y"), number(solids[0], "height"), 0.02);
+    // The legend names it, and only for a map that has one.
+    EXPECT_NE(svg.find("one-way tile"), std::string::npos);
+    const std::string plain =
+        render(R"({"map": {"origin": [0, 0], "tile": [16, 8], "rows": ["....", "####"]},)"
+               R"( "box": [18, 0, 6, 4], "move": [0, 6]})");
+    EXPECT_EQ(plain.find("one-way tile"), std::string::npos);
+    EXPECT_TRUE(elementsOfClass(plain, "rect", "tile-one-way").empty());
+    EXPECT_TRUE(elementsOfClass(plain, "rect", "one-way-outline").empty());
+}
+
+TEST(renderSceneSvg, refusesAOneWayLayerThatDoesNotMatchTheMap) {
+    Scene<float> scene = parsed<float>(kWallScene);
+    const std::vector<FrameResult<float>> frames = runScene(scene);
+    scene.map.oneWay.assign(scene.map.solid.size() - 1, 1);
+    EXPECT_THROW((void)renderSceneSvg(scene, frames), std::invalid_argument);
+    scene.map.oneWay.assign(scene.map.solid.size(), 0);
+    EXPECT_NO_THROW((void)renderSceneSvg(scene, frames));
+}
+
 TEST(renderSceneSvg, showsTheSceneNameAsTitleEscaped) {
     const std::string svg =
         render(R"({"name": "a < b & \"c\" \u0001 d", "map": {"origin": [0, 0], "tile": [16, 16],)"

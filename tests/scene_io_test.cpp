@@ -25,6 +25,7 @@
 namespace {
 
 using tilesweep::Cell;
+using tilesweep::CellKind;
 using tilesweep::Contact;
 using tilesweep::formatError;
 using tilesweep::formatFrames;
@@ -393,6 +394,34 @@ TYPED_TEST(SceneReaderTyped, raggedRowsAreRefused) {
                                  "row 2 has length 3"));
 }
 
+TYPED_TEST(SceneReaderTyped, oneWayCellsReadIntoOneWay) {
+    using T = TypeParam;
+    const Scene<T> scene = parsed<T>(mapLine("[0, 0]", "[16, 16]", R"(["#-.", "--#"])"));
+    ASSERT_EQ(scene.map.columns, 3);
+    ASSERT_EQ(scene.map.rows, 2);
+    EXPECT_EQ(scene.map.solid, (std::vector<std::uint8_t>{1, 0, 0, 0, 0, 1}));
+    EXPECT_EQ(scene.map.oneWay, (std::vector<std::uint8_t>{0, 1, 0, 1, 1, 0}));
+    const auto view = scene.map.view();
+    ASSERT_NE(view.oneWay, nullptr);
+    EXPECT_EQ(view.kind(0, 0), CellKind::Solid);
+    EXPECT_EQ(view.kind(1, 0), CellKind::OneWay);
+    EXPECT_EQ(view.kind(2, 0), CellKind::Empty);
+    EXPECT_EQ(view.kind(0, 1), CellKind::OneWay);
+    EXPECT_EQ(view.kind(1, 1), CellKind::OneWay);
+    EXPECT_EQ(view.kind(2, 1), CellKind::Solid);
+    EXPECT_FALSE(view.isSolid(1, 0));
+}
+
+TYPED_TEST(SceneReaderTyped, aMapWithoutOneWayCellsLeavesOneWayEmpty) {
+    using T = TypeParam;
+    const Scene<T> scene = parsed<T>(sceneLine());  // kMap: '#' and '.' only
+    ASSERT_EQ(scene.map.solid.size(), 24u);
+    EXPECT_TRUE(scene.map.oneWay.empty());
+    EXPECT_EQ(scene.map.view().oneWay, nullptr);
+    const Scene<T> empty = parsed<T>(mapLine("[0, 0]", "[16, 16]", "[]"));
+    EXPECT_TRUE(empty.map.oneWay.empty());
+}
+
 TYPED_TEST(SceneReaderTyped, unknownTileCharactersAreNamedWithRowAndColumn) {
     using T = TypeParam;
     EXPECT_TRUE(refusedNaming<T>(mapLine("[0, 0]", "[16, 16]", R"(["...", ".x."])"), "map.rows[1]",
@@ -402,6 +431,12 @@ TYPED_TEST(SceneReaderTyped, unknownTileCharactersAreNamedWithRowAndColumn) {
     // "é" is two bytes; the first is reported as a byte.
     EXPECT_TRUE(refusedNaming<T>(mapLine("[0, 0]", "[16, 16]", "[\"\xc3\xa9\"]"), "map.rows[0]",
                                  "byte 0xC3 at column 0"));
+    // The message names the three characters a row may hold.
+    const SceneParse<T> bad = parseScene<T>(mapLine("[0, 0]", "[16, 16]", R"(["-=."])"));
+    ASSERT_FALSE(bad.scene);
+    EXPECT_NE(bad.error.find("'='"), std::string::npos) << bad.error;
+    for (const char* allowed : {"'#'", "'-'", "'.'"})
+        EXPECT_NE(bad.error.find(allowed), std::string::npos) << allowed << " in " << bad.error;
 }
 
 TYPED_TEST(SceneReaderTyped, moveAndMovesAreExclusiveAndMovesIsNotEmpty) {
@@ -473,6 +508,7 @@ void expectSameScene(const Scene<T>& actual, const Scene<T>& expected) {
     EXPECT_EQ(actual.map.columns, expected.map.columns);
     EXPECT_EQ(actual.map.rows, expected.map.rows);
     EXPECT_EQ(actual.map.solid, expected.map.solid);
+    EXPECT_EQ(actual.map.oneWay, expected.map.oneWay);
     EXPECT_TRUE(sameBits(actual.box.pos.x, expected.box.pos.x));
     EXPECT_TRUE(sameBits(actual.box.pos.y, expected.box.pos.y));
     EXPECT_TRUE(sameBits(actual.box.size.x, expected.box.size.x));
@@ -517,6 +553,21 @@ TYPED_TEST(SceneReaderTyped, formattedScenesWriteHexfloatsAsPrintfDoes) {
         EXPECT_EQ(json["map"]["tile"][0], "0x1.999999999999ap-4");
         EXPECT_EQ(json["box"][2], "0x0.0000000000001p-1022");
     }
+}
+
+TYPED_TEST(SceneReaderTyped, aSceneWithOneWayCellsWrittenAndReadBackIsIdentical) {
+    using T = TypeParam;
+    Scene<T> scene = trickyScene<T>();  // rows ".#", "#.", ".."
+    scene.map.set(0, 2, CellKind::OneWay);
+    scene.map.set(1, 2, CellKind::OneWay);
+    scene.map.set(0, 0, CellKind::OneWay);
+    ASSERT_EQ(scene.map.oneWay, (std::vector<std::uint8_t>{1, 0, 0, 0, 1, 1}));
+    const std::string line = formatScene(scene);
+    EXPECT_EQ(nlohmann::json::parse(line)["map"]["rows"], nlohmann::json({"-#", "#.", "--"}));
+    const SceneParse<T> back = parseScene<T>(line);
+    ASSERT_TRUE(back.scene) << back.error << "\n" << line;
+    expectSameScene(*back.scene, scene);
+    EXPECT_EQ(formatScene(*back.scene), line);
 }
 
 TEST(SceneWriter, alwaysWritesMovesAndWritesNameOnlyWhenSet) {

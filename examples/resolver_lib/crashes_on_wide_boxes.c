@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* A resolver library that dies (SIGSEGV) on every box wider than a tile, and answers the others
- * by moving through everything: ctest checks that its crash fails scenes, not the tool. */
+ * by moving through everything, one-way cells (s->one_way) as well as solid ones: ctest checks
+ * that its crash fails scenes, not the tool. */
 #include "tilesweep/resolver_lib.h"
 
 #include <signal.h>

@@ -16,7 +16,8 @@
  *
  * One call resolves one scene: the map, the box, and its moves, one a frame, each starting where
  * the last ended. For frame k it writes frames[k]: the end position, the contacts in the order
- * the box met them, and the solid cells the box overlapped at the frame's start. The tool gives
+ * the box met them, and the solid cells the box overlapped at the frame's start (never a
+ * one-way cell). The tool gives
  * each frame room for contact_capacity contacts and start_overlap_capacity cells; when a frame
  * needs more, set its count to what it needs and return TS_USER_NEEDS_ROOM: the tool calls
  * again with that much room. Return TS_USER_OK when every frame is written, and any other value
@@ -51,18 +52,24 @@ typedef struct ts_cell {
 } ts_cell;
 
 /** One scene: map.solid holds map.columns * map.rows cells, row by row from the top, nonzero
- *  solid (map.allocator is NULL); moves holds move_count displacements. */
+ *  solid (map.allocator is NULL); moves holds move_count displacements. one_way (0.4) is NULL
+ *  when the scene has no one-way cell ('-' in a scene file), and otherwise holds a byte per cell
+ *  laid out as map.solid, nonzero one-way where map.solid is zero (../shared/CONTRACT.md,
+ *  "One-way tiles"); ts_map_create_one_way_* takes the two as they are. It is the last field,
+ *  so a library built against an older header reads the scene it knows. */
 typedef struct ts_scene_f {
     ts_map_desc_f map;
     ts_box_f box;
     const ts_vec2_f* moves;
     int32_t move_count;
+    const uint8_t* one_way;
 } ts_scene_f;
 typedef struct ts_scene_d {
     ts_map_desc_d map;
     ts_box_d box;
     const ts_vec2_d* moves;
     int32_t move_count;
+    const uint8_t* one_way;
 } ts_scene_d;
 
 /** One frame's answer. The tool sets the buffers and their capacities; the resolver sets the
