@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""Writes N random scene lines (../shared/CONTRACT.md, "Scene files") for timing an engine
+"""Writes N random scene lines (docs/contract.md, "Scene files") for timing an engine
 adapter alone: small maps of 16-pixel tiles placed at a spread of distances from the origin
 (0, 2^10, 2^16, 2^20, 2^24), boxes and moves of platformer sizes, one to four frames, every
 number a float32 written as a hexfloat string, as `tilesweep check` writes them.

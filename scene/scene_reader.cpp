@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Reading one scene line (../shared/CONTRACT.md, "Scene files") into a Scene<T>.
+// Reading one scene line (docs/contract.md, "Scene files") into a Scene<T>.
 #include "json_value.h"
 
 #include "tilesweep/scene/scalar_text.h"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Writing scenes and the output lines of `tilesweep resolve` (../shared/CONTRACT.md).
+// Writing scenes and the output lines of `tilesweep resolve` (docs/contract.md).
 #include "tilesweep/scene/scalar_text.h"
 #include "tilesweep/scene/scene.h"
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Hand-worked cases of the contract (../shared/CONTRACT.md) and the seed article. Every expected
+// Hand-worked cases of the contract (docs/contract.md) and the seed article. Every expected
 // value below is derived in the comment above it from the contract's rules, not copied from the
 // program's output.
 #include "tilesweep/resolve.h"

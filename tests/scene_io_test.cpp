@@ -2,7 +2,7 @@
 // The scene layer: reading scene lines (every error names its field; numbers are rounded once,
 // straight to the scalar type), writing them back bit for bit, the `tilesweep resolve` output
 // format, and runScene's chaining of frames. Expected values are worked out by hand from
-// ../shared/CONTRACT.md and IEEE 754 rounding, not copied from program output.
+// docs/contract.md and IEEE 754 rounding, not copied from program output.
 #include "tilesweep/scene/scene.h"
 
 #include <gtest/gtest.h>

@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-// One box swept against one tile, with the exact rules of ../shared/CONTRACT.md: per-axis open
+// One box swept against one tile, with the exact rules of docs/contract.md: per-axis open
 // time intervals, their intersection I, blocking when the box does not overlap the tile at
 // t = 0 and I meets (0, 1), time of impact inf I. Touching is not overlapping, so a path through
 // a corner point exactly does not block, and neither does one whose swept bounds overlap the

@@ -7,14 +7,14 @@
 
 #include <cstdint>
 
-// One frame of move-and-slide through a tile map, exactly as ../shared/CONTRACT.md defines it.
+// One frame of move-and-slide through a tile map, exactly as docs/contract.md defines it.
 //
 // The box moves by `displacement` over the frame; "time" is the fraction of the frame elapsed,
 // in [0, 1]. At most two steps: the first contact (every tile hit at that earliest time is taken
 // at once) zeroes the motion on its contact axes, and the rest of the motion slides on. Every
 // decision (hit or miss, which tiles, contact axis, normal) is exact; the final position is the
 // exact one rounded toward the start, per axis, except that an axis moving toward minus infinity
-// rounds down when rounding back would carry the box's far edge over a grid line (CONTRACT.md,
+// rounds down when rounding back would carry the box's far edge over a grid line (docs/contract.md,
 // "Positions"). So the box never ends inside a tile it did not start inside, stops touching a
 // face it hits or less than an ulp short, and never moves past the exact motion but by less
 // than an ulp on such an axis.

@@ -54,7 +54,7 @@ typedef struct ts_cell {
 /** One scene: map.solid holds map.columns * map.rows cells, row by row from the top, nonzero
  *  solid (map.allocator is NULL); moves holds move_count displacements. one_way (0.4) is NULL
  *  when the scene has no one-way cell ('-' in a scene file), and otherwise holds a byte per cell
- *  laid out as map.solid, nonzero one-way where map.solid is zero (../shared/CONTRACT.md,
+ *  laid out as map.solid, nonzero one-way where map.solid is zero (docs/contract.md,
  *  "One-way tiles"); ts_map_create_one_way_* takes the two as they are. It is the last field,
  *  so a library built against an older header reads the scene it knows. */
 typedef struct ts_scene_f {

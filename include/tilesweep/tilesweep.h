@@ -5,7 +5,7 @@
 /* The C API of tilesweep: plain C99, for C, C#, Rust, Zig, LuaJIT's FFI and GDExtension.
  *
  * The same resolver as the C++ API (tilesweep/mover.h, tilesweep/batch.h), bit for bit: exact
- * swept-AABB move-and-slide of boxes through a tile map (../shared/CONTRACT.md). x grows to the
+ * swept-AABB move-and-slide of boxes through a tile map (docs/contract.md). x grows to the
  * right, y downward; landing on a floor is the normal (0, -1). Every function with a suffix _f
  * works in float, _d in double. Nothing throws and nothing aborts: every function that can fail
  * returns a ts_error, ts_error_message names it, and a result is written only on TS_OK (or, for

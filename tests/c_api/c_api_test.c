@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The C API from C99: a map prepared once, single moves with and without contacts, a batch on
  * two threads, and every error code for bad input (none aborts). Expected values are worked
- * out in the comments from ../shared/CONTRACT.md. Exit status 0 when every check holds. */
+ * out in the comments from docs/contract.md. Exit status 0 when every check holds. */
 #include "tilesweep/tilesweep.h"
 
 #include <math.h>

@@ -12,7 +12,7 @@
 #include <vector>
 
 // Scenes and their results as the command-line tool, the regression corpus and outside
-// harnesses exchange them: one JSON object per line (../shared/CONTRACT.md, "Scene files").
+// harnesses exchange them: one JSON object per line (docs/contract.md, "Scene files").
 // This layer owns its containers; it is part of the `tilesweep_scene` target, not of the
 // dependency-free core library.
 
