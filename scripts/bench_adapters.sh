@@ -40,6 +40,7 @@ engines=(
     "box2d|$build/adapters/tilesweep_box2d_adapter|Box2D 2.4 b2TimeOfImpact per tile (C++)"
     "godot|${TILESWEEP_ADAPTERS:-$root/adapters}/godot/run.sh {in} {out}|Godot 3 body_test_motion (GDScript, file mode)"
     "rapier|${TILESWEEP_ADAPTERS:-$root/adapters}/rapier/run.sh|Rapier KinematicCharacterController (node, pipe)"
+    "phaser|${TILESWEEP_ADAPTERS:-$root/adapters}/phaser/run.sh|Phaser 4 Arcade body vs tilemap layer (node, pipe)"
 )
 
 scratch=$(mktemp -d)
