@@ -16,8 +16,9 @@ constexpr int kMaxSteps = 2;  // CONTRACT.md: "repeat at most 2 times"
 int signOf(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
 
 // Whether the face of tile (i, j) that the motion on `axis` approaches is exposed: the cell
-// across that face is empty. Motion +x approaches the left face, whose neighbour is (i-1, j);
-// -x the right face, (i+1, j); +y the top face, (i, j-1); -y the bottom face, (i, j+1).
+// across that face is not solid (only '#' hides a face; a one-way neighbour counts as empty).
+// Motion +x approaches the left face, whose neighbour is (i-1, j); -x the right face, (i+1, j);
+// +y the top face, (i, j-1); -y the bottom face, (i, j+1).
 bool faceExposed(const ExactTileMap& map, std::int64_t i, std::int64_t j, Axis axis, int motionSign) {
     if (axis == Axis::X) {
         return !map.isSolid(i - motionSign, j);
@@ -25,19 +26,23 @@ bool faceExposed(const ExactTileMap& map, std::int64_t i, std::int64_t j, Axis a
     return !map.isSolid(i, j - motionSign);
 }
 
-// A solid tile and its exact rectangle, computed once per scene rather than once per test.
-struct SolidTile {
+// A tile that can block (solid or one-way) and its exact rectangle, computed once per scene
+// rather than once per test.
+struct MapTile {
     Cell cell;
+    CellKind kind = CellKind::Solid;
     ExactRect rect;
 };
 
-// Every solid tile of the map, by row then column: the contract's order within a step.
-std::vector<SolidTile> solidTilesOf(const ExactTileMap& map) {
-    std::vector<SolidTile> tiles;
+// Every solid and one-way tile of the map, by row then column: the contract's order within a
+// step, one-way tiles among the solid ones.
+std::vector<MapTile> tilesOf(const ExactTileMap& map) {
+    std::vector<MapTile> tiles;
     for (std::int32_t j = 0; j < map.rows; ++j) {
         for (std::int32_t i = 0; i < map.columns; ++i) {
-            if (map.isSolid(i, j)) {
-                tiles.push_back({{i, j}, map.tileRect(i, j)});
+            const CellKind kind = map.kind(i, j);
+            if (kind != CellKind::Empty) {
+                tiles.push_back({{i, j}, kind, map.tileRect(i, j)});
             }
         }
     }
@@ -49,19 +54,21 @@ struct Blocker {
     ExactSweepOutput sweep;
 };
 
-// Every solid tile that blocks the move of `box` by `motion`, in row-major order. No broadphase:
-// each solid tile of the map is tested.
-std::vector<Blocker> findBlockers(const ExactTileMap& map, const std::vector<SolidTile>& tiles,
+// Every tile that blocks the move of `box` by `motion`, in row-major order: a solid tile by the
+// rules for one box against one tile, a one-way tile by the rules for one-way tiles. No
+// broadphase: each tile of the map is tested.
+std::vector<Blocker> findBlockers(const ExactTileMap& map, const std::vector<MapTile>& tiles,
                                   const ExactBox& box, const ExactVec2& motion) {
     std::vector<Blocker> blockers;
     const int signX = signOf(motion.x);
     const int signY = signOf(motion.y);
-    for (const SolidTile& tile : tiles) {
+    for (const MapTile& tile : tiles) {
         const std::int64_t i = tile.cell.i;
         const std::int64_t j = tile.cell.j;
         ExactSweepInput input{box, motion, tile.rect, faceExposed(map, i, j, Axis::X, signX),
                               faceExposed(map, i, j, Axis::Y, signY)};
-        ExactSweepOutput sweep = sweepTileExact(input);
+        ExactSweepOutput sweep =
+            tile.kind == CellKind::OneWay ? sweepOneWayTileExact(input) : sweepTileExact(input);
         if (sweep.state == ExactSweepState::Blocks) {
             blockers.push_back({tile.cell, std::move(sweep)});
         }
@@ -69,8 +76,8 @@ std::vector<Blocker> findBlockers(const ExactTileMap& map, const std::vector<Sol
     return blockers;
 }
 
-// The frame loop of the contract, over the map's solid tiles.
-ExactFrame resolveFrame(const ExactTileMap& map, const std::vector<SolidTile>& tiles, const ExactBox& box,
+// The frame loop of the contract, over the map's solid and one-way tiles.
+ExactFrame resolveFrame(const ExactTileMap& map, const std::vector<MapTile>& tiles, const ExactBox& box,
                         const ExactVec2& displacement) {
     ExactFrame frame;
     frame.start = box.pos;
@@ -78,9 +85,10 @@ ExactFrame resolveFrame(const ExactTileMap& map, const std::vector<SolidTile>& t
     frame.gridOrigin = map.origin;
     frame.tileSize = map.tileSize;
 
+    // started_overlapping lists solid tiles only.
     const ExactRect startRect = rectOf(box);
-    for (const SolidTile& tile : tiles) {
-        if (overlaps(startRect, tile.rect)) {
+    for (const MapTile& tile : tiles) {
+        if (tile.kind == CellKind::Solid && overlaps(startRect, tile.rect)) {
             frame.startOverlaps.push_back(tile.cell);
         }
     }
@@ -140,13 +148,13 @@ ExactFrame resolveFrame(const ExactTileMap& map, const std::vector<SolidTile>& t
 }  // namespace
 
 ExactFrame resolveFrameExact(const ExactTileMap& map, const ExactBox& box, const ExactVec2& displacement) {
-    return resolveFrame(map, solidTilesOf(map), box, displacement);
+    return resolveFrame(map, tilesOf(map), box, displacement);
 }
 
 template <class T>
 std::vector<ExactFrame> resolveSceneExact(const Scene<T>& scene) {
     const ExactTileMap map = toExact(scene.map);
-    const std::vector<SolidTile> tiles = solidTilesOf(map);
+    const std::vector<MapTile> tiles = tilesOf(map);
     std::vector<ExactFrame> frames;
     frames.reserve(scene.moves.size());
     Vec2<T> start = scene.box.pos;

@@ -128,4 +128,36 @@ ExactSweepOutput sweepTileExact(const ExactSweepInput& input) {
     return out;
 }
 
+ExactSweepOutput sweepOneWayTileExact(const ExactSweepInput& input) {
+    ExactSweepOutput out;
+    out.xTimes = axisOverlapTimes(input.box.pos.x, input.box.size.x, input.displacement.x, input.tile.min.x,
+                                  input.tile.max.x);
+    out.yTimes = axisOverlapTimes(input.box.pos.y, input.box.size.y, input.displacement.y, input.tile.min.y,
+                                  input.tile.max.y);
+    out.overlap = intersect(out.xTimes, out.yTimes);
+    out.state = ExactSweepState::Misses;
+
+    // Only a move down, from a bottom edge at or above the top edge. Then y moves, so yTimes is
+    // empty or an open interval whose entry (top - bottom) / d_y is finite and >= 0: the box does
+    // not overlap the tile at t = 0.
+    const bool movesDown = input.displacement.y > 0;
+    if (!movesDown || input.box.pos.y + input.box.size.y > input.tile.min.y) {
+        return out;
+    }
+    if (!out.overlap.meetsOpenUnitInterval()) {
+        return out;  // a corner miss, or no contact within the move
+    }
+    const ExtendedTime& entryX = out.xTimes.low;
+    const ExtendedTime& entryY = out.yTimes.low;
+    if (entryY < entryX) {
+        return out;  // it enters through a side: it passes
+    }
+    // entry_y >= entry_x, so inf I = entry_y, which lies in [0, 1) because I meets (0, 1).
+    out.state = ExactSweepState::Blocks;
+    out.time = entryY.value;
+    out.axis = Axis::Y;
+    out.tie = entryX == entryY;
+    return out;
+}
+
 }  // namespace tilesweep::oracle

@@ -61,17 +61,20 @@ std::vector<SubstepFrame<T>> resolveSceneSubstepFloat(const Scene<T>& scene, std
         const Vec2<T> step{d.x / n, d.y / n};
 
         // Tiles overlapped at the start are left alone (the box may leave them); the others are
-        // tested at every substep.
+        // tested at every substep. A platform is tested only on a move down that starts with the
+        // box's bottom at or above its top, and is never a start overlap.
         std::vector<Cell> tested;
         const FloatRect<T> start = boxAt(p, size);
         for (std::int32_t j = 0; j < map.rows; ++j) {
             for (std::int32_t i = 0; i < map.columns; ++i) {
-                if (map.solid[static_cast<std::size_t>(j) * static_cast<std::size_t>(map.columns) +
-                              static_cast<std::size_t>(i)] == 0) {
+                const CellKind kind = map.kind(i, j);
+                if (kind == CellKind::Empty) {
                     continue;
                 }
                 const FloatRect<T> tile = tileAt(map, i, j);
-                if (overlapsX(start, tile) && overlapsY(start, tile)) {
+                if (kind == CellKind::OneWay) {
+                    if (d.y > T(0) && start.maxY <= tile.minY) tested.push_back({i, j});
+                } else if (overlapsX(start, tile) && overlapsY(start, tile)) {
                     out.frame.startOverlaps.push_back({i, j});
                 } else {
                     tested.push_back({i, j});
@@ -83,15 +86,20 @@ std::vector<SubstepFrame<T>> resolveSceneSubstepFloat(const Scene<T>& scene, std
         for (std::int64_t k = 1; k <= substeps; ++k) {
             const Vec2<T> next{previous.x + step.x, previous.y + step.y};
             const FloatRect<T> at = boxAt(next, size);
+            const FloatRect<T> before = boxAt(previous, size);
             for (const Cell& c : tested) {
                 const FloatRect<T> tile = tileAt(map, c.i, c.j);
-                if (overlapsX(at, tile) && overlapsY(at, tile)) {
-                    const FloatRect<T> before = boxAt(previous, size);
-                    const Normal normal =
-                        guessNormal(!overlapsX(before, tile), !overlapsY(before, tile), signOf(d.x),
-                                    signOf(d.y), std::fabs(d.x) > std::fabs(d.y));
-                    out.frame.contacts.push_back({c, normal, static_cast<T>(k) / n, {}});  // no position
+                if (!overlapsX(at, tile) || !overlapsY(at, tile)) {
+                    continue;
                 }
+                // A platform stops the box only if it was over it and above its top a substep ago.
+                if (map.kind(c.i, c.j) == CellKind::OneWay &&
+                    !(overlapsX(before, tile) && before.maxY <= tile.minY)) {
+                    continue;
+                }
+                const Normal normal = guessNormal(!overlapsX(before, tile), !overlapsY(before, tile),
+                                                  signOf(d.x), signOf(d.y), std::fabs(d.x) > std::fabs(d.y));
+                out.frame.contacts.push_back({c, normal, static_cast<T>(k) / n, {}});  // no position
             }
             if (!out.frame.contacts.empty()) {
                 out.firstOverlap = k;

@@ -12,6 +12,7 @@ namespace {
 
 struct Candidate {
     Cell cell;
+    CellKind kind = CellKind::Solid;
     ExactRect rect;
 };
 
@@ -24,6 +25,21 @@ Rational maxOf(const Rational& a, const Rational& b) { return a < b ? b : a; }
 ExactRect rectAt(const ExactBox& box, const ExactVec2& d, std::int64_t k, std::int64_t n) {
     const Rational t = Rational(k) / Rational(n);
     return rectOf({{box.pos.x + t * d.x, box.pos.y + t * d.y}, box.size});
+}
+
+// Whether the box at substep k stops on a candidate: a solid tile by overlapping it; a one-way
+// tile by overlapping it having been, at substep k - 1, over it on x (strictly) with its bottom
+// at or above the top. A box that was beside the platform at k - 1 and is in it at k may have
+// come in through the side, so it passes.
+bool stopsOn(const Candidate& c, const ExactRect& before, const ExactRect& at) {
+    if (!overlaps(at, c.rect)) {
+        return false;
+    }
+    if (c.kind == CellKind::Solid) {
+        return true;
+    }
+    const bool overOnX = before.min.x < c.rect.max.x && before.max.x > c.rect.min.x;
+    return overOnX && before.max.y <= c.rect.min.y;
 }
 
 // The substep search; `candidates` receives the tiles worth testing, for the caller's normals.
@@ -42,24 +58,31 @@ SubstepOverlap search(const ExactTileMap& map, const ExactBox& box, const ExactV
     const ExactRect swept{{minOf(start.min.x, end.min.x), minOf(start.min.y, end.min.y)},
                           {maxOf(start.max.x, end.max.x), maxOf(start.max.y, end.max.y)}};
     candidates.clear();
+    const bool movesDown = d.y > 0;
     for (std::int32_t j = 0; j < map.rows; ++j) {
         for (std::int32_t i = 0; i < map.columns; ++i) {
-            if (!map.isSolid(i, j)) {
+            const CellKind kind = map.kind(i, j);
+            if (kind == CellKind::Empty) {
                 continue;
             }
             const ExactRect tile = map.tileRect(i, j);
-            if (overlaps(start, tile)) {
+            if (kind == CellKind::Solid && overlaps(start, tile)) {
                 result.startOverlaps.push_back({i, j});
+            } else if (kind == CellKind::OneWay && !(movesDown && start.max.y <= tile.min.y)) {
+                // A platform stops only a box moving down whose bottom starts at or above its
+                // top; any other never stops on it, and is not listed as a start overlap.
+                continue;
             } else if (overlaps(swept, tile)) {
-                candidates.push_back({{i, j}, tile});
+                candidates.push_back({{i, j}, kind, tile});
             }
         }
     }
 
+    ExactRect before = start;
     for (std::int64_t k = 1; k <= n && !candidates.empty(); ++k) {
         const ExactRect at = rectAt(box, d, k, n);
         for (const Candidate& c : candidates) {
-            if (overlaps(at, c.rect)) {
+            if (stopsOn(c, before, at)) {
                 result.tiles.push_back(c.cell);
             }
         }
@@ -67,6 +90,7 @@ SubstepOverlap search(const ExactTileMap& map, const ExactBox& box, const ExactV
             result.firstOverlap = k;
             break;
         }
+        before = at;
     }
     return result;
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The exact reference against the worked examples of the contract (shared/examples): every line
-// of expected-float.jsonl and expected-double.jsonl, bit for bit. Numbers are compared by value
+// of expected-float.jsonl and expected-double.jsonl, and of oneway-expected.jsonl in both
+// scalars, bit for bit. Numbers are compared by value
 // in T (read straight into T from their text), error lines as errors (the message is free text).
 // Scenes are read with the project's scene reader, tilesweep::parseScene<T>.
 
@@ -93,12 +94,12 @@ void expectFramesMatch(const std::vector<FrameResult<T>>& actual, const JsonValu
 }
 
 template <class T>
-void expectExamplesReproduced(const std::string& expectedFile) {
+void expectExamplesReproduced(const std::string& scenesFile, const std::string& expectedFile) {
     const std::string dir = examplesDir();
-    const std::vector<std::string> scenes = readLines(dir + "/scenes.jsonl");
+    const std::vector<std::string> scenes = readLines(dir + "/" + scenesFile);
     const std::vector<std::string> expected = readLines(dir + "/" + expectedFile);
     if (scenes.empty()) {
-        GTEST_SKIP() << "no examples at " << dir << " (set TILESWEEP_EXAMPLES_DIR)";
+        GTEST_SKIP() << "no " << scenesFile << " at " << dir << " (set TILESWEEP_EXAMPLES_DIR)";
     }
     ASSERT_EQ(scenes.size(), expected.size());
     for (std::size_t n = 0; n < scenes.size(); ++n) {
@@ -121,11 +122,21 @@ void expectExamplesReproduced(const std::string& expectedFile) {
 }
 
 TEST(ExactReference, reproducesEveryFloatExampleBitForBit) {
-    expectExamplesReproduced<float>("expected-float.jsonl");
+    expectExamplesReproduced<float>("scenes.jsonl", "expected-float.jsonl");
 }
 
 TEST(ExactReference, reproducesEveryDoubleExampleBitForBit) {
-    expectExamplesReproduced<double>("expected-double.jsonl");
+    expectExamplesReproduced<double>("scenes.jsonl", "expected-double.jsonl");
+}
+
+// The one-way examples have one expected file for both scalars: every number in it is exact in
+// float and in double.
+TEST(ExactReference, reproducesEveryOneWayExampleInFloatBitForBit) {
+    expectExamplesReproduced<float>("oneway-scenes.jsonl", "oneway-expected.jsonl");
+}
+
+TEST(ExactReference, reproducesEveryOneWayExampleInDoubleBitForBit) {
+    expectExamplesReproduced<double>("oneway-scenes.jsonl", "oneway-expected.jsonl");
 }
 
 }  // namespace

@@ -10,7 +10,7 @@
 #include <vector>
 
 // Builds scenes for hand-worked tests straight from the pieces a scene file holds, without the
-// JSON reader: rows of '#' and '.', top row first.
+// JSON reader: rows of '#' (solid), '-' (one-way) and '.' (empty), top row first.
 
 namespace tilesweep::oracle::test {
 
@@ -22,12 +22,18 @@ TileMap<T> makeMap(const std::vector<std::string>& rows, Vec2<T> origin = {0, 0}
     map.tileSize = tileSize;
     map.rows = static_cast<std::int32_t>(rows.size());
     map.columns = rows.empty() ? 0 : static_cast<std::int32_t>(rows.front().size());
-    for (const std::string& row : rows) {
+    map.solid.assign(static_cast<std::size_t>(map.rows) * static_cast<std::size_t>(map.columns), 0);
+    for (std::int32_t j = 0; j < map.rows; ++j) {
+        const std::string& row = rows[static_cast<std::size_t>(j)];
         if (static_cast<std::int32_t>(row.size()) != map.columns) {
             throw std::invalid_argument("makeMap: ragged rows");
         }
-        for (char c : row) {
-            map.solid.push_back(c == '#' ? 1 : 0);
+        for (std::int32_t i = 0; i < map.columns; ++i) {
+            const char c = row[static_cast<std::size_t>(i)];
+            if (c != '#' && c != '-' && c != '.') {
+                throw std::invalid_argument("makeMap: a cell is '#', '-' or '.'");
+            }
+            map.set(i, j, c == '#' ? CellKind::Solid : c == '-' ? CellKind::OneWay : CellKind::Empty);
         }
     }
     return map;

@@ -12,8 +12,9 @@
 #include <vector>
 
 // The exact reference: one frame through a map, and whole scenes, exactly as CONTRACT.md defines
-// them ("One frame through a map"), in rational arithmetic. It tests every solid tile of the map
-// (no broadphase), so it cannot skip a tile a broadphase would wrongly leave out.
+// them ("One frame through a map"), in rational arithmetic. It tests every solid and one-way tile
+// of the map (no broadphase), so it cannot skip a tile a broadphase would wrongly leave out. A
+// one-way tile blocks by its own rule (sweepOneWayTileExact) and then joins B like a solid one.
 //
 //     p = start, r = d
 //     at most 2 steps:
@@ -54,7 +55,8 @@ struct ExactFrame {
     std::vector<Cell> startOverlaps;     ///< solid cells overlapped at the start, by row then column
 };
 
-/// Resolves one frame of `box` moving by `displacement` through `map`, exactly.
+/// Resolves one frame of `box` moving by `displacement` through `map`, exactly. A frame that drops
+/// through every platform is resolved on `map.withoutOneWay()`.
 [[nodiscard]] ExactFrame resolveFrameExact(const ExactTileMap& map, const ExactBox& box,
                                            const ExactVec2& displacement);
 

@@ -19,6 +19,12 @@
 // (0, 1); its time of impact is inf I, in [0, 1). An empty I is a corner miss, including a path
 // through a corner point exactly (entry == exit on the meeting axes). A box overlapping the tile
 // at t = 0 never blocks.
+//
+// A one-way tile ("One-way tiles") has the same rectangle and the same I, but blocks only a move
+// down (d_y > 0) whose box bottom starts at or above the tile's top (pos_y + size_y <= top), and
+// then only when I meets (0, 1) and entry_y >= entry_x: the box reaches the top face while it
+// overlaps the tile on x, or exactly as it starts to. Its time is entry_y (which is then inf I),
+// its axis y; an exact corner hit blocks on y, since the top is its only face.
 
 namespace tilesweep::oracle {
 
@@ -101,5 +107,11 @@ struct ExactSweepOutput {
 /// Decides one tile. The contact axis is the one whose entry is later; on an exact tie, the axis
 /// whose face is exposed when exactly one is, otherwise y.
 [[nodiscard]] ExactSweepOutput sweepTileExact(const ExactSweepInput& input);
+
+/// Decides one one-way tile: Blocks (on y, at entry_y; `tie` when entry_x == entry_y) or Misses,
+/// never StartsOverlapping: a box that could be blocked starts with its bottom at or above the
+/// top, so it does not overlap the tile at t = 0, and one it overlaps at t = 0 never blocks. The
+/// exposure flags of the input play no part.
+[[nodiscard]] ExactSweepOutput sweepOneWayTileExact(const ExactSweepInput& input);
 
 }  // namespace tilesweep::oracle

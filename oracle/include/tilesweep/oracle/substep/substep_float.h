@@ -13,7 +13,10 @@
 // box edge p + size is rounded, and overlap is tested in T against tile edges computed in T as
 // origin + i*tileSize. It misses corners whose overlap window falls between two substeps and
 // tunnels through tiles thinner than one substep of motion; rounding can also make it see or
-// miss a touch the exact rules decide the other way.
+// miss a touch the exact rules decide the other way. A one-way tile is handled as a tutorial
+// would: tested only on a move down that starts with the box's bottom at or above its top (in T),
+// it stops the box at the first substep that overlaps it if, a substep before, the box overlapped
+// it on x with its bottom at or above the top.
 //
 // It reports like resolveSceneSubstep: the position of the last substep before the first
 // overlap (as accumulated, no further rounding), the tiles overlapped at the first overlapping
