@@ -30,7 +30,7 @@
 //   - StartOverlaps, WellFormed: the reported start overlaps are exactly the solid tiles the box
 //     overlaps at the start, each once, in any order (the contract leaves the order free); the
 //     status, counts, contact cells, normals and frame times are of the shape the contract gives
-//     them.
+//     them (a one-way cell is hit on its top only, and is never a start overlap).
 //
 // These are the rules every result must obey, not the whole contract: which tile is hit, and
 // the exact time, are the oracles' business (oracle/, properties/).
@@ -179,7 +179,8 @@ struct FrameRecord {
 };
 
 /// The contract's shape of a result: status, finite position, counts, contacts on solid cells
-/// with a unit normal against the motion and a frame time in [0, 1]. Empty when it holds.
+/// (or on one-way cells, with the normal (0, -1) of their top) with a unit normal against the
+/// motion and a frame time in [0, 1]. Empty when it holds.
 template <class T>
 [[nodiscard]] std::string checkWellFormed(const FrameRecord<T>& frame) {
     const ResolveResult<T>& r = frame.result;
@@ -191,11 +192,14 @@ template <class T>
         return "status Blocked does not match the contact count";
     for (std::int32_t k = 0; k < r.contactCount; ++k) {
         const Contact<T>& c = frame.contacts[k];
-        if (!frame.map.isSolid(c.tile.i, c.tile.j))
-            return "contact " + describeCell(c.tile) + " is not a solid cell of the map";
+        const CellKind kind = frame.map.kind(c.tile.i, c.tile.j);
+        if (kind == CellKind::Empty)
+            return "contact " + describeCell(c.tile) + " is not a solid or one-way cell of the map";
         const bool onX = c.normal.y == 0 && (c.normal.x == 1 || c.normal.x == -1);
         const bool onY = c.normal.x == 0 && (c.normal.y == 1 || c.normal.y == -1);
         if (!onX && !onY) return "contact normal is not a unit axis vector";
+        if (kind == CellKind::OneWay && !(onY && c.normal.y == -1))
+            return "contact " + describeCell(c.tile) + " is on a one-way cell, whose only face is its top";
         const T along = onX ? d.x : d.y;
         const int against = onX ? -c.normal.x : -c.normal.y;
         if (!(against > 0 ? along > 0 : along < 0)) return "contact normal does not oppose the motion";

@@ -38,6 +38,9 @@ struct CApi<float> {
     using Result = ts_result_f;
     using ContactC = ts_contact_f;
     static ts_error create(const Desc* d, Map** m) { return ts_map_create_f(d, m); }
+    static ts_error createOneWay(const Desc* d, const std::uint8_t* oneWay, Map** m) {
+        return ts_map_create_one_way_f(d, oneWay, m);
+    }
     static void destroy(Map* m) { ts_map_destroy_f(m); }
     static ts_error move(const Map* m, const Mover* v, Result* r, ContactC* c, std::int32_t n) {
         return ts_move_and_slide_f(m, v, r, c, n);
@@ -54,6 +57,9 @@ struct CApi<double> {
     using Result = ts_result_d;
     using ContactC = ts_contact_d;
     static ts_error create(const Desc* d, Map** m) { return ts_map_create_d(d, m); }
+    static ts_error createOneWay(const Desc* d, const std::uint8_t* oneWay, Map** m) {
+        return ts_map_create_one_way_d(d, oneWay, m);
+    }
     static void destroy(Map* m) { ts_map_destroy_d(m); }
     static ts_error move(const Map* m, const Mover* v, Result* r, ContactC* c, std::int32_t n) {
         return ts_move_and_slide_d(m, v, r, c, n);
@@ -243,7 +249,10 @@ std::string storesContactsAtExactCapacity(const Scene<T>& scene) {
     using C = CApi<T>;
     const typename C::Desc desc = descOf(scene.map.view());
     typename C::Map* raw = nullptr;
-    if (C::create(&desc, &raw) != TS_OK) return "ts_map_create refused a map prepareMap accepted";
+    const std::vector<std::uint8_t>& oneWay = scene.map.oneWay;
+    const ts_error made =
+        oneWay.empty() ? C::create(&desc, &raw) : C::createOneWay(&desc, oneWay.data(), &raw);
+    if (made != TS_OK) return "ts_map_create refused a map prepareMap accepted";
     const MapHandle<T> cmap(raw);
     Box<T> box = scene.box;
     std::vector<Contact<T>> plenty(kLargestBufferTried);

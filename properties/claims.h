@@ -77,13 +77,22 @@ template <class T, Axis kAxis>
 
 // ---- Game feel (game_feel_claims.cpp) ----------------------------------------------------------
 
-/// A box resting on a floor under gravity lands at once and keeps its height.
+/// A box resting on a floor (a solid or one-way tile's top) under gravity lands at once and
+/// keeps its height.
 template <class T>
 [[nodiscard]] std::string restingContactIsStable(const Scene<T>& scene);
 
-/// A box sliding along a floor is never stopped on x by a tile of that floor.
+/// A box sliding along a floor (solid or one-way tiles) is never stopped on x by a tile of it.
 template <class T>
 [[nodiscard]] std::string slidingAlongFloorNeverSnags(const Scene<T>& scene);
+
+/// A box standing on a one-way tile and moving down, at any speed, stays on it.
+template <class T>
+[[nodiscard]] std::string neverFallsThroughAPlatformItStoodOn(const Scene<T>& scene);
+
+/// A one-way tile is hit only on its top, by a box whose bottom starts at or above that top.
+template <class T>
+[[nodiscard]] std::string neverBlockedByAPlatformFromBelow(const Scene<T>& scene);
 
 extern template std::string neverEndsInsideATileItDidNotStartIn<float>(const Scene<float>&);
 extern template std::string neverEndsInsideATileItDidNotStartIn<double>(const Scene<double>&);
@@ -117,5 +126,9 @@ extern template std::string restingContactIsStable<float>(const Scene<float>&);
 extern template std::string restingContactIsStable<double>(const Scene<double>&);
 extern template std::string slidingAlongFloorNeverSnags<float>(const Scene<float>&);
 extern template std::string slidingAlongFloorNeverSnags<double>(const Scene<double>&);
+extern template std::string neverFallsThroughAPlatformItStoodOn<float>(const Scene<float>&);
+extern template std::string neverFallsThroughAPlatformItStoodOn<double>(const Scene<double>&);
+extern template std::string neverBlockedByAPlatformFromBelow<float>(const Scene<float>&);
+extern template std::string neverBlockedByAPlatformFromBelow<double>(const Scene<double>&);
 
 }  // namespace tilesweep::properties

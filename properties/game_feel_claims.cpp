@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The game-feel claims (claims.h): a box resting on a floor stays put, and one sliding along a
-// floor never snags on the seams between its tiles.
+// The game-feel claims (claims.h): a box resting on a floor or a platform stays put, one sliding
+// along a floor never snags on the seams between its tiles, and a platform stops only a box
+// coming down onto its top.
 #include "claim_support.h"
 #include "claims.h"
 
@@ -10,69 +11,118 @@ namespace tilesweep::properties {
 
 using namespace claim_support;
 
-/// Whether the box at `pos` stands on the map: a solid tile's top exactly at its bottom, under
-/// its open x span.
+/// What a box may stand on: a floor (the top face of a solid or a one-way tile), or a platform
+/// (a one-way tile's top only).
+enum class Support : std::uint8_t { Floor, Platform };
+
+/// Whether the box at `pos` stands on the map: the top of a tile of the kind `support` names
+/// exactly at its bottom, under its open x span.
 template <class T>
-bool standsOnFloor(const oracle::ExactTileMap& map, const Scene<T>& scene, Vec2<T> pos) {
+bool standsOn(const oracle::ExactTileMap& map, const Scene<T>& scene, Vec2<T> pos, Support support) {
     const oracle::ExactRect box = oracle::rectOf(oracle::toExact(Box<T>{pos, scene.box.size}));
     for (std::int32_t j = 0; j < map.rows; ++j)
         for (std::int32_t i = 0; i < map.columns; ++i) {
-            if (!map.isSolid(i, j)) continue;
+            const CellKind kind = scene.map.kind(i, j);
+            if (kind == CellKind::Empty || (support == Support::Platform && kind != CellKind::OneWay))
+                continue;
             const oracle::ExactRect t = map.tileRect(i, j);
             if (t.min.y == box.max.y && t.min.x < box.max.x && t.max.x > box.min.x) return true;
         }
     return false;
 }
 
-/// A box standing on a floor and pushed down by gravity lands at once (a floor contact at time
-/// 0) and keeps its height bit for bit, and its x too when it does not walk. Every frame that
-/// starts on a floor is checked, so a box that sinks into or falls through the floor fails.
+/// Every frame that starts standing on `support` and moves down lands at once (a contact on y
+/// at time 0) and keeps its height bit for bit, and its x too when it does not walk; empty when
+/// that holds.
 template <class T>
-std::string restingContactIsStable(const Scene<T>& scene) {
+std::string keepsStanding(const Scene<T>& scene, Support support) {
     const std::vector<FrameResult<T>> frames = resolveUnderTest(scene);
     const std::vector<Vec2<T>> starts = frameStarts(scene, frames);
     const oracle::ExactTileMap map = oracle::toExact(scene.map);
+    const char* what = support == Support::Platform ? "a platform" : "a floor";
     for (std::size_t f = 0; f < frames.size(); ++f) {
         const Vec2<T> m = scene.moves[f];
-        if (!(m.y > 0) || !standsOnFloor(map, scene, starts[f])) continue;
+        if (!(m.y > 0) || !standsOn(map, scene, starts[f], support)) continue;
         const auto& hits = frames[f].contacts;
         const bool landed = std::any_of(hits.begin(), hits.end(),
                                         [](const Contact<T>& c) { return c.normal.y == -1 && c.time == 0; });
         if (!landed)
-            return "frame " + std::to_string(f) + ": standing on a floor, no floor contact at time 0";
+            return "frame " + std::to_string(f) + ": standing on " + what + ", no contact on y at time 0";
         if (!sameBits(frames[f].position.y, starts[f].y) ||
             (m.x == 0 && !sameBits(frames[f].position.x, starts[f].x)))
-            return "frame " + std::to_string(f) + ": resting box moved from (" + hex(starts[f].x) + ", " +
-                   hex(starts[f].y) + ") to (" + hex(frames[f].position.x) + ", " +
+            return "frame " + std::to_string(f) + ": box standing on " + what + " moved from (" +
+                   hex(starts[f].x) + ", " + hex(starts[f].y) + ") to (" + hex(frames[f].position.x) + ", " +
                    hex(frames[f].position.y) + ")";
     }
     return {};
 }
 
-/// A box standing on a floor (a solid tile under its open x span, top exactly at its bottom)
-/// and moving sideways and down is never stopped on x by a tile of that floor: no snag on seams.
+/// A box standing on a floor and pushed down by gravity lands at once and keeps its height (a
+/// floor is a solid or a one-way tile's top). Every frame that starts on a floor is checked, so
+/// a box that sinks into or falls through the floor fails.
+template <class T>
+std::string restingContactIsStable(const Scene<T>& scene) {
+    return keepsStanding(scene, Support::Floor);
+}
+
+/// A box standing on a one-way tile's top and moving down, at any speed, lands on it at once
+/// and keeps its height: it never falls through a platform it stood on.
+template <class T>
+std::string neverFallsThroughAPlatformItStoodOn(const Scene<T>& scene) {
+    return keepsStanding(scene, Support::Platform);
+}
+
+/// A platform stops a box only on its top face, and only a box whose bottom is at or above that
+/// top: no frame reports a hit on a one-way tile whose top lies above the box's bottom at the
+/// frame's start (the box is inside it or below it, jumping through), nor a hit on one with
+/// another normal than (0, -1). The frame's start is enough: a second step moves down only if
+/// the first did, so the bottom at a second step's start is no higher than at the frame's.
+template <class T>
+std::string neverBlockedByAPlatformFromBelow(const Scene<T>& scene) {
+    const std::vector<FrameResult<T>> frames = resolveUnderTest(scene);
+    const std::vector<Vec2<T>> starts = frameStarts(scene, frames);
+    const oracle::ExactTileMap map = oracle::toExact(scene.map);
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+        const oracle::ExactRect box = oracle::rectOf(oracle::toExact(Box<T>{starts[f], scene.box.size}));
+        for (const Contact<T>& c : frames[f].contacts) {
+            if (scene.map.kind(c.tile.i, c.tile.j) != CellKind::OneWay) continue;
+            const std::string at = "frame " + std::to_string(f) + ": platform " + cellText(c.tile);
+            if (c.normal.x != 0 || c.normal.y != -1) return at + " hit on another face than its top";
+            if (map.tileRect(c.tile.i, c.tile.j).min.y < box.max.y)
+                return at + " blocked a box whose bottom started below its top (jumping through it)";
+        }
+    }
+    return {};
+}
+
+/// A box standing on a floor (a solid or one-way tile's top exactly at its bottom, under its
+/// open x span) and moving sideways and down is never stopped on x by a tile of that floor, unless
+/// a wall stops it on the same face at the same time: no snag on the seams between floor tiles
+/// or platform tiles.
 template <class T>
 std::string slidingAlongFloorNeverSnags(const Scene<T>& scene) {
     const std::vector<FrameResult<T>> frames = resolveUnderTest(scene);
     const std::vector<Vec2<T>> starts = frameStarts(scene, frames);
     const oracle::ExactTileMap map = oracle::toExact(scene.map);
     for (std::size_t f = 0; f < frames.size(); ++f) {
-        if (!(scene.moves[f].y > 0)) continue;
+        if (!(scene.moves[f].y > 0) || !standsOn(map, scene, starts[f], Support::Floor)) continue;
         const oracle::ExactRect box = oracle::rectOf(oracle::toExact(Box<T>{starts[f], scene.box.size}));
-        bool supported = false;
-        for (std::int32_t j = 0; j < map.rows && !supported; ++j)
-            for (std::int32_t i = 0; i < map.columns && !supported; ++i) {
-                if (!map.isSolid(i, j)) continue;
-                const oracle::ExactRect t = map.tileRect(i, j);
-                supported = t.min.y == box.max.y && t.min.x < box.max.x && t.max.x > box.min.x;
-            }
-        if (!supported) continue;
         if (!sameBits(frames[f].position.y, starts[f].y))
             return "frame " + std::to_string(f) + ": left the floor it stood on, moving down";
-        for (const Contact<T>& c : frames[f].contacts)
-            if (c.normal.x != 0 && map.tileRect(c.tile.i, c.tile.j).min.y == box.max.y)
+        const auto isFloorTile = [&](Cell t) { return map.tileRect(t.i, t.j).min.y == box.max.y; };
+        for (const Contact<T>& c : frames[f].contacts) {
+            if (c.normal.x == 0 || !isFloorTile(c.tile)) continue;
+            // A wall met on the same face line at the same time stops the box there anyway (a
+            // floor tile whose top a wall covers shows its side when the cell across is a
+            // platform: only a solid cell hides a face).
+            const bool againstAWall =
+                std::any_of(frames[f].contacts.begin(), frames[f].contacts.end(), [&](const Contact<T>& w) {
+                    return w.normal == c.normal && sameBits(w.time, c.time) && !isFloorTile(w.tile);
+                });
+            if (!againstAWall)
                 return "frame " + std::to_string(f) + ": snagged on the side of floor tile " +
                        cellText(c.tile);
+        }
     }
     return {};
 }
@@ -81,5 +131,9 @@ template std::string restingContactIsStable<float>(const Scene<float>&);
 template std::string restingContactIsStable<double>(const Scene<double>&);
 template std::string slidingAlongFloorNeverSnags<float>(const Scene<float>&);
 template std::string slidingAlongFloorNeverSnags<double>(const Scene<double>&);
+template std::string neverFallsThroughAPlatformItStoodOn<float>(const Scene<float>&);
+template std::string neverFallsThroughAPlatformItStoodOn<double>(const Scene<double>&);
+template std::string neverBlockedByAPlatformFromBelow<float>(const Scene<float>&);
+template std::string neverBlockedByAPlatformFromBelow<double>(const Scene<double>&);
 
 }  // namespace tilesweep::properties

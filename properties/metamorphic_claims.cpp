@@ -4,6 +4,7 @@
 #include "claim_support.h"
 #include "claims.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -14,8 +15,9 @@ using namespace claim_support;
 /// A frame whose move is zero changes nothing and touches nothing, and reports as start overlaps
 /// exactly the solid tiles the box overlaps (checked apart from the resolver), each once, in any
 /// order (the contract leaves the order of started_overlapping free). The scene's box
-/// rarely starts inside a tile, so the claim also places it a quarter tile into the first solid
-/// tile of the map and asks the same there; both scenes go to the resolver in one call.
+/// rarely starts inside a tile, so the claim also places it a quarter tile into the first one-way
+/// tile of the map (which is never listed), or into the first solid tile when there is none,
+/// and asks the same there; both scenes go to the resolver in one call.
 template <class T>
 std::string zeroMoveChangedNothing(const Scene<T>& scene, const std::vector<FrameResult<T>>& frames) {
     std::vector<Cell> overlapping;
@@ -45,11 +47,15 @@ Scene<T> stillScene(Scene<T> scene) {
 template <class T>
 std::string zeroMoveChangesNothing(const Scene<T>& scene) {
     const Scene<T> still = stillScene(scene);
-    const auto first = std::find(scene.map.solid.begin(), scene.map.solid.end(), std::uint8_t{1});
+    const std::vector<std::uint8_t>& cells =
+        std::find(scene.map.oneWay.begin(), scene.map.oneWay.end(), std::uint8_t{1}) != scene.map.oneWay.end()
+            ? scene.map.oneWay
+            : scene.map.solid;
+    const auto first = std::find(cells.begin(), cells.end(), std::uint8_t{1});
     Scene<T> inside = still;
-    bool hasInside = first != scene.map.solid.end();
+    bool hasInside = first != cells.end();
     if (hasInside) {
-        const auto index = static_cast<std::int32_t>(first - scene.map.solid.begin());
+        const auto index = static_cast<std::int32_t>(first - cells.begin());
         const T i = static_cast<T>(index % scene.map.columns);
         const T j = static_cast<T>(index / scene.map.columns);
         inside.box.pos = {scene.map.origin.x + (i + T(0.25)) * scene.map.tileSize.x,
@@ -60,7 +66,7 @@ std::string zeroMoveChangesNothing(const Scene<T>& scene) {
     const std::vector<std::vector<FrameResult<T>>> both = resolveUnderTest(still, inside);
     if (std::string why = zeroMoveChangedNothing(still, both[0]); !why.empty()) return why;
     if (std::string why = zeroMoveChangedNothing(inside, both[1]); !why.empty())
-        return "inside a solid tile: " + why;
+        return "inside a tile: " + why;
     return {};
 }
 
@@ -91,10 +97,15 @@ std::string scalingByPowerOfTwoScalesTheResult(const Scene<T>& scene) {
 }
 
 /// Mirroring the scene about x = 0 (or y = 0) mirrors every decision: the same tiles (mirrored),
-/// normals flipped on that axis, the same times, and the other axis's position unchanged.
+/// normals flipped on that axis, the same times, and the other axis's position unchanged. A map
+/// with one-way tiles is mirrored about x = 0 only (their rule is symmetric in x, not in y).
 template <class T, Axis kAxis>
 std::string mirroringMirrorsTheResult(const Scene<T>& scene) {
     const bool onX = kAxis == Axis::X;
+    // A one-way tile blocks only downward motion: mirrored about y = 0 it is another scene.
+    if (!onX && std::find(scene.map.oneWay.begin(), scene.map.oneWay.end(), std::uint8_t{1}) !=
+                    scene.map.oneWay.end())
+        return {};
     const T pos = onX ? scene.box.pos.x : scene.box.pos.y;
     const T size = onX ? scene.box.size.x : scene.box.size.y;
     const T mirroredPos = -(pos + size);
@@ -118,8 +129,10 @@ std::string mirroringMirrorsTheResult(const Scene<T>& scene) {
         for (std::int32_t i = 0; i < scene.map.columns; ++i) {
             const std::int32_t mi = onX ? scene.map.columns - 1 - i : i;
             const std::int32_t mj = onX ? j : scene.map.rows - 1 - j;
-            m.map.solid[static_cast<std::size_t>(mj * scene.map.columns + mi)] =
-                scene.map.solid[static_cast<std::size_t>(j * scene.map.columns + i)];
+            const auto from = static_cast<std::size_t>(j * scene.map.columns + i);
+            const auto to = static_cast<std::size_t>(mj * scene.map.columns + mi);
+            m.map.solid[to] = scene.map.solid[from];
+            if (!scene.map.oneWay.empty()) m.map.oneWay[to] = scene.map.oneWay[from];
         }
     std::vector<std::vector<FrameResult<T>>> both = resolveUnderTest(scene, m);
     std::vector<FrameResult<T>>& expected = both[0];

@@ -393,6 +393,31 @@ void addAll(std::vector<Property>& out) {
     addClaim<T>(out, "decidesRangeEdgeScenesExactly", "matchesExactReferenceBitForBit", Family::RangeEdge,
                 isDouble ? std::vector<CoverageFloor>{{"hit", 0.9}}
                          : std::vector<CoverageFloor>{{"range-boundary", 0.6}, {"hit", 0.9}});
+    // One-way platforms (platform_family.h): landing on them at every speed and on exact
+    // corners, jumping up through them, walking along them across seams, and platforms among
+    // solid tiles; bit for bit, and by the rules a platformer relies on.
+    addClaim<T>(out, "landsOnPlatformsExactly", "matchesExactReferenceBitForBit", Family::PlatformLanding,
+                {{"one-way-hit", 0.3},
+                 {"one-way-tie", 0.03},
+                 {"one-way-fast", 0.1},
+                 {"in-one-way", 0.1},
+                 {"far-origin", 0.1}});
+    addClaim<T>(out, "jumpsThroughPlatformsExactly", "matchesExactReferenceBitForBit", Family::PlatformJump,
+                {{"in-one-way", 0.3}, {"one-way-hit", 0.15}, {"starts-in-one-way", 0.1}});
+    addClaim<T>(out, "walksAlongPlatformsExactly", "matchesExactReferenceBitForBit", Family::PlatformWalk,
+                {{"on-platform", 0.75}, {"one-way-seam", 0.1}});
+    addClaim<T>(out, "decidesPlatformsAmongSolidTilesExactly", "matchesExactReferenceBitForBit",
+                Family::Platforms, {{"one-way-hit", 0.05}, {"starts-in-one-way", 0.05}});
+    addClaim<T>(out, "neverFallsThroughAPlatformItStoodOn", "neverFallsThroughAPlatformItStoodOn",
+                Family::PlatformWalk, {{"on-platform", 0.75}});
+    addClaim<T>(out, "neverBlockedByAPlatformFromBelow", "neverBlockedByAPlatformFromBelow",
+                Family::PlatformJump, {{"in-one-way", 0.3}, {"one-way-hit", 0.15}});
+    addClaim<T>(out, "neverSnagsOnAPlatformSeam", "slidingAlongFloorNeverSnags", Family::PlatformWalk,
+                {{"on-platform", 0.75}, {"one-way-seam", 0.1}});
+    addClaim<T>(out, "platformScenesObeyTheSafetyRules", "obeysTheSafetyRules", Family::Platforms,
+                {{"one-way-hit", 0.05}, {"starts-in-one-way", 0.05}});
+    addClaim<T>(out, "substepOracleSeesEveryPlatformLanding", "substepOracleFindsNoMissedContact",
+                Family::PlatformLanding, {{"one-way-hit", 0.3}});
     // Every C error code from its own cause, through C.
     addClaim<T>(out, "reportsEachCErrorByItsCause", "reportsEachCErrorByItsCause", Family::Mixed,
                 {{"edge-causes-built", 0.9}});

@@ -34,6 +34,8 @@ const std::vector<Claim<T>>& allClaims() {
         {"translatingByWholeTilesKeepsDecisions", &translatingByWholeTilesKeepsDecisions<T>, S::Safety},
         {"restingContactIsStable", &restingContactIsStable<T>, S::Safety},
         {"slidingAlongFloorNeverSnags", &slidingAlongFloorNeverSnags<T>, S::Safety},
+        {"neverFallsThroughAPlatformItStoodOn", &neverFallsThroughAPlatformItStoodOn<T>, S::Safety},
+        {"neverBlockedByAPlatformFromBelow", &neverBlockedByAPlatformFromBelow<T>, S::Safety},
         {"badInputIsRejected", &badInputIsRejected<T>, S::Internal},
         {"sweepBoxMatchesTheReference", &sweepBoxMatchesTheReference<T>, S::Internal},
         {"storesContactsAtExactCapacity", &storesContactsAtExactCapacity<T>, S::Internal},

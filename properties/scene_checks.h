@@ -59,7 +59,9 @@ template <class T>
 /// than 60 or 92 bits: the resolver's wide integer tiers), "empty-map" (no solid tile),
 /// "huge-move" (a move of 2^40 or more), "far-origin"; "path:fast", "path:filtered" or
 /// "path:exact" (which of the resolver's paths decided the frames: tilesweep/frame_stats.h), and
-/// "fallback" when it was not the fast one.
+/// "fallback" when it was not the fast one; on maps with one-way tiles, "one-way-map" and
+/// "one-way-hit", "one-way-tie", "one-way-fast", "one-way-seam", "on-platform", "in-one-way",
+/// "starts-in-one-way" (scene_classification.cpp, addOneWayTags).
 template <class T>
 [[nodiscard]] std::vector<std::string> classifyScene(const Scene<T>& scene);
 

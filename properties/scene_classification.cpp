@@ -196,6 +196,61 @@ double deepestFilterError(const Scene<double>& scene) {
     return deepest;
 }
 
+/// Whether the box at `pos` with `size` overlaps the rectangle `t` (open interiors), exactly.
+inline bool overlapsExactly(const oracle::ExactVec2& pos, const oracle::ExactVec2& size,
+                            const oracle::ExactRect& t) {
+    return pos.x < t.max.x && t.min.x < pos.x + size.x && pos.y < t.max.y && t.min.y < pos.y + size.y;
+}
+
+/// The one-way tags (scene_checks.h), from the exact frames and the scene's map:
+///   one-way-hit     a hit on a one-way tile;  one-way-tie: such a hit on an exact corner tie;
+///   one-way-fast    a one-way hit in a frame moving four tiles or more down;
+///   one-way-seam    two one-way tiles hit at once (a landing across a platform's seam);
+///   on-platform     a frame that starts standing on a one-way tile's top and moves down;
+///   in-one-way      the box overlaps a one-way tile at a frame's start or exact end (jumping
+///                   through it, or entered through a side); starts-in-one-way: at a start.
+template <class T>
+void addOneWayTags(const Scene<T>& scene, const std::vector<oracle::ExactFrame>& frames,
+                   std::vector<std::string>& tags) {
+    std::vector<Cell> platforms;
+    for (std::int32_t j = 0; j < scene.map.rows; ++j)
+        for (std::int32_t i = 0; i < scene.map.columns; ++i)
+            if (scene.map.kind(i, j) == CellKind::OneWay) platforms.push_back({i, j});
+    if (platforms.empty()) return;
+    tags.push_back("one-way-map");
+    const oracle::ExactTileMap map = oracle::toExact(scene.map);
+    bool hit = false, tie = false, fast = false, seam = false, onPlatform = false, inside = false,
+         startsInside = false;
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+        const oracle::ExactFrame& frame = frames[f];
+        const Vec2<T> move = scene.moves[f];
+        int oneWayHits[3] = {0, 0, 0};  // by step
+        for (const oracle::ExactContact& c : frame.contacts) {
+            if (scene.map.kind(c.tile.i, c.tile.j) != CellKind::OneWay) continue;
+            hit = true;
+            tie = tie || c.tie;
+            fast = fast || move.y >= 4 * scene.map.tileSize.y;
+            ++oneWayHits[std::min<std::int32_t>(2, std::max<std::int32_t>(0, c.step))];
+        }
+        seam = seam || oneWayHits[1] > 1 || oneWayHits[2] > 1;
+        for (const Cell c : platforms) {
+            const oracle::ExactRect t = map.tileRect(c.i, c.j);
+            const bool atStart = overlapsExactly(frame.start, frame.size, t);
+            startsInside = startsInside || atStart;
+            inside = inside || atStart || overlapsExactly(frame.position, frame.size, t);
+            onPlatform = onPlatform || (move.y > 0 && t.min.y == frame.start.y + frame.size.y &&
+                                        t.min.x < frame.start.x + frame.size.x && frame.start.x < t.max.x);
+        }
+    }
+    if (hit) tags.push_back("one-way-hit");
+    if (tie) tags.push_back("one-way-tie");
+    if (fast) tags.push_back("one-way-fast");
+    if (seam) tags.push_back("one-way-seam");
+    if (onPlatform) tags.push_back("on-platform");
+    if (inside) tags.push_back("in-one-way");
+    if (startsInside) tags.push_back("starts-in-one-way");
+}
+
 /// The path that decided the scene's frames (tilesweep/frame_stats.h): "exact" when any frame fell
 /// back to the lattice, else "filtered" when any predicate needed the exact refinement, else "fast".
 template <class T>
@@ -267,6 +322,7 @@ std::vector<std::string> classifyScene(const Scene<T>& scene) {
     if (startOverlap) tags.push_back("start-overlap");
     if (std::find(scene.map.solid.begin(), scene.map.solid.end(), std::uint8_t{1}) == scene.map.solid.end())
         tags.push_back("empty-map");
+    addOneWayTags(scene, frames, tags);
     const T huge = std::ldexp(T(1), 40);
     if (std::any_of(scene.moves.begin(), scene.moves.end(),
                     [huge](Vec2<T> m) { return std::fabs(m.x) >= huge || std::fabs(m.y) >= huge; }))

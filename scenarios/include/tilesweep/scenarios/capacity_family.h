@@ -37,7 +37,7 @@ rc::Gen<GeneratedScene<T>> genCapacityScene() {
         Grid<T> g;
         g.columns = across + 8;
         g.rows = down + 8;
-        g.solid.assign(static_cast<std::size_t>(g.columns * g.rows), 0);
+        g.cells.assign(static_cast<std::size_t>(g.columns * g.rows), 0);
         const int wallColumn = g.columns - 2;
         const int floorRow = g.rows - 2;
         for (int j = 0; j < g.rows; ++j) g.set(wallColumn, j, true);

@@ -30,7 +30,7 @@ rc::Gen<GeneratedScene<T>> genCornerScene(Family family) {
         Grid<T> g;
         g.columns = 7;
         g.rows = 7;
-        g.solid.assign(49, 0);
+        g.cells.assign(49, 0);
         const int ci = 3;
         const int cj = 3;
         g.set(ci, cj, true);

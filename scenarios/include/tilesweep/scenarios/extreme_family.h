@@ -29,7 +29,7 @@ rc::Gen<GeneratedScene<T>> genExtremeScene() {
         const int kind = *rc::gen::element(0, 1, 2, 3);
         g.columns = kind == 0 ? 0 : *rc::gen::element(1, 4, 9, 16);
         g.rows = kind == 0 ? 0 : *rc::gen::element(1, 3, 8, 16);
-        g.solid.assign(static_cast<std::size_t>(g.columns * g.rows), 0);
+        g.cells.assign(static_cast<std::size_t>(g.columns * g.rows), 0);
         if (kind >= 2)
             for (int k = 0; k < g.columns * g.rows / 3 + 1; ++k)
                 g.set(*rc::gen::inRange(0, g.columns), *rc::gen::inRange(0, g.rows), true);

@@ -13,8 +13,9 @@
 // One file per family (or per builder that draws several related families): layout_family.h,
 // corner_family.h, floor_family.h, far_sub_ulp_family.h, far_edge_family.h, fine_bits_family.h,
 // extreme_family.h, filter_band_family.h, high_speed_family.h, tiny_scale_family.h,
-// capacity_family.h and range_edge_family.h, over the shared pieces of scene_pieces.h; family.h
-// names them. This header includes them all and draws any of them (genScene, buildScene).
+// capacity_family.h, range_edge_family.h and platform_family.h (the one-way families), over the shared pieces
+// of scene_pieces.h; family.h names them. This header includes them all and draws any of them (genScene,
+// buildScene).
 //
 // RapidCheck's own float generator never yields -0, subnormals or tile-edge values and shrinks
 // poorly, so every number here is an integer on a grid mapped to T (a multiple of tile/8, say),
@@ -35,6 +36,7 @@
 #include "tilesweep/scenarios/floor_family.h"
 #include "tilesweep/scenarios/high_speed_family.h"
 #include "tilesweep/scenarios/layout_family.h"
+#include "tilesweep/scenarios/platform_family.h"
 #include "tilesweep/scenarios/range_edge_family.h"
 #include "tilesweep/scenarios/tiny_scale_family.h"
 #include "tilesweep/scene/scene.h"
@@ -92,6 +94,11 @@ rc::Gen<GeneratedScene<T>> genScene(Family family) {
             return detail::genCapacityScene<T>();
         case Family::RangeEdge:
             return detail::genRangeEdgeScene<T>();
+        case Family::Platforms:
+        case Family::PlatformLanding:
+        case Family::PlatformJump:
+        case Family::PlatformWalk:
+            return detail::genPlatformScene<T>(family);
         case Family::Mixed:
             break;
     }
@@ -108,6 +115,7 @@ rc::Gen<GeneratedScene<T>> genScene(Family family) {
         {1, genFarSubUlpScene<T>()},
         {1, genFarEdgeScene<T>()},
         {1, genFineBitsScene<T>()},
+        {1, detail::genPlatformScene<T>(Family::Platforms)},
     });
 }
 
@@ -130,7 +138,8 @@ template <class T>
 /// buildScene with every map origin the family draws (genOrigin) at `magnitude`, rounded down to
 /// whole tiles: the same (family, seed) gives the same local scene at every magnitude, built in
 /// T there. The families whose builders draw their origin that way: random, floor, stairs,
-/// single-tile, corner-tie, corner-pass, seam-landing, gap, resting, high-speed (the others place
+/// single-tile, corner-tie, corner-pass, seam-landing, gap, resting, high-speed and the four
+/// one-way families (the others place
 /// their own origins and ignore it). The audit's far columns are these.
 template <class T>
 [[nodiscard]] GeneratedScene<T> buildSceneAt(Family family, std::uint64_t seed, double magnitude) {

@@ -32,6 +32,10 @@ enum class Family : std::uint8_t {
     TinyScale,    ///< a mixed scene scaled by a power of two near the bottom of T's normal range
     Capacity,     ///< boxes whose contact bound is the inline limit or just past it, into a corner
     RangeEdge,    ///< float frames at the range test's edge: a fine width and move just past a grid line
+    Platforms,    ///< one-way platforms among solid tiles; any box (sometimes inside one) and motion
+    PlatformLanding,  ///< falling onto thin platforms at 1/8 to 100 tiles a frame; exact corners; sides
+    PlatformJump,     ///< jumping up through a platform, then landing on it over the following frames
+    PlatformWalk,     ///< walking along a row of platforms across its seams under gravity
     Mixed,
 };
 
@@ -75,6 +79,14 @@ enum class Family : std::uint8_t {
             return "capacity";
         case Family::RangeEdge:
             return "range-edge";
+        case Family::Platforms:
+            return "platforms";
+        case Family::PlatformLanding:
+            return "platform-landing";
+        case Family::PlatformJump:
+            return "platform-jump";
+        case Family::PlatformWalk:
+            return "platform-walk";
         case Family::Mixed:
             return "mixed";
     }

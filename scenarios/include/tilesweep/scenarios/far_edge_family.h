@@ -35,7 +35,7 @@ rc::Gen<GeneratedScene<T>> genFarEdgeScene() {
         Grid<T> g;
         g.columns = 6;
         g.rows = 6;
-        g.solid.assign(36, 0);
+        g.cells.assign(36, 0);
         g.set(3, 3, true);  // the tile beyond the line x = ox + 3*tile, one row down
         for (int k = 0; k < 2; ++k)
             g.set(*rc::gen::inRange(3, 6), *rc::gen::inRange(3, 6), *rc::gen::arbitrary<bool>());

@@ -28,7 +28,7 @@ rc::Gen<GeneratedScene<T>> genFarSubUlpScene() {
         Grid<T> g;
         g.columns = 5;
         g.rows = 5;
-        g.solid.assign(25, 0);
+        g.cells.assign(25, 0);
         g.set(2, 2, true);
         for (int k = 0; k < 3; ++k)
             g.set(*rc::gen::inRange(0, 5), *rc::gen::inRange(0, 5), *rc::gen::arbitrary<bool>());

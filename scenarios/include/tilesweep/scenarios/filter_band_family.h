@@ -86,7 +86,7 @@ rc::Gen<GeneratedScene<T>> genFilterBandScene(bool nearTie = false) {
         Grid<T> grid;
         grid.columns = 3;
         grid.rows = 3;
-        grid.solid.assign(9, 0);
+        grid.cells.assign(9, 0);
         grid.set(1, 1, true);
         grid.set(0, 1, *rc::gen::arbitrary<bool>());  // across the left face
         grid.set(1, 0, *rc::gen::arbitrary<bool>());  // across the top face

@@ -37,7 +37,7 @@ rc::Gen<GeneratedScene<T>> genFineBitsScene() {
             const double tile = 16 * unit;
             g.columns = 2;
             g.rows = 3;
-            g.solid.assign(6, 0);
+            g.cells.assign(6, 0);
             for (int j = 0; j < 3; ++j) g.set(0, j, true);  // the wall: its left face is x = 0
             // D odd in [2^digits, 2^(digits+1)); x = -(D + 1) units is even, so representable.
             const auto high = static_cast<std::int64_t>(*rc::gen::inRange(0, 1 << 20));
@@ -50,7 +50,7 @@ rc::Gen<GeneratedScene<T>> genFineBitsScene() {
             const double tile = 16;
             g.columns = 8;
             g.rows = 8;
-            g.solid.assign(64, 0);
+            g.cells.assign(64, 0);
             for (int j = 0; j < 8; ++j) g.set(5, j, true);  // a wall: left face x = 80
             const double dx = *rc::gen::inRange(1, 41) * 0.5;
             const double w = 12;
@@ -65,7 +65,7 @@ rc::Gen<GeneratedScene<T>> genFineBitsScene() {
             const double ox = std::ldexp(1.0, e) * *rc::gen::element(1, -1);
             g.columns = 8;
             g.rows = 8;
-            g.solid.assign(64, 0);
+            g.cells.assign(64, 0);
             for (int k = 0; k < 12; ++k) g.set(*rc::gen::inRange(0, 8), *rc::gen::inRange(0, 8), true);
             const double size = isFloat ? tile * (1 + std::ldexp(1.0, -23)) / 2 : 8 + std::ldexp(1.0, -40);
             const Box<T> box{

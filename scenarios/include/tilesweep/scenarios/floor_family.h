@@ -28,7 +28,7 @@ rc::Gen<GeneratedScene<T>> genFloorScene(Family family) {
         Grid<T> g;
         g.columns = *rc::gen::inRange(6, 33);
         g.rows = 6;
-        g.solid.assign(static_cast<std::size_t>(g.columns * g.rows), 0);
+        g.cells.assign(static_cast<std::size_t>(g.columns * g.rows), 0);
         const int floorRow = 4;
         for (int i = 0; i < g.columns; ++i) g.set(i, floorRow, true);
         const double floorY = oy + floorRow * tile;

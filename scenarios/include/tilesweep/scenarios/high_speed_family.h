@@ -28,7 +28,7 @@ rc::Gen<GeneratedScene<T>> genHighSpeedScene() {
         Grid<T> g;
         g.columns = 128;
         g.rows = 6;
-        g.solid.assign(static_cast<std::size_t>(g.columns * g.rows), 0);
+        g.cells.assign(static_cast<std::size_t>(g.columns * g.rows), 0);
         const int sx = *rc::gen::element(1, -1);
         Box<T> box;
         box.size = {static_cast<T>(*rc::gen::inRange(2, 11) * tile / 8.0),

@@ -28,7 +28,7 @@ rc::Gen<GeneratedScene<T>> genLayoutScene(Family family) {
         g.columns =
             *rc::gen::weightedOneOf<int>({{8, rc::gen::inRange(1, 17)}, {1, rc::gen::inRange(17, 65)}});
         g.rows = *rc::gen::weightedOneOf<int>({{8, rc::gen::inRange(1, 17)}, {1, rc::gen::inRange(17, 65)}});
-        g.solid.assign(static_cast<std::size_t>(g.columns * g.rows), 0);
+        g.cells.assign(static_cast<std::size_t>(g.columns * g.rows), 0);
         switch (family) {
             case Family::Floor: {
                 const int floorRow = *rc::gen::inRange(0, g.rows);
@@ -57,7 +57,7 @@ rc::Gen<GeneratedScene<T>> genLayoutScene(Family family) {
                 // A roll shrinks toward 0, which here means empty: a shrunk counterexample keeps
                 // only the solid cells it needs. Fixed size: inRange scales with RapidCheck's size,
                 // which would thin out the maps of the early cases.
-                for (auto& c : g.solid)
+                for (auto& c : g.cells)
                     c = *rc::gen::resize(100, rc::gen::inRange(0, 100)) >= 100 - percent ? 1 : 0;
                 break;
             }

@@ -46,7 +46,7 @@ rc::Gen<GeneratedScene<T>> genRangeEdgeScene() {
         Grid<T> g;
         g.columns = 4;
         g.rows = 3;
-        g.solid.assign(12, 0);
+        g.cells.assign(12, 0);
         for (int i = 0; i < 4; ++i) {
             g.set(i, 0, *rc::gen::arbitrary<bool>());
             g.set(i, 2, *rc::gen::arbitrary<bool>());

@@ -40,19 +40,30 @@ void forEachSceneValue(const Scene<T>& scene, F&& f) {
 
 namespace tilesweep::scenarios::detail {
 
+/// What a Grid cell holds: the map's three kinds, one byte each.
+inline constexpr std::uint8_t kEmptyCell = 0;
+inline constexpr std::uint8_t kSolidCell = 1;
+inline constexpr std::uint8_t kOneWayCell = 2;
+
+/// The cells of a map being built, row-major from the top row; makeScene splits them into the
+/// map's solid and one-way flags. Writes outside the grid are ignored.
 template <class T>
 struct Grid {
     int columns = 0;
     int rows = 0;
-    std::vector<std::uint8_t> solid;
-    void set(int i, int j, bool v) {
+    std::vector<std::uint8_t> cells;  ///< kEmptyCell, kSolidCell or kOneWayCell
+    void put(int i, int j, std::uint8_t kind) {
         if (i >= 0 && j >= 0 && i < columns && j < rows)
-            solid[static_cast<std::size_t>(j * columns + i)] = v ? 1 : 0;
+            cells[static_cast<std::size_t>(j * columns + i)] = kind;
     }
-    bool get(int i, int j) const {
-        return i >= 0 && j >= 0 && i < columns && j < rows &&
-               solid[static_cast<std::size_t>(j * columns + i)] != 0;
+    void set(int i, int j, bool solid) { put(i, j, solid ? kSolidCell : kEmptyCell); }
+    void setOneWay(int i, int j) { put(i, j, kOneWayCell); }
+    [[nodiscard]] std::uint8_t kind(int i, int j) const {
+        return i >= 0 && j >= 0 && i < columns && j < rows ? cells[static_cast<std::size_t>(j * columns + i)]
+                                                           : kEmptyCell;
     }
+    /// Whether cell (i, j) holds anything, solid or one-way.
+    [[nodiscard]] bool get(int i, int j) const { return kind(i, j) != kEmptyCell; }
 };
 
 /// Tile sizes: powers of two and integers such as 12 or 24.
@@ -117,15 +128,22 @@ Scene<T> makeScene(const Grid<T>& g, double ox, double oy, double tile, Box<T> b
     s.map.tileSize = {static_cast<T>(tile), static_cast<T>(tile)};
     s.map.columns = g.columns;
     s.map.rows = g.rows;
-    s.map.solid = g.solid;
+    s.map.solid.resize(g.cells.size());
+    const bool anyOneWay = std::find(g.cells.begin(), g.cells.end(), kOneWayCell) != g.cells.end();
+    if (anyOneWay) s.map.oneWay.assign(g.cells.size(), 0);
+    for (std::size_t k = 0; k < g.cells.size(); ++k) {
+        s.map.solid[k] = g.cells[k] == kSolidCell ? 1 : 0;
+        if (anyOneWay) s.map.oneWay[k] = g.cells[k] == kOneWayCell ? 1 : 0;
+    }
     s.box = box;
     s.moves = std::move(moves);
     return s;
 }
 
-/// Clears the cells the box overlaps (or touches) at its start, so it starts free.
+/// Clears the cells the box overlaps (or touches) at its start, so it starts free; with
+/// `keepOneWay`, only the solid ones (a box may start inside a platform: it jumps through it).
 template <class T>
-void clearUnder(Grid<T>& g, double ox, double oy, double tile, Box<T> box) {
+void clearUnder(Grid<T>& g, double ox, double oy, double tile, Box<T> box, bool keepOneWay = false) {
     const double x0 = (static_cast<double>(box.pos.x) - ox) / tile;
     const double y0 = (static_cast<double>(box.pos.y) - oy) / tile;
     const double x1 = x0 + static_cast<double>(box.size.x) / tile;
@@ -137,7 +155,8 @@ void clearUnder(Grid<T>& g, double ox, double oy, double tile, Box<T> box) {
     };
     for (int j = cell(std::floor(y0) - 1, g.rows); j <= cell(std::floor(y1), g.rows); ++j)
         for (int i = cell(std::floor(x0) - 1, g.columns); i <= cell(std::floor(x1), g.columns); ++i)
-            if (i + 1 > x0 && i < x1 && j + 1 > y0 && j < y1) g.set(i, j, false);
+            if (i + 1 > x0 && i < x1 && j + 1 > y0 && j < y1 && !(keepOneWay && g.kind(i, j) == kOneWayCell))
+                g.set(i, j, false);
 }
 
 template <class T>
@@ -146,7 +165,8 @@ T offGrid(T v, int direction) {
         v, direction > 0 ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity());
 }
 
-/// Swaps the axes of a scene: the same scene on y.
+/// Swaps the axes of a scene: the same scene on y, when it has no one-way cell (a platform is
+/// one-way on y only; its cells are carried over, but the scene is another one).
 template <class T>
 Scene<T> transposed(const Scene<T>& scene) {
     Scene<T> t = scene;
@@ -157,9 +177,12 @@ Scene<T> transposed(const Scene<T>& scene) {
     for (Vec2<T>& m : t.moves) std::swap(m.x, m.y);
     std::swap(t.map.columns, t.map.rows);
     for (int j = 0; j < scene.map.rows; ++j)
-        for (int i = 0; i < scene.map.columns; ++i)
-            t.map.solid[static_cast<std::size_t>(i * t.map.columns + j)] =
-                scene.map.solid[static_cast<std::size_t>(j * scene.map.columns + i)];
+        for (int i = 0; i < scene.map.columns; ++i) {
+            const auto from = static_cast<std::size_t>(j * scene.map.columns + i);
+            const auto to = static_cast<std::size_t>(i * t.map.columns + j);
+            t.map.solid[to] = scene.map.solid[from];
+            if (!scene.map.oneWay.empty()) t.map.oneWay[to] = scene.map.oneWay[from];
+        }
     return t;
 }
 
