@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // A small platformer loop on tilesweep's game-loop API (tilesweep/mover.h): gravity, jumps,
-// walls, a one-tile pit and a fast dash. The player is steered by a tiny controller (walk right,
-// jump at a wall, dash once past the low wall), so the run is the same every time.
+// walls, a one-tile pit, a fast dash and a one-way platform to jump up through, land on and drop
+// through. The player is steered by a tiny controller (walk right, jump at a wall, dash once past
+// the low wall, drop through the platform once), so the run is the same every time.
 //
 //     platformer                 prints the trajectory, one line per frame; exit 1 if a check fails
 //     platformer --svg FILE      also draws it with the scene renderer (tilesweep/scene/render.h)
@@ -9,13 +10,16 @@
 //                                (a box falls, lands and slides), for that script to compare
 //
 // The checks: the player lands, never ends a frame overlapping a solid tile, falls into the pit
-// and climbs out, and the dash (two tiles a frame) stops touching the wall instead of passing it.
+// and climbs out, the dash (two tiles a frame) stops touching the wall instead of passing it, the
+// player jumps up through the platform and lands exactly on its top, and drops through it to the
+// floor on the frame it asks to.
 // README.md quotes the game loop below between the [readme:game-loop] markers; ctest checks the
 // quote is still the code (examples/platformer/check_readme_snippet.cmake).
 #include "tilesweep/mover.h"
 #include "tilesweep/scene/render.h"
 #include "tilesweep/scene/scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -39,16 +43,20 @@ constexpr float kFallLimit = 600;  // px/s
 constexpr int kFrames = 300;
 
 // 16-pixel tiles. A one-tile pit in the floor at column 5 (x in [80, 96]), a low wall of two
-// tiles at column 10 (x in [160, 176]), a tall wall at column 19 (x in [304, 320]).
+// tiles at column 10 (x in [160, 176]), a wall from floor to ceiling at column 19 (x in [304,
+// 320]), and before it a one-way platform ('-') over columns 15 to 18, its top at y = 96: three
+// tiles above the floor, within the jump's reach.
 const char* const kLevel[] = {
-    "##############################", "#............................#", "#............................#",
-    "#............................#", "#............................#", "#..................#.........#",
-    "#..................#.........#", "#.........#........#.........#", "#.........#........#.........#",
+    "##############################", "#..................#.........#", "#..................#.........#",
+    "#..................#.........#", "#..................#.........#", "#..................#.........#",
+    "#..............----#.........#", "#.........#........#.........#", "#.........#........#.........#",
     "#####.########################", "##############################",
 };
 constexpr float kTile = 16;
 constexpr float kPitLeft = 80, kPitRight = 96, kPitFloor = 160;
 constexpr float kTallWall = 304;
+constexpr float kPlatformLeft = 240, kPlatformTop = 96, kFloor = 144;
+constexpr int kStandBeforeDrop = 20;  // frames on the platform before the player drops through
 
 struct Level {
     tilesweep::TileMap<float> map;
@@ -57,7 +65,10 @@ struct Level {
         map.columns = static_cast<std::int32_t>(std::strlen(kLevel[0]));
         map.rows = static_cast<std::int32_t>(sizeof kLevel / sizeof kLevel[0]);
         for (const char* row : kLevel)
-            for (const char* c = row; *c != 0; ++c) map.solid.push_back(*c == '#' ? 1 : 0);
+            for (const char* c = row; *c != 0; ++c) {
+                map.solid.push_back(*c == '#' ? 1 : 0);
+                map.oneWay.push_back(*c == '-' ? 1 : 0);
+            }
     }
     [[nodiscard]] tilesweep::TileMapView<float> view() const { return map.view(); }
 };
@@ -67,6 +78,9 @@ struct Player {
     Vec2<float> velocity{0, 0};
     int dashLeft = 0;
     bool dashed = false;
+    int onPlatform = 0;  ///< frames stood on the platform so far
+    bool down = false;   ///< the down key: this frame drops through one-way platforms
+    bool dropped = false;
 };
 
 struct Frame {
@@ -74,11 +88,20 @@ struct Frame {
     MoveResult<float> result;  ///< what moveAndSlide returned
 };
 
+/// Whether the box stands on the platform's top (within its columns).
+bool standsOnPlatform(const Box<float>& b) {
+    return b.pos.y + b.size.y == kPlatformTop && b.pos.x + b.size.x > kPlatformLeft && b.pos.x < kTallWall;
+}
+
 // The controller: walk right, jump when standing against a wall, dash once on the ground past
-// the low wall; gravity always (a dash is level flight).
+// the low wall, drop through the platform once after standing on it a while; gravity always (a
+// dash is level flight).
 void steer(Player& p, const std::vector<Frame>& trace) {
     const bool grounded = !trace.empty() && trace.back().result.onGround;
     const bool walled = !trace.empty() && trace.back().result.onWall;
+    p.onPlatform = grounded && standsOnPlatform(p.box) ? p.onPlatform + 1 : 0;
+    p.down = !p.dropped && p.onPlatform > kStandBeforeDrop;
+    p.dropped = p.dropped || p.down;
     if (p.dashLeft > 0) {
         --p.dashLeft;
         p.velocity = {kDash, 0};
@@ -91,7 +114,7 @@ void steer(Player& p, const std::vector<Frame>& trace) {
         p.velocity = {kDash, 0};
         return;
     }
-    if (grounded && walled) p.velocity.y = kJump;
+    if (grounded && walled && !p.down && (p.dropped || p.onPlatform == 0)) p.velocity.y = kJump;
     p.velocity.y += static_cast<float>(static_cast<double>(kGravity) * kDt);
     if (p.velocity.y > kFallLimit) p.velocity.y = kFallLimit;
 }
@@ -122,9 +145,10 @@ int runPlatformer(const char* svgPath) {
     // [readme:game-loop]
     const auto map = tilesweep::prepareMap(level.view());  // once per map: validates it
     if (!map.isValid()) return fail(tilesweep::describe(map.error()));
+    const auto drop = map.withoutOneWay();  // the map of frames that drop through platforms
     for (int frame = 0; frame < kFrames; ++frame) {
-        steer(player, trace);  // input, gravity, jumps, the dash
-        const auto r = tilesweep::moveAndSlide(map, {player.box, player.velocity * kDt});
+        steer(player, trace);  // input, gravity, jumps, the dash, the down key
+        const auto r = tilesweep::moveAndSlide(player.down ? drop : map, {player.box, player.velocity * kDt});
         trace.push_back({player, r});  // the frame's start and its result
         player.box.pos = r.position;
         player.velocity = tilesweep::clipVelocity(player.velocity, r);  // floors, ceilings, walls
@@ -132,6 +156,8 @@ int runPlatformer(const char* svgPath) {
     // [readme:end]
     std::printf("# frame x y vx vy flags (G ground, W wall, C ceiling): the position at the end\n");
     bool landed = false, inPit = false, outOfPit = false, dashStopped = false;
+    bool jumpedThrough = false, landedOnPlatform = false, droppedToFloor = false;
+    int drops = 0;
     for (std::size_t frame = 0; frame < trace.size(); ++frame) {
         const Frame& f = trace[frame];
         const Vec2<float> move = f.player.velocity * kDt;
@@ -151,25 +177,52 @@ int runPlatformer(const char* svgPath) {
         if (inPit && b.pos.x > kPitRight) outOfPit = true;
         if (move.x > kTile && f.result.onWall && b.pos.x + b.size.x == kTallWall) dashStopped = true;
         if (b.pos.x + b.size.x > kTallWall) return fail("the player got past the tall wall");
+        // Rising with the box's interior across the platform's top: jumping up through it.
+        if (f.player.velocity.y < 0 && b.pos.y < kPlatformTop && b.pos.y + b.size.y > kPlatformTop &&
+            b.pos.x + b.size.x > kPlatformLeft)
+            jumpedThrough = true;
+        if (f.result.onGround && standsOnPlatform(b)) {
+            if (!jumpedThrough) return fail("the player stood on the platform before jumping through it");
+            if (drops > 0 && !droppedToFloor) return fail("the drop through the platform landed on it");
+            landedOnPlatform = true;
+        }
+        if (f.player.down) ++drops;
+        if (drops > 0 && f.result.onGround && b.pos.y + b.size.y == kFloor) droppedToFloor = true;
     }
     if (!landed) return fail("the player never landed");
     if (!inPit || !outOfPit) return fail("the player did not fall into the one-tile pit and climb out");
     if (!dashStopped) return fail("the dash did not stop touching the wall");
+    if (!jumpedThrough || !landedOnPlatform)
+        return fail("the player did not jump up through the platform and land on it");
+    if (drops != 1 || !droppedToFloor)
+        return fail("the player did not drop through the platform to the floor");
     std::printf(
-        "# checks hold: lands, never inside a tile, in and out of the pit, the dash stops at the wall\n");
+        "# checks hold: lands, never inside a tile, in and out of the pit, the dash stops at the wall, "
+        "up through the platform and onto it, down through it\n");
 
     if (svgPath != nullptr) {
-        // The same run as a scene: the renderer resolves it again with resolveMove, which must
-        // give the very same positions.
+        // The same run as a scene, each frame resolved again with resolveMove on the map it used
+        // (the drop frame's without its one-way cells, which a scene file cannot say), which
+        // must give the very same positions.
         tilesweep::Scene<float> scene;
         scene.name = "platformer";
         scene.map = level.map;
         scene.box = Player{}.box;
-        for (const Frame& f : trace) scene.moves.push_back(f.player.velocity * kDt);
-        const auto frames = tilesweep::runScene(scene);
-        for (std::size_t k = 0; k < frames.size(); ++k)
-            if (std::memcmp(&frames[k].position, &trace[k].result.position, sizeof frames[k].position) != 0)
-                return fail("runScene disagrees with moveAndSlide");
+        std::vector<tilesweep::FrameResult<float>> frames;
+        tilesweep::Contact<float> contacts[16];
+        tilesweep::Cell overlaps[16];
+        for (const Frame& f : trace) {
+            const Vec2<float> move = f.player.velocity * kDt;
+            scene.moves.push_back(move);
+            const auto view = f.player.down ? level.view().withoutOneWay() : level.view();
+            const auto r =
+                tilesweep::resolveMove<float>({view, f.player.box, move}, {contacts, 16, overlaps, 16});
+            if (std::memcmp(&r.position, &f.result.position, sizeof r.position) != 0)
+                return fail("resolveMove disagrees with moveAndSlide");
+            frames.push_back({r.position,
+                              {contacts, contacts + std::min(r.contactCount, 16)},
+                              {overlaps, overlaps + std::min(r.startOverlapCount, 16)}});
+        }
         std::ofstream out(svgPath);
         out << tilesweep::renderSceneSvg(scene, frames);
         if (!out) return fail("cannot write the SVG file");
