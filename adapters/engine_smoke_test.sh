@@ -7,16 +7,19 @@
 # "skipped: ..." when the engine's runtime is not installed (adapters/ENGINE/install.sh --check);
 # `bash scripts/setup.sh --engines` installs it, a test does not.
 #
-#   engine_smoke_test.sh godot|rapier TILESWEEP SCENES...
+#   engine_smoke_test.sh ENGINE TILESWEEP SCENES...     # ENGINE: a directory adapters/ENGINE with install.sh and run.sh
 set -euo pipefail
 engine=$1
 tilesweep=$2
 shift 2
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-case $engine in
-    godot|rapier) ;;
-    *) echo "unknown engine '$engine' (godot or rapier)" >&2; exit 2 ;;
-esac
+if [ ! -f "$here/$engine/install.sh" ] || [ ! -x "$here/$engine/run.sh" ]; then
+    echo "unknown engine '$engine' (adapters/*/install.sh: $(cd "$here" && echo */install.sh | sed 's|/install.sh||g'))" >&2
+    exit 2
+fi
+# The engine's arithmetic: adapters/ENGINE/scalar holds "double" for a double engine (planck).
+scalar=float
+if [ -f "$here/$engine/scalar" ]; then scalar=$(tr -d '[:space:]' < "$here/$engine/scalar"); fi
 status=0
 missing=$(bash "$here/$engine/install.sh" --check 2>&1) || status=$?
 if [ "$status" -eq 3 ]; then
@@ -30,7 +33,7 @@ fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cat "$@" | grep -v '^[[:space:]]*$' > "$work/scenes.jsonl"
-"$tilesweep" resolve --scalar float "$work/scenes.jsonl" > "$work/expected.jsonl" || true
+"$tilesweep" resolve --scalar "$scalar" "$work/scenes.jsonl" > "$work/expected.jsonl" || true
 "$here/$engine/run.sh" "$work/scenes.jsonl" "$work/answers.jsonl" 2> "$work/stderr" || {
     echo "the $engine adapter failed; its stderr ends with:"
     tail -n 20 "$work/stderr"
@@ -58,10 +61,10 @@ fi
 paste -d '\n' "$work/expected.shape" "$work/scenes.jsonl" | awk 'NR % 2 == 1 { keep = ($0 != "error") } NR % 2 == 0 && keep' \
     > "$work/valid.jsonl"
 case $engine in
-    godot) command="$here/godot/run.sh {in} {out}" ;;
-    rapier) command="$here/rapier/run.sh" ;;
+    godot) command="$here/godot/run.sh {in} {out}" ;;  # Godot starts once a batch: file mode
+    *) command="$here/$engine/run.sh" ;;
 esac
-if ! "$tilesweep" resolve --scalar float --resolver-cmd "$command" "$work/valid.jsonl" > "$work/read-back.jsonl" 2>&1; then
+if ! "$tilesweep" resolve --scalar "$scalar" --resolver-cmd "$command" "$work/valid.jsonl" > "$work/read-back.jsonl" 2>&1; then
     echo "tilesweep could not read every answer of the $engine adapter:"
     grep '"error"' "$work/read-back.jsonl" | head -n 5
     exit 1
