@@ -10,7 +10,7 @@
 #   bash scripts/bench_adapters.sh                  # 20 s each, 1000 cases a property per round
 #   bash scripts/bench_adapters.sh --seconds 60 --cases 2000 --out /tmp/adapters.md
 #
-# Needs the dev build (bash scripts/test.sh builds it) and, for Godot and Rapier, their runtimes
+# Needs the dev build (bash scripts/test.sh builds it) and, for the engines, their runtimes
 # (bash scripts/setup.sh --engines; adapters/README.md).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -40,6 +40,7 @@ engines=(
     "box2d|$build/adapters/tilesweep_box2d_adapter|Box2D 2.4 b2TimeOfImpact per tile (C++)"
     "godot|${TILESWEEP_ADAPTERS:-$root/adapters}/godot/run.sh {in} {out}|Godot 3 body_test_motion (GDScript, file mode)"
     "rapier|${TILESWEEP_ADAPTERS:-$root/adapters}/rapier/run.sh|Rapier KinematicCharacterController (node, pipe)"
+    "planck|${TILESWEEP_ADAPTERS:-$root/adapters}/planck/run.sh|planck (Box2D 2.x in JS doubles) dynamic body and world.step (node, pipe)"
     "phaser|${TILESWEEP_ADAPTERS:-$root/adapters}/phaser/run.sh|Phaser 4 Arcade body vs tilemap layer (node, pipe)"
 )
 
@@ -50,7 +51,8 @@ trap 'rm -rf "$scratch"' EXIT
     echo
     echo "\`bash scripts/bench_adapters.sh --seconds $seconds --cases $cases\` on $(nproc) cores ($(uname -m),"
     echo "$(lscpu 2>/dev/null | sed -n 's/^Model name: *//p' | head -1)); each run is"
-    echo "\`tilesweep check --resolver-cmd CMD --scalar float --cases $cases --seconds $seconds --keep-going --no-shrink\`."
+    echo "\`tilesweep check --resolver-cmd CMD --scalar S --cases $cases --seconds $seconds --keep-going --no-shrink\`,"
+    echo "S being what adapters/ENGINE/scalar says (double for the engines that compute in doubles), else float."
     echo "Cases judged per second count every case, passed or failed; rounds rehearse on tilesweep"
     echo "and send each property round to the engine in one batch."
     echo
@@ -65,9 +67,13 @@ for entry in "${engines[@]}"; do
         echo "| $name | $what | skipped: not here | | | | | |" >> "$scratch/report.md"
         continue
     fi
+    # The engine's arithmetic: adapters/ENGINE/scalar holds "double" for a double engine.
+    scalar=float
+    scalar_file=${TILESWEEP_ADAPTERS:-$root/adapters}/$name/scalar
+    if [ -f "$scalar_file" ]; then scalar=$(tr -d '[:space:]' < "$scalar_file"); fi
     load_before=$(cut -d' ' -f1 /proc/loadavg)
     echo "bench_adapters: $name for $seconds s" >&2
-    "$tool" check --resolver-cmd "$command" --scalar float --cases "$cases" --seconds "$seconds" --keep-going --no-shrink \
+    "$tool" check --resolver-cmd "$command" --scalar "$scalar" --cases "$cases" --seconds "$seconds" --keep-going --no-shrink \
         --corpus "$scratch/corpus" --json "$scratch/$name.json" > "$scratch/$name.out" 2>&1 || true
     load_after=$(cut -d' ' -f1 /proc/loadavg)
     summary=$(grep -E '^[0-9]+ cases in ' "$scratch/$name.out" | tail -1)

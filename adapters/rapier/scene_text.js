@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Scene lines in, result lines out, for float32 resolvers (../../../shared/CONTRACT.md, "Scene
-// files" and "`tilesweep resolve`"): numbers are read exactly (a hexfloat string is rounded
-// once, straight to float32) and printed so that they read back to the same float32 bits.
+// Scene lines in, result lines out, for float32 resolvers and, with parseScene(line, {scalar:
+// 'double'}) and formatFrames(frames, formatDouble), double ones (docs/contract.md,
+// "Scene files" and "`tilesweep resolve`"): numbers are read exactly (a hexfloat string is
+// rounded once, straight to the scalar type) and printed so that they read back to the same bits.
 'use strict';
 
 const f32 = new Float32Array(1);
@@ -13,13 +14,19 @@ function fail(field, problem) {
     throw new SceneError(`${field}: ${problem}`);
 }
 
-// The float32 nearest m * 2^e (m a non-negative BigInt), ties to even, or Infinity past the
-// largest float32. Rounds once: the bits below the kept ones decide, with nothing in between.
-function roundToFloat32(m, e) {
+// The binary format of float32 and of double: significant bits, the lowest subnormal bit's
+// exponent, and the power of two from which a value is past the largest finite one.
+const kFloat32Format = {precision: 24, lowestExponent: -149, overflow: 2 ** 128};
+const kDoubleFormat = {precision: 53, lowestExponent: -1074, overflow: Infinity};
+
+// The value of the format nearest m * 2^e (m a non-negative BigInt), ties to even, or Infinity
+// past its largest finite value. Rounds once: the bits below the kept ones decide, with nothing
+// in between.
+function roundToFormat(m, e, format) {
     if (m === 0n) return 0;
     const bits = m.toString(2).length;
-    // The lowest kept bit: 24 significant bits, but never below 2^-149 (subnormals).
-    const lowest = Math.max(bits + e - 24, -149);
+    // The lowest kept bit: all significant bits, but never below the lowest subnormal one.
+    const lowest = Math.max(bits + e - format.precision, format.lowestExponent);
     let kept = m;
     if (lowest > e) {
         const shift = BigInt(lowest - e);
@@ -30,8 +37,15 @@ function roundToFloat32(m, e) {
     } else {
         kept = m << BigInt(e - lowest);
     }
-    const value = Number(kept) * powerOfTwo(lowest);  // exact: kept < 2^25, lowest in range
-    return value >= 2 ** 128 ? Infinity : value;
+    // Exact: kept has at most precision + 1 bits, and lowest is a double's exponent (past the
+    // largest double, powerOfTwo or the product is Infinity).
+    const value = Number(kept) * powerOfTwo(lowest);
+    return value >= format.overflow ? Infinity : value;
+}
+
+// The float32 nearest m * 2^e, as roundToFormat.
+function roundToFloat32(m, e) {
+    return roundToFormat(m, e, kFloat32Format);
 }
 
 // 2^e, exactly, for the e of a normal double.
@@ -49,7 +63,7 @@ function powerOfTwo(e) {
 // "0x1.8p+3", "-0x0p+0", "0xAp-2": C99's hexadecimal floating constants, as printf("%a") writes.
 const kHexfloat = /^(-?)0[xX]([0-9a-fA-F]*)(?:\.([0-9a-fA-F]*))?[pP]([+-]?[0-9]+)$/;
 
-function readHexfloat(text, field) {
+function readHexfloat(text, field, double = false) {
     const match = kHexfloat.exec(text);
     if (!match || match[2].length + (match[3] || '').length === 0)
         fail(field, `expected a number or a hexfloat string like "0x1.8p+3", got '${text.slice(0, 40)}'`);
@@ -60,33 +74,87 @@ function readHexfloat(text, field) {
     const exponent = Number(match[4]) - 4 * fraction.length + 4 * trailing;
     if (!Number.isFinite(exponent) || Math.abs(exponent) > 100000) fail(field, `exponent out of range in '${text}'`);
     // Up to 13 hex digits the mantissa is an exact double and so is mantissa * 2^exponent
-    // while it stays a normal double: Math.fround then rounds once. Longer ones take BigInt.
+    // while it stays a normal double: Math.fround then rounds once (a double needs no rounding).
+    // Longer ones take BigInt.
     const short = digits.length <= 13 && exponent > -1000 && exponent < 900;
-    const magnitude = digits.length === 0 ? 0
-        : short ? Math.fround(parseInt(digits, 16) * powerOfTwo(exponent))
-        : roundToFloat32(BigInt('0x' + digits), exponent);
+    let magnitude;
+    if (digits.length === 0) magnitude = 0;
+    else if (short) {
+        const exact = parseInt(digits, 16) * powerOfTwo(exponent);
+        magnitude = double ? exact : Math.fround(exact);
+    } else {
+        magnitude = roundToFormat(BigInt('0x' + digits), exponent, double ? kDoubleFormat : kFloat32Format);
+    }
     return match[1] === '-' ? -magnitude : magnitude;
 }
 
-// A JSON number, or a string holding a hexfloat, as a float32 value. JSON numbers go through
-// JavaScript's double first (every number the tool writes is a hexfloat string).
-function readScalar(value, field) {
+// A JSON number, or a string holding a hexfloat, as a float32 value (double: as a double). JSON
+// numbers are JavaScript's doubles, read once by JSON.parse, then rounded to float32 (every
+// number the tool writes is a hexfloat string, read exactly).
+function readScalar(value, field, double = false) {
     let result;
-    if (typeof value === 'number') result = Math.fround(value);
-    else if (typeof value === 'string') result = readHexfloat(value, field);
+    if (typeof value === 'number') result = double ? value : Math.fround(value);
+    else if (typeof value === 'string') result = readHexfloat(value, field, double);
     else fail(field, `expected a number or a hexfloat string, got ${JSON.stringify(value)}`);
-    if (!Number.isFinite(result)) fail(field, 'non-finite value (or past the largest float)');
+    if (!Number.isFinite(result)) fail(field, `non-finite value (or past the largest ${double ? 'double' : 'float'})`);
     return result;
 }
 
-function readPair(value, field) {
+function readPair(value, field, double = false) {
     if (!Array.isArray(value) || value.length !== 2) fail(field, 'expected [a, b]');
-    return [readScalar(value[0], `${field}[0]`), readScalar(value[1], `${field}[1]`)];
+    return [readScalar(value[0], `${field}[0]`, double), readScalar(value[1], `${field}[1]`, double)];
+}
+
+// The exact value of a double as m * 2^e (m a BigInt, negative for a negative value).
+const f64 = new Float64Array(1);
+const u64 = new BigUint64Array(f64.buffer);
+function exactParts(v) {
+    f64[0] = v;
+    const bits = u64[0];
+    const biased = Number((bits >> 52n) & 0x7ffn);
+    const fraction = bits & ((1n << 52n) - 1n);
+    const m = biased === 0 ? fraction : fraction | (1n << 52n);
+    return {m: (bits >> 63n) === 1n ? -m : m, e: (biased === 0 ? 1 : biased) - 1075};
+}
+
+// origin + k * tile (k a non-negative integer) when that exact value is a double, else NaN.
+function exactEdge(origin, k, tile) {
+    // A tile of 24 significant bits or fewer times k < 2^29 is an exact double: the sum is then
+    // exact when it does not round, which TwoSum's error tells.
+    if (Math.fround(tile) === tile && k < 2 ** 29) {
+        const product = k * tile;
+        const sum = origin + product;
+        const back = sum - origin;
+        const err = (origin - (sum - back)) + (product - back);
+        if (err === 0 && Number.isFinite(sum)) return sum;
+        if (Number.isFinite(sum)) return NaN;
+    }
+    // Otherwise exactly, in BigInt: m * 2^e with the common lowest exponent.
+    const o = exactParts(origin);
+    const t = exactParts(tile);
+    const e = Math.min(o.e, t.e);
+    let m = (o.m << BigInt(o.e - e)) + BigInt(k) * (t.m << BigInt(t.e - e));
+    if (m === 0n) return 0;
+    const negative = m < 0n;
+    if (negative) m = -m;
+    const value = roundToFormat(m, e, kDoubleFormat);
+    if (!Number.isFinite(value)) return NaN;
+    const back = exactParts(value);
+    const exact = back.e >= e ? (back.m << BigInt(back.e - e)) === m : back.m === (m << BigInt(e - back.e));
+    return exact ? (negative ? -value : value) : NaN;
 }
 
 // The parsed scene: {origin, tile, columns, rows, solid and oneWay (row-major 0/1: '#' and '-'),
 // box: [x, y, w, h], moves}.
-function parseScene(line) {
+//
+// options.scalar: 'float' (the default: every number rounded to float32, every tile edge a
+// float32) or 'double' (every number rounded to double, every tile edge a double). The scene
+// also holds the tile edges, exactly: xEdges[i] = origin[0] + i * tile[0] (i = 0..columns) and
+// yEdges[j] likewise.
+function parseScene(line, options = {}) {
+    const double = options.scalar === 'double';
+    if (!double && options.scalar !== undefined && options.scalar !== 'float')
+        throw new Error(`parseScene: unknown scalar '${options.scalar}' (float or double)`);
     let root;
     try {
         root = JSON.parse(line);
@@ -96,8 +164,8 @@ function parseScene(line) {
     if (root === null || typeof root !== 'object' || Array.isArray(root)) fail('scene', 'expected a JSON object');
     const map = root.map;
     if (map === null || typeof map !== 'object') fail('map', 'expected an object with "origin", "tile" and "rows"');
-    const origin = readPair(map.origin, 'map.origin');
-    const tile = readPair(map.tile, 'map.tile');
+    const origin = readPair(map.origin, 'map.origin', double);
+    const tile = readPair(map.tile, 'map.tile', double);
     if (!(tile[0] > 0 && tile[1] > 0)) fail('map.tile', 'tile width and height must be > 0');
     if (!Array.isArray(map.rows)) fail('map.rows', 'expected an array of strings');
     const rows = map.rows.length;
@@ -114,26 +182,32 @@ function parseScene(line) {
             else if (c !== '.') fail(`map.rows[${j}]`, `unknown tile character '${c}' (use '#', '-' or '.')`);
         }
     });
-    // Every tile edge must be a float32 (the contract refuses the map otherwise).
-    for (let axis = 0; axis < 2; ++axis)
-        for (let k = 0; k <= (axis === 0 ? columns : rows); ++k) {
-            const edge = origin[axis] + k * tile[axis];  // exact in double: float32 inputs, k < 2^29
-            if (Math.fround(edge) !== edge)
-                fail('map.tile', `tile edge ${axis === 0 ? 'x' : 'y'} = origin + ${k} * tile is not a float`);
+    // Every tile edge must be a float32 (double: a double; the contract refuses the map otherwise).
+    const xEdges = new Float64Array(columns + 1);
+    const yEdges = new Float64Array(rows + 1);
+    for (let axis = 0; axis < 2; ++axis) {
+        const edges = axis === 0 ? xEdges : yEdges;
+        for (let k = 0; k < edges.length; ++k) {
+            const edge = double ? exactEdge(origin[axis], k, tile[axis])
+                : origin[axis] + k * tile[axis];  // exact in double: float32 inputs, k < 2^29
+            if (double ? Number.isNaN(edge) : Math.fround(edge) !== edge)
+                fail('map.tile', `tile edge ${axis === 0 ? 'x' : 'y'} = origin + ${k} * tile is not a ${double ? 'double' : 'float'}`);
+            edges[k] = edge;
         }
+    }
     if (!Array.isArray(root.box) || root.box.length !== 4) fail('box', 'expected [x, y, w, h]');
-    const box = root.box.map((v, k) => readScalar(v, `box[${k}]`));
+    const box = root.box.map((v, k) => readScalar(v, `box[${k}]`, double));
     if (!(box[2] > 0 && box[3] > 0)) fail('box', 'width and height must be > 0');
     if (root.move !== undefined && root.moves !== undefined) fail('moves', 'give either "move" or "moves", not both');
     let moves;
-    if (root.move !== undefined) moves = [readPair(root.move, 'move')];
+    if (root.move !== undefined) moves = [readPair(root.move, 'move', double)];
     else if (root.moves === undefined) fail('move', 'missing field (give "move": [dx, dy] or "moves": [[dx, dy], ...])');
     else {
         if (!Array.isArray(root.moves)) fail('moves', 'expected an array of [dx, dy]');
         if (root.moves.length === 0) fail('moves', 'must not be empty');
-        moves = root.moves.map((m, k) => readPair(m, `moves[${k}]`));
+        moves = root.moves.map((m, k) => readPair(m, `moves[${k}]`, double));
     }
-    return {origin, tile, columns, rows, solid, oneWay, box, moves};
+    return {origin, tile, columns, rows, solid, oneWay, box, moves, xEdges, yEdges};
 }
 
 // The float32 just above (dir = 1) or below (dir = -1) v.
@@ -160,13 +234,23 @@ function formatFloat32(v) {
     return v.toPrecision(9);
 }
 
-function formatFrames(frames) {
+// v (a double) as the shortest decimal that reads back to the same double: JavaScript's own
+// Number to string, which is that (with an exponent past 1e21 or below 1e-6, as JSON allows),
+// except for -0.
+function formatDouble(v) {
+    if (!Number.isFinite(v)) throw new Error('cannot write a non-finite value');
+    return Object.is(v, -0) ? '-0' : String(v);
+}
+
+// The answer line of a scene's frames; formatNumber writes pos and t (formatFloat32 by default,
+// formatDouble for a double resolver).
+function formatFrames(frames, formatNumber = formatFloat32) {
     const parts = frames.map((frame) => {
         const contacts = frame.contacts.map(
             (c) => `{"tile": [${c.tile[0]}, ${c.tile[1]}], "normal": [${c.normal[0]}, ${c.normal[1]}], ` +
-                   `"t": ${formatFloat32(c.t)}}`);
+                   `"t": ${formatNumber(c.t)}}`);
         const overlaps = frame.startedOverlapping.map((cell) => `[${cell[0]}, ${cell[1]}]`);
-        return `{"pos": [${formatFloat32(frame.pos[0])}, ${formatFloat32(frame.pos[1])}], ` +
+        return `{"pos": [${formatNumber(frame.pos[0])}, ${formatNumber(frame.pos[1])}], ` +
                `"contacts": [${contacts.join(', ')}], "started_overlapping": [${overlaps.join(', ')}]}`;
     });
     return `{"frames": [${parts.join(', ')}]}`;
@@ -186,24 +270,22 @@ function signOfSumMinus(a, b, c) {
 }
 
 // The solid tiles whose interior the box's interior meets (strictly, on both axes), by row then
-// column: the contract's started_overlapping, computed exactly.
+// column: the contract's started_overlapping, computed exactly (from the exact tile edges).
 function overlappedTiles(scene, x, y) {
-    const [ox, oy] = scene.origin;
-    const [tw, th] = scene.tile;
     const [, , w, h] = scene.box;
     const cells = [];
     for (let j = 0; j < scene.rows; ++j) {
-        const top = oy + j * th;
-        const bottom = oy + (j + 1) * th;
+        const top = scene.yEdges[j];
+        const bottom = scene.yEdges[j + 1];
         if (!(y < bottom && signOfSumMinus(y, h, top) > 0)) continue;
         for (let i = 0; i < scene.columns; ++i) {
             if (!scene.solid[j * scene.columns + i]) continue;
-            const left = ox + i * tw;
-            const right = ox + (i + 1) * tw;
+            const left = scene.xEdges[i];
+            const right = scene.xEdges[i + 1];
             if (x < right && signOfSumMinus(x, w, left) > 0) cells.push([i, j]);
         }
     }
     return cells;
 }
 
-module.exports = {SceneError, parseScene, formatFrames, formatError, formatFloat32, overlappedTiles};
+module.exports = {SceneError, parseScene, formatFrames, formatError, formatFloat32, formatDouble, overlappedTiles};

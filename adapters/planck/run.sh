@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Runs the planck adapter: `run.sh` answers scene lines on stdin (pipe mode), `run.sh IN OUT`
+# answers the scene file IN into OUT (file mode). Its answers are doubles (check it with
+# --scalar double; ./scalar says so to the smoke test). Without node, or without the locked npm
+# packages in node_modules, it exits 3 at once, saying on stderr what to run (`bash
+# scripts/setup.sh --engines planck`, which runs install.sh).
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+bash "$here/install.sh" --check || exit
+# A larger young generation: planck allocates many short-lived vectors a step, and the
+# default one spent about a third of the time collecting them.
+exec node --max-semi-space-size=32 "$here/adapter.js" "$@"
