@@ -41,6 +41,7 @@ engines=(
     "godot|${TILESWEEP_ADAPTERS:-$root/adapters}/godot/run.sh {in} {out}|Godot 3 body_test_motion (GDScript, file mode)"
     "rapier|${TILESWEEP_ADAPTERS:-$root/adapters}/rapier/run.sh|Rapier KinematicCharacterController (node, pipe)"
     "planck|${TILESWEEP_ADAPTERS:-$root/adapters}/planck/run.sh|planck (Box2D 2.x in JS doubles) dynamic body and world.step (node, pipe)"
+    "matter|${TILESWEEP_ADAPTERS:-$root/adapters}/matter/run.sh|matter-js dynamic body and Engine.update (node, pipe)"
     "phaser|${TILESWEEP_ADAPTERS:-$root/adapters}/phaser/run.sh|Phaser 4 Arcade body vs tilemap layer (node, pipe)"
 )
 

@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Runs the matter-js adapter: `run.sh` answers scene lines on stdin (pipe mode), `run.sh IN OUT`
+# answers the scene file IN into OUT (file mode). Its answers are doubles (check it with
+# --scalar double; ./scalar says so to the smoke test). Without node, or without the locked npm
+# packages in node_modules, it exits 3 at once, saying on stderr what to run (`bash
+# scripts/setup.sh --engines matter`, which runs install.sh).
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+bash "$here/install.sh" --check || exit
+exec node "$here/adapter.js" "$@"
