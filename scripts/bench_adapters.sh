@@ -43,6 +43,7 @@ engines=(
     "planck|${TILESWEEP_ADAPTERS:-$root/adapters}/planck/run.sh|planck (Box2D 2.x in JS doubles) dynamic body and world.step (node, pipe)"
     "matter|${TILESWEEP_ADAPTERS:-$root/adapters}/matter/run.sh|matter-js dynamic body and Engine.update (node, pipe)"
     "phaser|${TILESWEEP_ADAPTERS:-$root/adapters}/phaser/run.sh|Phaser 4 Arcade body vs tilemap layer (node, pipe)"
+    "box2d3|${TILESWEEP_ADAPTERS:-$root/adapters}/box2d3/run.sh|Box2D v3 capsule mover, CastMover and SolvePlanes (wasm in node, pipe)"
 )
 
 scratch=$(mktemp -d)

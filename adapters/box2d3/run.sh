@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Runs the Box2D v3 mover adapter: `run.sh` answers scene lines on stdin (pipe mode), `run.sh IN OUT`
+# answers the scene file IN into OUT (file mode). Without node, or without the locked npm packages
+# in node_modules, it exits 3 at once, saying on stderr what to run (`bash scripts/setup.sh
+# --engines box2d3`, which runs install.sh).
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+bash "$here/install.sh" --check || exit
+exec node "$here/adapter.js" "$@"
