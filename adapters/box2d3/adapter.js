@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Box2D v3's character mover (npm box2d3-wasm, Box2D 3.1's C API compiled to WebAssembly) behind
-// tilesweep's resolver protocol. Written the way Box2D's docs (character.md) and its Mover sample
-// put a mover together, not tuned to the contract:
+// Box2D v3's character mover (npm box2d3-wasm: Box2D's C API at v3.1.1-18, compiled to
+// WebAssembly) behind tilesweep's resolver protocol. Written the way Box2D's docs (character.md)
+// and its Mover sample put a mover together, not tuned to the contract:
 //
 //   - one world per scene, one static body for the level at the map's origin, one
 //     b2MakeOffsetBox shape per solid or one-way cell;
