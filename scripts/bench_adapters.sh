@@ -44,6 +44,7 @@ engines=(
     "matter|${TILESWEEP_ADAPTERS:-$root/adapters}/matter/run.sh|matter-js dynamic body and Engine.update (node, pipe)"
     "phaser|${TILESWEEP_ADAPTERS:-$root/adapters}/phaser/run.sh|Phaser 4 Arcade body vs tilemap layer (node, pipe)"
     "box2d3|${TILESWEEP_ADAPTERS:-$root/adapters}/box2d3/run.sh|Box2D v3 capsule mover, CastMover and SolvePlanes (wasm in node, pipe)"
+    "rapier-deterministic|${TILESWEEP_ADAPTERS:-$root/adapters}/rapier-deterministic/run.sh|the Rapier adapter on Rapier's deterministic build (node, pipe)"
 )
 
 scratch=$(mktemp -d)

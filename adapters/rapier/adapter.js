@@ -24,11 +24,12 @@
 //     node adapter.js < scenes.jsonl > answers.jsonl    (pipe mode: one answer line per scene)
 //     node adapter.js IN OUT                             (file mode: reads IN, writes OUT)
 //     node adapter.js --shared-world ...                 (one world for all scenes: see main)
+//     node adapter.js --rapier PACKAGE ...               (another build of Rapier: see main)
 'use strict';
 
 const fs = require('fs');
 const readline = require('readline');
-const RAPIER = require('@dimforge/rapier2d-compat');
+let RAPIER = null;  // the Rapier package: main loads it
 const {SceneError, parseScene, formatFrames, formatError, overlappedTiles} = require('./scene_text');
 
 /// Pixels per Rapier meter: a 16-pixel tile is one meter.
@@ -179,8 +180,13 @@ function answerer(sharedWorld) {
 }
 
 async function main() {
-    await RAPIER.init();
     const args = process.argv.slice(2);
+    // --rapier PACKAGE loads another build of the same API instead of @dimforge/rapier2d-compat:
+    // a package name or directory, as require takes it (adapters/rapier-deterministic/run.sh
+    // passes the cross-platform deterministic build's directory).
+    const at = args.indexOf('--rapier');
+    RAPIER = require(at >= 0 ? args.splice(at, 2)[1] : '@dimforge/rapier2d-compat');
+    await RAPIER.init();
     // A new world per scene, by default: Rapier's broad phase keeps a history, and in a tie (two
     // tiles equally near) which one is hit first, and so at times where the box ends, depends
     // on the scenes answered before. A world per scene answers every scene as if it came first,
@@ -200,7 +206,7 @@ async function main() {
         return;
     }
     if (paths.length !== 0) {
-        process.stderr.write('usage: node adapter.js [--shared-world] [IN OUT]   (no IN OUT: scenes on stdin, answers on stdout)\n');
+        process.stderr.write('usage: node adapter.js [--shared-world] [--rapier PACKAGE] [IN OUT]   (no IN OUT: scenes on stdin, answers on stdout)\n');
         process.exit(2);
     }
     // Pipe mode: answer each line as it comes, never waiting for the end of the input. Answers
