@@ -255,7 +255,9 @@ std::string markdown(const AuditResult& r) {
 
     s << "## Families and what they cover\n\n"
          "Counted on the exact first frame, float / double scenes. Every family of the property suite but "
-         "extreme, then far-*: the random, corner-pass, corner-tie and seam-landing builders (in turn) with "
+         "extreme, then far-*: the random, corner-pass, corner-tie, seam-landing and one-way platform "
+         "builders (in "
+         "turn) with "
          "every map origin they draw at the magnitude, rounded down to whole tiles; case k of every far-* "
          "family is the same local scene, built there.\n\n"
          "The last two columns are the production resolver's own: the scenes where its fast path needed an "

@@ -41,6 +41,12 @@ const char* metricName(Metric m) {
             return "position";
         case Metric::Time:
             return "time";
+        case Metric::PlatformFall:
+            return "platform-fall";
+        case Metric::PlatformBlock:
+            return "platform-block";
+        case Metric::PlatformSnag:
+            return "platform-snag";
     }
     return "?";
 }

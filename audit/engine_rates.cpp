@@ -18,6 +18,7 @@
 #include <memory>
 #include <stdexcept>
 #include <thread>
+#include <type_traits>
 #include <utility>
 
 namespace tilesweep::audit {
@@ -41,6 +42,9 @@ void record(RateCell& cell, const judge::SceneVerdict& v, std::uint64_t caseInde
         cell.firstFailure[m] = std::min(cell.firstFailure[m], caseIndex);
     }
     if (v.restingEligible) ++cell.restingEligible;
+    if (v.platformLandingEligible) ++cell.platformLandings;
+    if (v.platformPassEligible) ++cell.platformPasses;
+    if (v.platformRestingEligible) ++cell.platformResting;
     cell.insideDepth = std::max(cell.insideDepth, v.insideDepth);
     cell.shortfall = std::max(cell.shortfall, v.shortfall);
     cell.overshoot = std::max(cell.overshoot, v.overshoot);
@@ -61,8 +65,22 @@ class InProcessResolver final : public BatchResolver {
 public:
     explicit InProcessResolver(Implementation impl) : impl_(std::move(impl)) {}
     std::vector<EngineAnswer> resolve(const std::vector<Scene<float>>& scenes) override {
-        std::vector<EngineAnswer> answers(scenes.size());
+        return answer(scenes);
+    }
+    std::vector<EngineAnswerOf<double>> resolveDouble(const std::vector<Scene<double>>& scenes) override {
+        return answer(scenes);
+    }
+
+private:
+    template <class T>
+    std::vector<EngineAnswerOf<T>> answer(const std::vector<Scene<T>>& scenes) const {
+        std::vector<EngineAnswerOf<T>> answers(scenes.size());
         for (std::size_t k = 0; k < scenes.size(); ++k) {
+            if (impl_.isDouble != std::is_same_v<T, double>) {
+                answers[k].failure =
+                    impl_.name + " answers " + (impl_.isDouble ? "double" : "float") + " scenes only";
+                continue;
+            }
             try {
                 answers[k].frames = runImplementation(impl_, scenes[k]);
             } catch (const std::exception& e) {
@@ -72,15 +90,64 @@ public:
         return answers;
     }
 
-private:
     Implementation impl_;
 };
+
+/// A batch's answers from one resolver in the run's scalar type.
+inline std::vector<EngineAnswerOf<float>> answersOf(BatchResolver& r,
+                                                    const std::vector<Scene<float>>& scenes) {
+    return r.resolve(scenes);
+}
+inline std::vector<EngineAnswerOf<double>> answersOf(BatchResolver& r,
+                                                     const std::vector<Scene<double>>& scenes) {
+    return r.resolveDouble(scenes);
+}
 
 /// One batch of one family: the case indices it covers.
 struct Task {
     std::size_t family;
     std::vector<std::uint64_t> cases;
 };
+
+/// Draws the scenes of `cases` in `family`, judges each once against the exact reference, and
+/// records every engine's answers in its cell (`cells[e]`); `resolverOf(e)` is the worker's own
+/// resolver of engine e.
+template <class T>
+void judgeBatch(const Family& family, std::uint64_t seed, const std::vector<std::uint64_t>& cases,
+                const std::function<BatchResolver&(std::size_t)>& resolverOf,
+                const std::vector<RateCell*>& cells) {
+    std::vector<Scene<T>> scenes;
+    std::vector<std::uint64_t> kept;
+    scenes.reserve(cases.size());
+    for (const std::uint64_t c : cases) {
+        Scene<T> s = generateScene<T>(family, seed, c);
+        // A far map whose edges T cannot hold is not a scene of the contract.
+        if (validateTileMap(s.map.view()) != MapError::None) continue;
+        scenes.push_back(std::move(s));
+        kept.push_back(c);
+    }
+    std::vector<judge::SceneJudge<T>> judges;
+    judges.reserve(scenes.size());
+    for (const Scene<T>& s : scenes) judges.emplace_back(s);
+    for (std::size_t e = 0; e < cells.size(); ++e) {
+        const std::vector<EngineAnswerOf<T>> answers = answersOf(resolverOf(e), scenes);
+        RateCell& cell = *cells[e];
+        for (std::size_t k = 0; k < scenes.size(); ++k) {
+            if (k >= answers.size()) {
+                recordNoAnswer(cell, "the resolver returned fewer answers than scenes", kept[k]);
+            } else if (!answers[k].failure.empty()) {
+                recordNoAnswer(cell, answers[k].failure, kept[k]);
+            } else if (answers[k].frames.size() != scenes[k].moves.size()) {
+                recordNoAnswer(cell,
+                               "answered " + std::to_string(answers[k].frames.size()) +
+                                   " frames for a scene of " + std::to_string(scenes[k].moves.size()),
+                               kept[k]);
+            } else {
+                record(cell, judges[k].judge(answers[k].frames), kept[k]);
+            }
+        }
+    }
+}
 
 }  // namespace
 
@@ -107,12 +174,26 @@ double breachQuantile(const BreachHistogram& histogram, double q) noexcept {
 }
 
 std::uint64_t RateCell::trials(Metric m) const noexcept {
-    return m == Metric::Snag ? restingEligible : scenes;
+    switch (m) {
+        case Metric::Snag:
+            return restingEligible;
+        case Metric::PlatformFall:
+            return platformLandings;
+        case Metric::PlatformBlock:
+            return platformPasses;
+        case Metric::PlatformSnag:
+            return platformResting;
+        default:
+            return scenes;
+    }
 }
 
 void RateCell::merge(const RateCell& other) {
     scenes += other.scenes;
     restingEligible += other.restingEligible;
+    platformLandings += other.platformLandings;
+    platformPasses += other.platformPasses;
+    platformResting += other.platformResting;
     for (std::size_t m = 0; m < kMetricCount; ++m) {
         failures[m] += other.failures[m];
         firstFailure[m] = std::min(firstFailure[m], other.firstFailure[m]);
@@ -126,13 +207,19 @@ void RateCell::merge(const RateCell& other) {
         if (noAnswerSamples.size() < kNoAnswerSamples) noAnswerSamples.push_back(s);
 }
 
-std::vector<Family> rateFamilies() {
+std::vector<Family> rateFamilies(const std::string& scalar) {
+    if (scalar != "float" && scalar != "double")
+        throw std::invalid_argument("scalar '" + scalar + "' is neither float nor double");
     using Suite = scenarios::Family;
     std::vector<Family> f;
     for (const Suite suite : {Suite::Random, Suite::CornerPass, Suite::CornerTie, Suite::SeamLanding,
-                              Suite::Resting, Suite::FarSubUlp, Suite::HighSpeed})
+                              Suite::Resting, Suite::FarSubUlp, Suite::HighSpeed, Suite::PlatformLanding,
+                              Suite::PlatformJump, Suite::PlatformWalk, Suite::Platforms})
         f.push_back(suiteFamily(suite));
     for (const double d : kRateDistances) f.push_back({"far-" + distanceName(d), FamilyKind::Far, d, true});
+    if (scalar == "double")
+        for (const double d : kDoubleRateDistances)
+            f.push_back({"far-" + distanceName(d), FamilyKind::Far, d, false});
     return f;
 }
 
@@ -147,7 +234,7 @@ RatesResult measureRates(const RatesConfig& config, const std::vector<EngineSpec
     const auto started = std::chrono::steady_clock::now();
     RatesResult result;
     result.config = config;
-    result.families = rateFamilies();
+    result.families = rateFamilies(config.scalar);
     result.shards = {config.shardIndex};
     for (const EngineSpec& e : engines) {
         result.engines.push_back(e.name);
@@ -189,39 +276,16 @@ RatesResult measureRates(const RatesConfig& config, const std::vector<EngineSpec
     parallel.run = [&](std::size_t w, std::size_t t) -> std::uint64_t {
         const Task& task = tasks[t];
         const Family& family = result.families[task.family];
-        std::vector<Scene<float>> scenes;
-        std::vector<std::uint64_t> cases;
-        scenes.reserve(task.cases.size());
-        for (const std::uint64_t c : task.cases) {
-            Scene<float> s = generateScene<float>(family, config.seed, c);
-            // A far map whose edges float cannot hold is not a scene of the contract.
-            if (validateTileMap(s.map.view()) != MapError::None) continue;
-            scenes.push_back(std::move(s));
-            cases.push_back(c);
-        }
-        std::vector<judge::SceneJudge<float>> judges;
-        judges.reserve(scenes.size());
-        for (const Scene<float>& s : scenes) judges.emplace_back(s);
-        for (std::size_t e = 0; e < engines.size(); ++e) {
+        std::vector<RateCell*> row;
+        for (std::size_t e = 0; e < engines.size(); ++e) row.push_back(&shards[w][e][task.family]);
+        const auto resolverOf = [&](std::size_t e) -> BatchResolver& {
             if (!resolvers[w][e]) resolvers[w][e] = engines[e].make();
-            const std::vector<EngineAnswer> answers = resolvers[w][e]->resolve(scenes);
-            std::vector<RateCell>& row = shards[w][e];
-            for (std::size_t k = 0; k < scenes.size(); ++k) {
-                RateCell& cell = row[task.family];
-                if (k >= answers.size()) {
-                    recordNoAnswer(cell, "the resolver returned fewer answers than scenes", cases[k]);
-                } else if (!answers[k].failure.empty()) {
-                    recordNoAnswer(cell, answers[k].failure, cases[k]);
-                } else if (answers[k].frames.size() != scenes[k].moves.size()) {
-                    recordNoAnswer(cell,
-                                   "answered " + std::to_string(answers[k].frames.size()) +
-                                       " frames for a scene of " + std::to_string(scenes[k].moves.size()),
-                                   cases[k]);
-                } else {
-                    record(cell, judges[k].judge(answers[k].frames), cases[k]);
-                }
-            }
-        }
+            return *resolvers[w][e];
+        };
+        if (config.scalar == "double")
+            judgeBatch<double>(family, config.seed, task.cases, resolverOf, row);
+        else
+            judgeBatch<float>(family, config.seed, task.cases, resolverOf, row);
         return task.cases.size();
     };
     runParallelTasks(parallel);
@@ -258,10 +322,12 @@ std::string ratesJson(const RatesResult& r) {
     j["kind"] = "tilesweep-rates";
     j["seed"] = r.config.seed;
     j["cases"] = r.config.cases;
+    j["scalar"] = r.config.scalar;
     j["shard_count"] = r.config.shardCount;
     j["shards"] = r.shards;
     j["seconds"] = r.seconds;
     j["distances"] = kRateDistances;
+    if (r.config.scalar == "double") j["double_distances"] = kDoubleRateDistances;
     for (std::size_t e = 0; e < r.engines.size(); ++e)
         j["engines"].push_back({{"name", r.engines[e]},
                                 {"documented_tolerance", r.documentedTolerance[e]},
@@ -273,6 +339,9 @@ std::string ratesJson(const RatesResult& r) {
             nlohmann::ordered_json cj;
             cj["scenes"] = c.scenes;
             cj["resting_eligible"] = c.restingEligible;
+            cj["platform_landings"] = c.platformLandings;
+            cj["platform_passes"] = c.platformPasses;
+            cj["platform_resting"] = c.platformResting;
             for (std::size_t m = 0; m < kMetricCount; ++m) {
                 const char* name = metricName(static_cast<Metric>(m));
                 cj["failures"][name] = c.failures[m];
@@ -304,10 +373,13 @@ RatesResult readRatesJson(const std::string& text) {
         RatesResult r;
         r.config.seed = j.at("seed").get<std::uint64_t>();
         r.config.cases = j.at("cases").get<std::uint64_t>();
+        r.config.scalar = j.value("scalar", std::string("float"));
+        if (r.config.scalar != "float" && r.config.scalar != "double")
+            throw std::runtime_error("scalar: '" + r.config.scalar + "' is neither float nor double");
         r.config.shardCount = j.at("shard_count").get<int>();
         r.shards = j.at("shards").get<std::vector<int>>();
         r.seconds = j.at("seconds").get<double>();
-        const std::vector<Family> known = rateFamilies();
+        const std::vector<Family> known = rateFamilies(r.config.scalar);
         for (const auto& f : j.at("families")) {
             const std::string name = f.at("name").get<std::string>();
             const auto it =
@@ -326,6 +398,9 @@ RatesResult readRatesJson(const std::string& text) {
                 RateCell c;
                 c.scenes = cj.at("scenes").get<std::uint64_t>();
                 c.restingEligible = cj.at("resting_eligible").get<std::uint64_t>();
+                c.platformLandings = cj.value("platform_landings", std::uint64_t{0});
+                c.platformPasses = cj.value("platform_passes", std::uint64_t{0});
+                c.platformResting = cj.value("platform_resting", std::uint64_t{0});
                 for (std::size_t m = 0; m < kMetricCount; ++m) {
                     const char* name = metricName(static_cast<Metric>(m));
                     c.failures[m] = cj.at("failures").value(name, std::uint64_t{0});
@@ -392,6 +467,8 @@ RatesResult mergeRates(const std::vector<RatesResult>& shards, const std::vector
             throw differs("seed", std::to_string(s.config.seed), std::to_string(merged.config.seed));
         if (s.config.cases != merged.config.cases)
             throw differs("cases", std::to_string(s.config.cases), std::to_string(merged.config.cases));
+        if (s.config.scalar != merged.config.scalar)
+            throw differs("scalar", s.config.scalar, merged.config.scalar);
         if (s.config.shardCount != merged.config.shardCount)
             throw differs("shard count", std::to_string(s.config.shardCount),
                           std::to_string(merged.config.shardCount));
@@ -465,7 +542,13 @@ const char* metricHeading(Metric m) {
         case Metric::Extra:
             return "wrong tile/normal";
         case Metric::Snag:
-            return "snags (of resting)";
+            return "snags on a seam (of resting)";
+        case Metric::PlatformFall:
+            return "falls through a platform (of landings)";
+        case Metric::PlatformBlock:
+            return "blocked by a platform it passes (of passes)";
+        case Metric::PlatformSnag:
+            return "snags on a platform seam (of standing)";
         case Metric::Inexact:
             return "not bit-exact";
         case Metric::NoAnswer:
@@ -479,14 +562,17 @@ const char* metricHeading(Metric m) {
 
 std::string ratesMarkdown(const RatesResult& r) {
     std::string md;
-    char text[512];
+    char text[1024];
     std::snprintf(
         text, sizeof text,
-        "Seed %llu, %llu scenes per family (float), shards %zu of %d; every engine answers the same "
+        "Seed %llu, %llu scenes per family (%s), shards %zu of %d; every engine answers the same "
         "scenes. A cell is the share of scenes that broke the claim, in bold when any did, with its "
-        "95%% Wilson interval; snags are counted among the scenes that start resting on a floor.\n\n",
+        "95%% Wilson interval, \"–\" where no scene could break it. Snags are counted among the scenes "
+        "that start resting on a floor; the platform columns among the scenes with a frame that lands "
+        "on a one-way platform, passes one (jumping up through it, entering from the side, starting "
+        "inside it), or starts standing on one.\n\n",
         static_cast<unsigned long long>(r.config.seed), static_cast<unsigned long long>(r.config.cases),
-        r.shards.size(), r.config.shardCount);
+        r.config.scalar.c_str(), r.shards.size(), r.config.shardCount);
     md += text;
 
     // The headline: every engine, over all families.
@@ -558,9 +644,12 @@ std::string ratesMarkdown(const RatesResult& r) {
             for (std::size_t f = 0; f < r.families.size(); ++f) {
                 const std::uint64_t c = r.cells[e][f].firstFailure[static_cast<std::size_t>(m)];
                 if (c == RateCell::kNoCase) continue;
-                const Scene<float> s = generateScene<float>(r.families[f], r.config.seed, c);
+                const std::string line =
+                    r.config.scalar == "double"
+                        ? formatScene(generateScene<double>(r.families[f], r.config.seed, c))
+                        : formatScene(generateScene<float>(r.families[f], r.config.seed, c));
                 firsts += std::string("- ") + metricHeading(m) + ", " + r.families[f].name + " case " +
-                          std::to_string(c) + ": `" + formatScene(s) + "`\n";
+                          std::to_string(c) + ": `" + line + "`\n";
                 break;
             }
         }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Engine rates on a small budget: tilesweep reads zero on every claim, a game-style baseline
 // does not, a resolver's missing answers are counted per scene without losing the rest, shards
-// add up to the whole run, and the JSON file reads back as written.
+// add up to the whole run, and the JSON file reads back as written. The platform metrics each
+// catch the resolver that breaks their one-way rule, and a double run reaches 2^52 from the origin.
 #include "tilesweep/audit/engine_rates.h"
 
 #include <gtest/gtest.h>
@@ -42,6 +43,55 @@ public:
 
 private:
     int count_ = 0;
+};
+
+/// tilesweep with one one-way rule broken: Drop resolves on the map with every '-' as '.' (it
+/// falls through every platform), Solid with every '-' as '#' (it is blocked by the platforms it
+/// should pass), Snag answers tilesweep's frames but adds, to a frame that starts standing on a
+/// platform and moves sideways, a contact on the x face of the platform tile under it.
+class PlatformBreaker final : public BatchResolver {
+public:
+    enum class Rule { Drop, Solid, Snag };
+    explicit PlatformBreaker(Rule rule) : rule_(rule) {}
+    std::vector<EngineAnswer> resolve(const std::vector<Scene<float>>& scenes) override {
+        std::vector<EngineAnswer> answers(scenes.size());
+        for (std::size_t k = 0; k < scenes.size(); ++k) {
+            if (rule_ == Rule::Snag) {
+                answers[k].frames = snagged(scenes[k]);
+                continue;
+            }
+            Scene<float> s = scenes[k];
+            for (std::size_t c = 0; rule_ == Rule::Solid && c < s.map.oneWay.size(); ++c)
+                if (s.map.oneWay[c] != 0) s.map.solid[c] = 1;
+            s.map.oneWay.clear();
+            answers[k].frames = runScene(s);
+        }
+        return answers;
+    }
+
+private:
+    static std::vector<FrameResult<float>> snagged(const Scene<float>& scene) {
+        std::vector<FrameResult<float>> frames = runScene(scene);
+        const TileMapView<float> map = scene.map.view();
+        Vec2<float> start = scene.box.pos;
+        for (std::size_t f = 0; f < frames.size(); ++f) {
+            const float dx = scene.moves[f].x;
+            const double bottom = static_cast<double>(start.y) + scene.box.size.y;
+            for (std::int32_t j = 0; dx != 0 && j < map.rows; ++j)
+                for (std::int32_t i = 0; i < map.columns; ++i) {
+                    const double left = map.origin.x + static_cast<double>(i) * map.tileSize.x;
+                    const double top = map.origin.y + static_cast<double>(j) * map.tileSize.y;
+                    if (!map.isOneWay(i, j) || bottom != top || start.x >= left + map.tileSize.x ||
+                        start.x + scene.box.size.x <= left)
+                        continue;
+                    frames[f].contacts.push_back({{i, j}, {dx > 0 ? -1 : 1, 0}, 0.5f, {}});
+                }
+            start = frames[f].position;
+        }
+        return frames;
+    }
+
+    Rule rule_;
 };
 
 RatesResult run(int shardIndex = 0, int shardCount = 1) {
@@ -186,6 +236,78 @@ TEST(EngineRates, jsonReadsBackAsWritten) {
     EXPECT_NE(md.find("note = 0.08 px"), std::string::npos);  // the flaky engine's documented tolerance
     EXPECT_THROW((void)readRatesJson("{\"kind\": \"something else\"}"), std::runtime_error);
     EXPECT_THROW((void)readRatesJson("not json"), std::runtime_error);
+}
+
+std::uint64_t trials(const RatesResult& r, std::size_t engine, Metric m) {
+    std::uint64_t n = 0;
+    for (const RateCell& c : r.cells[engine]) n += c.trials(m);
+    return n;
+}
+
+EngineSpec breaker(const std::string& name, PlatformBreaker::Rule rule) {
+    return {name, [rule] { return std::make_unique<PlatformBreaker>(rule); }, 0, ""};
+}
+
+TEST(EngineRates, eachPlatformMetricCatchesTheResolverThatBreaksItsRule) {
+    RatesConfig config;
+    config.cases = kCases;
+    config.seed = 11;
+    config.jobs = 2;
+    config.batch = 16;
+    const RatesResult r = measureRates(
+        config,
+        {inProcess("tilesweep", "core-float"), breaker("drops", PlatformBreaker::Rule::Drop),
+         breaker("solid", PlatformBreaker::Rule::Solid), breaker("snags", PlatformBreaker::Rule::Snag)});
+    for (const Metric m : {Metric::PlatformFall, Metric::PlatformBlock, Metric::PlatformSnag}) {
+        EXPECT_GT(trials(r, 0, m), kCases / 4) << metricName(m) << ": too few scenes could break it";
+        EXPECT_EQ(total(r, 0, m), 0u) << metricName(m);
+    }
+    // Dropping through every platform falls through those it should land on, and is never blocked.
+    EXPECT_GT(total(r, 1, Metric::PlatformFall), trials(r, 1, Metric::PlatformFall) / 4);
+    EXPECT_EQ(total(r, 1, Metric::PlatformBlock), 0u);
+    EXPECT_EQ(total(r, 1, Metric::PlatformSnag), 0u);
+    // Platforms made solid stop the jumps through them. (They may also let a box down a platform's
+    // side where a '-' would have caught it on a corner tie: the exposed-face rule then picks x.)
+    EXPECT_GT(total(r, 2, Metric::PlatformBlock), trials(r, 2, Metric::PlatformBlock) / 10);
+    EXPECT_EQ(total(r, 2, Metric::PlatformSnag), 0u);
+    // A sideways contact on the platform under the box is a snag, and nothing else of these.
+    EXPECT_GT(total(r, 3, Metric::PlatformSnag), trials(r, 3, Metric::PlatformSnag) / 4);
+    EXPECT_EQ(total(r, 3, Metric::PlatformFall), 0u);
+    EXPECT_EQ(total(r, 3, Metric::PlatformBlock), 0u);
+    const std::string md = ratesMarkdown(r);
+    EXPECT_NE(md.find("falls through a platform (of landings)"), std::string::npos);
+    const RatesResult back = readRatesJson(ratesJson(r));
+    EXPECT_EQ(ratesJson(back), ratesJson(r));
+}
+
+TEST(EngineRates, aDoubleRunReachesTwoToThe52AndTilesweepReadsZero) {
+    RatesConfig config;
+    config.cases = 16;
+    config.seed = 5;
+    config.jobs = 2;
+    config.batch = 8;
+    config.scalar = "double";
+    const RatesResult r =
+        measureRates(config, {inProcess("tilesweep", "core-double"),
+                              {"float-only", [] { return std::make_unique<FlakyResolver>(); }, 0, ""}});
+    ASSERT_EQ(r.families.back().name, "far-2^52");
+    for (std::size_t f = 0; f < r.families.size(); ++f) {
+        EXPECT_GT(r.cells[0][f].scenes, 0u) << r.families[f].name;
+        for (std::size_t m = 0; m < kMetricCount; ++m)
+            EXPECT_EQ(r.cells[0][f].failures[m], 0u)
+                << r.families[f].name << " " << metricName(static_cast<Metric>(m));
+        // A resolver that answers float scenes only answers none of a double run.
+        EXPECT_EQ(r.cells[1][f].failures[static_cast<std::size_t>(Metric::NoAnswer)], r.cells[1][f].scenes);
+    }
+    const RatesResult back = readRatesJson(ratesJson(r));
+    EXPECT_EQ(back.config.scalar, "double");
+    EXPECT_EQ(ratesJson(back), ratesJson(r));
+    EXPECT_NE(ratesMarkdown(r).find("scenes per family (double)"), std::string::npos);
+    EXPECT_NE(ratesMarkdown(r).find("| 2^52 | "), std::string::npos);
+    RatesResult asFloat = r;  // the same figures said to be float: another run
+    asFloat.config.scalar = "float";
+    asFloat.shards = {1};
+    EXPECT_THROW((void)mergeRates({r, asFloat}), std::invalid_argument);
 }
 
 }  // namespace

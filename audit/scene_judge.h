@@ -98,10 +98,13 @@ struct FrameFacts {
     Vec2<T> move{};  ///< the frame's displacement
     ExactFrame exact;
     FrameResult<T> rounded;
-    std::vector<Cell> clipTiles;   ///< first-step contacts that clip a corner
-    std::vector<Cell> missTiles;   ///< corner-missed tiles in the swept bounds, never touched exactly
-    bool cornerPass = false;       ///< some miss is a path exactly through a corner point
-    std::int32_t restingRow = -1;  ///< the floor row the box starts resting on, or -1
+    std::vector<Cell> clipTiles;        ///< first-step contacts that clip a corner
+    std::vector<Cell> missTiles;        ///< corner-missed tiles in the swept bounds, never touched exactly
+    bool cornerPass = false;            ///< some miss is a path exactly through a corner point
+    std::int32_t restingRow = -1;       ///< the floor row the box starts resting on, or -1
+    std::vector<Cell> landedPlatforms;  ///< one-way tiles the exact frame lands on
+    std::vector<Cell> passedPlatforms;  ///< one-way tiles in the straight move's swept bounds it passes
+    std::int32_t platformRow = -1;      ///< the row of the one-way tile the box starts standing on, or -1
 };
 
 /// One implementation's verdicts on one scene. The distances are in the map's units (pixels),
@@ -110,6 +113,8 @@ struct FrameFacts {
 struct SceneVerdict {
     std::array<bool, kMetricCount> failed{};
     bool clipEligible = false, cornerEligible = false, restingEligible = false;
+    /// Frames that land on a platform, pass one, start standing on one (the platform metrics' trials).
+    bool platformLandingEligible = false, platformPassEligible = false, platformRestingEligible = false;
     std::uint64_t positionUlps = 0;
     bool hasTime = false;
     double timeError = 0;
@@ -129,8 +134,10 @@ public:
     explicit SceneJudge(const Scene<T>& scene)
         : scene_(scene), map_(oracle::toExact(scene.map)), edges_(checks::computeEdges(scene.map.view())) {
         for (std::int32_t j = 0; j < scene.map.rows; ++j)
-            for (std::int32_t i = 0; i < scene.map.columns; ++i)
+            for (std::int32_t i = 0; i < scene.map.columns; ++i) {
                 if (map_.isSolid(i, j)) solid_.push_back({i, j});
+                if (map_.isOneWay(i, j)) oneWay_.push_back({i, j});
+            }
         facts_.resize(scene.moves.size());
     }
 
@@ -220,6 +227,8 @@ private:
             }
         }
 
+        platformFacts(f, box, d);
+
         // Resting: the box's bottom on the top of a solid tile it overlaps on x, cell above empty.
         const Rational bottom = box.pos.y + box.size.y;
         const Rational row = (bottom - map_.origin.y) / map_.tileSize.y;
@@ -238,9 +247,61 @@ private:
         return f;
     }
 
+    /// The one-way facts of a frame: the platforms the exact frame lands on, those in the straight
+    /// move's swept bounds that it passes (jumping up through, entering from the side, starting
+    /// inside), and the platform row the box starts standing on (its bottom on a one-way tile's top,
+    /// over it on x).
+    void platformFacts(FrameFacts<T>& f, const ExactBox& box, const ExactVec2& d) const {
+        if (oneWay_.empty()) return;
+        for (const oracle::ExactContact& e : f.exact.contacts)
+            if (map_.isOneWay(e.tile.i, e.tile.j)) f.landedPlatforms.push_back(e.tile);
+        const ExactRect from = oracle::rectOf(box);
+        const ExactRect to = oracle::rectOf(ExactBox{{box.pos.x + d.x, box.pos.y + d.y}, box.size});
+        const ExactRect swept{{std::min(from.min.x, to.min.x), std::min(from.min.y, to.min.y)},
+                              {std::max(from.max.x, to.max.x), std::max(from.max.y, to.max.y)}};
+        const Rational bottom = box.pos.y + box.size.y;
+        for (const Cell& c : oneWay_) {
+            const ExactRect tile = map_.tileRect(c.i, c.j);
+            if (oracle::overlaps(swept, tile) && !mentions(f.exact.contacts, c))
+                f.passedPlatforms.push_back(c);
+            if (f.platformRow < 0 && bottom == tile.min.y && from.min.x < tile.max.x &&
+                from.max.x > tile.min.x)
+                f.platformRow = c.j;
+        }
+    }
+
+    /// The platform metrics of one frame: falling through a platform the exact frame lands on,
+    /// being stopped by one it passes, snagging on a seam of the platform the box stands on.
+    void judgePlatforms(const FrameFacts<T>& f, const FrameResult<T>& got, SceneVerdict& v) const {
+        auto fail = [&](Metric m) { v.failed[static_cast<std::size_t>(m)] = true; };
+        if (!f.landedPlatforms.empty()) v.platformLandingEligible = true;
+        if (!f.passedPlatforms.empty()) v.platformPassEligible = true;
+        if (f.platformRow >= 0) v.platformRestingEligible = true;
+        if (isFinite(got.position)) {
+            const Rational bottom =
+                oracle::toRational(got.position.y) + oracle::toRational(scene_.box.size.y);
+            for (const Cell& c : f.landedPlatforms)
+                if (bottom > map_.tileRect(c.i, c.j).min.y) fail(Metric::PlatformFall);
+        }
+        for (const Cell& c : f.passedPlatforms)
+            if (mentions(got.contacts, c)) fail(Metric::PlatformBlock);
+        // A jump that the exact frame lets through on y, ended lower than the contract's position:
+        // held back under a platform it should have passed.
+        const bool exactStopsOnY = std::any_of(f.exact.contacts.begin(), f.exact.contacts.end(),
+                                               [](const oracle::ExactContact& e) { return e.normal.y != 0; });
+        if (!f.passedPlatforms.empty() && f.move.y < T(0) && !exactStopsOnY &&
+            got.position.y > f.rounded.position.y)
+            fail(Metric::PlatformBlock);
+        if (f.platformRow >= 0)
+            for (const Contact<T>& c : got.contacts)
+                if (c.normal.x != 0 && c.tile.j == f.platformRow && map_.isOneWay(c.tile.i, c.tile.j))
+                    fail(Metric::PlatformSnag);
+    }
+
     void judgeFrame(const FrameFacts<T>& f, const FrameResult<T>& got, SceneVerdict& v) {
         auto fail = [&](Metric m) { v.failed[static_cast<std::size_t>(m)] = true; };
         if (decisionKeys(got.contacts) != decisionKeys(f.exact.contacts)) fail(Metric::Decision);
+        judgePlatforms(f, got, v);
 
         // Bit for bit against the contract's rounding: contacts in the contract's order, start
         // overlaps in any order (the contract leaves that order free), each listed once.
@@ -384,6 +445,7 @@ private:
     const Scene<T>& scene_;
     ExactTileMap map_;
     std::vector<Cell> solid_;
+    std::vector<Cell> oneWay_;
     checks::MapEdges<T> edges_;
     checks::SafetyScratch scratch_;
     std::vector<std::vector<FrameFacts<T>>> facts_;

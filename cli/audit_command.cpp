@@ -69,7 +69,9 @@ CLI::App* addAuditCommand(CLI::App& app, AuditOptions& options) {
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
     addClaimsOption(command, options.claims, "Conformance mode: ");
-    command->add_option("--scalar", options.scalar, "Conformance mode: the resolvers' scalar type")
+    command
+        ->add_option("--scalar", options.scalar,
+                     "Conformance mode: the resolvers' scalar type (the checks' and the rates' scenes)")
         ->check(CLI::IsMember(std::vector<std::string>{"float", "double"}))
         ->capture_default_str();
     addResolverTimeoutOption(command, options.resolverTimeout);
@@ -103,7 +105,8 @@ CLI::App* addAuditCommand(CLI::App& app, AuditOptions& options) {
         "swept AABB, bench/), seed-float, seed-double (the seed\n"
         "article as written), substep{4,16,256}-float (the game-style substep loop). Families: every\n"
         "family of the property suite but extreme (scenarios/), and far-<magnitude>: random, corner-pass,\n"
-        "corner-tie and seam-landing scenes built with their map origin there (float up to 2^23, double\n"
+        "corner-tie, seam-landing and one-way platform scenes built with their map origin there (float up\n"
+        "to 2^23, double\n"
         "up to 2^52). The figures depend only on --cases and --seed.\n"
         "\n"
         "Exit status: 0 the production rows read zero everywhere; 1 they do not (the report names the\n"
@@ -115,12 +118,12 @@ CLI::App* addAuditCommand(CLI::App& app, AuditOptions& options) {
 namespace {
 
 /// The in-process implementations `--compare` names, as rate engines.
-std::vector<audit::EngineSpec> comparedEngines(const std::string& list) {
+std::vector<audit::EngineSpec> comparedEngines(const std::string& list, const std::string& scalar) {
     std::vector<audit::EngineSpec> engines;
     std::stringstream names(list);
     for (std::string name; std::getline(names, name, ',');) {
         if (name.empty()) continue;
-        const std::string implementation = name == "tilesweep" ? "core-float" : name + "-float";
+        const std::string implementation = (name == "tilesweep" ? "core" : name) + "-" + scalar;
         bool found = false;
         for (const audit::Implementation& impl : audit::auditImplementations()) {
             if (impl.name != implementation) continue;
@@ -169,7 +172,7 @@ int runConformance(const AuditOptions& options) {
     }
     std::vector<audit::EngineSpec> engines;
     try {
-        engines = comparedEngines(options.compare);
+        engines = comparedEngines(options.compare, options.scalar);
         std::vector<DocumentedTolerance> tolerances;
         for (const std::string& text : options.resolverTolerances) tolerances.push_back(parseTolerance(text));
         const auto labelOf = [&options](std::size_t k) {
@@ -193,7 +196,8 @@ int runConformance(const AuditOptions& options) {
                 }
             const std::string command = options.resolverCmds[k];
             const double timeout = options.resolverTimeout;
-            if (const std::string why = properties::probeResolver(command, timeout, true, false);
+            const bool inDouble = options.scalar == "double";
+            if (const std::string why = properties::probeResolver(command, timeout, !inDouble, inDouble);
                 !why.empty()) {
                 std::cerr << "tilesweep audit: resolver unusable: " << command
                           << "\n  it did not answer the known scene (a box falling onto a floor): " << why
@@ -246,6 +250,7 @@ int runConformance(const AuditOptions& options) {
         config.cases = options.ratesCases;
         config.seed = options.seed;
         config.jobs = options.jobs;
+        config.scalar = options.scalar;
         config.shardIndex = shard.index;
         config.shardCount = shard.count;
         ProgressLine progress("tilesweep audit: rates", "scenes");
@@ -255,9 +260,10 @@ int runConformance(const AuditOptions& options) {
             else
                 progress.update(done, total);
         };
-        std::fprintf(stderr, "tilesweep audit: rates of %zu resolvers, %llu scenes per family, shard %d/%d\n",
-                     engines.size(), static_cast<unsigned long long>(options.ratesCases), shard.index,
-                     shard.count);
+        std::fprintf(stderr,
+                     "tilesweep audit: rates of %zu resolvers, %llu %s scenes per family, shard %d/%d\n",
+                     engines.size(), static_cast<unsigned long long>(options.ratesCases),
+                     options.scalar.c_str(), shard.index, shard.count);
         const audit::RatesResult result = audit::measureRates(config, engines);
         const std::string jsonPath = options.ratesJson.empty()
                                          ? (std::filesystem::path(options.pictures) / "rates.json").string()

@@ -58,7 +58,7 @@ void writeConformanceReport(const std::vector<ConformanceEntry>& entries, const 
     std::filesystem::create_directories(pictureDir);
     std::ostringstream md;
     md << "# Conformance: resolvers held to the contract\n\n"
-          "Written by `tilesweep audit --resolver-cmd` (see the README, \"Holding any resolver to the "
+          "Written by `tilesweep audit --resolver-cmd` (see docs/verifier.md, \"Holding any resolver to the "
           "contract\"). Each resolver is an outside process speaking `tilesweep resolve`'s JSON Lines "
           "protocol; every claim about results of the property suite runs against it, RapidCheck shrinks "
           "each failure, and the smallest counterexample of each property is shown with its picture. "

@@ -19,18 +19,28 @@ public:
     }
 
     std::vector<audit::EngineAnswer> resolve(const std::vector<Scene<float>>& scenes) override {
+        return answer(scenes);
+    }
+    std::vector<audit::EngineAnswerOf<double>> resolveDouble(
+        const std::vector<Scene<double>>& scenes) override {
+        return answer(scenes);
+    }
+
+private:
+    template <class T>
+    std::vector<audit::EngineAnswerOf<T>> answer(const std::vector<Scene<T>>& scenes) {
         std::vector<std::string> lines;
         lines.reserve(scenes.size());
-        for (const Scene<float>& s : scenes) lines.push_back(formatScene(s));
+        for (const Scene<T>& s : scenes) lines.push_back(formatScene(s));
         const std::vector<properties::ResolverReply> replies = process_.exchange(lines);
-        std::vector<audit::EngineAnswer> answers(scenes.size());
+        std::vector<audit::EngineAnswerOf<T>> answers(scenes.size());
         for (std::size_t k = 0; k < scenes.size(); ++k) {
             if (!replies[k].failure.empty()) {
                 answers[k].failure = replies[k].failure;
                 continue;
             }
-            properties::ResultParse<float> parsed =
-                properties::parseResultLine<float>(replies[k].line, scenes[k].moves.size());
+            properties::ResultParse<T> parsed =
+                properties::parseResultLine<T>(replies[k].line, scenes[k].moves.size());
             if (parsed.frames)
                 answers[k].frames = std::move(*parsed.frames);
             else
@@ -40,7 +50,6 @@ public:
         return answers;
     }
 
-private:
     properties::ResolverProcess process_;
 };
 

@@ -79,9 +79,12 @@ enum class Metric : std::uint8_t {
     Overshoot,
     NoAnswer,
     Position,
-    Time
+    Time,
+    PlatformFall,   ///< ends with its bottom below the top of a one-way tile the exact frame lands on
+    PlatformBlock,  ///< stopped by a one-way tile the exact frame passes (from below, the side, inside)
+    PlatformSnag    ///< stopped on x by a one-way tile of the platform it starts standing on
 };
-constexpr std::size_t kMetricCount = 15;
+constexpr std::size_t kMetricCount = 18;
 
 /// The short name of a metric ("decision", "tunnel", ...).
 [[nodiscard]] const char* metricName(Metric m);

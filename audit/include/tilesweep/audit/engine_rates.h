@@ -3,7 +3,8 @@
 
 // Engine rates: how often, where and by how much a resolver breaks each claim. Every resolver
 // (an engine behind `tilesweep resolve`'s protocol, or one of tilesweep's own implementations)
-// answers the same float scenes, drawn per family from one seed, a batch at a time; each scene
+// answers the same scenes (float, or double for a double engine: RatesConfig::scalar), drawn per
+// family from one seed, a batch at a time; each scene
 // is judged frame by frame against the exact reference (scene_judge.h). The figures per
 // (resolver, family): the share of scenes that break each claim, with a 95% Wilson interval,
 // and the largest distance by which a safety claim broke (how deep inside a tile, how far
@@ -33,11 +34,13 @@
 
 namespace tilesweep::audit {
 
-/// One scene's answer from a resolver: its frames, or why there are none.
-struct EngineAnswer {
-    std::vector<FrameResult<float>> frames;
+/// One scene's answer from a resolver in scalar T: its frames, or why there are none.
+template <class T>
+struct EngineAnswerOf {
+    std::vector<FrameResult<T>> frames;
     std::string failure;  ///< non-empty: no usable answer (crash, hang, garbage, an error line)
 };
+using EngineAnswer = EngineAnswerOf<float>;
 
 /// A resolver whose rates are measured, answering a batch of scenes at once. Each worker thread
 /// makes its own.
@@ -46,6 +49,13 @@ public:
     virtual ~BatchResolver() = default;
     /// One answer per scene, in order. Never throws for the resolver's misbehaviour.
     [[nodiscard]] virtual std::vector<EngineAnswer> resolve(const std::vector<Scene<float>>& scenes) = 0;
+    /// The same in double (a rates run with RatesConfig::scalar "double"). By default every scene
+    /// fails: a resolver that answers float scenes only.
+    [[nodiscard]] virtual std::vector<EngineAnswerOf<double>> resolveDouble(
+        const std::vector<Scene<double>>& scenes) {
+        return std::vector<EngineAnswerOf<double>>(scenes.size(),
+                                                   {{}, "this resolver answers float scenes only"});
+    }
 };
 
 /// A resolver to measure.
@@ -56,17 +66,24 @@ struct EngineSpec {
     std::string toleranceNote;       ///< what that tolerance is ("safe margin 0.08 px")
 };
 
-/// The distances from the origin the far families are measured at, in pixels.
+/// The distances from the origin the far families are measured at, in pixels: in float, and the
+/// further ones a double run adds (double holds whole tiles out to 2^52).
 inline const std::vector<double> kRateDistances = {0, 0x1p10, 0x1p16, 0x1p20, 0x1p24};
+inline const std::vector<double> kDoubleRateDistances = {0x1p32, 0x1p40, 0x1p52};
 
-/// The metrics a rates table shows, in order: the claims a game developer asks about.
-inline const std::vector<Metric> kRateMetrics = {Metric::Tunnel,    Metric::Inside,  Metric::Short,
-                                                 Metric::Overshoot, Metric::Missed,  Metric::Extra,
-                                                 Metric::Snag,      Metric::Inexact, Metric::NoAnswer};
+/// The metrics a rates table shows, in order: the claims a game developer asks about most
+/// (tunnelling, ending inside a tile, snagging on seams, stopping short, one-way platforms), then
+/// the rest.
+inline const std::vector<Metric> kRateMetrics = {
+    Metric::Tunnel,       Metric::Inside,        Metric::Snag,         Metric::Short,
+    Metric::PlatformFall, Metric::PlatformBlock, Metric::PlatformSnag, Metric::Overshoot,
+    Metric::Missed,       Metric::Extra,         Metric::Inexact,      Metric::NoAnswer};
 
-/// The families of a rates run: seven property families (random, corner-pass, corner-tie,
-/// seam-landing, resting, far-sub-ulp, high-speed), then far-<d> for each distance.
-[[nodiscard]] std::vector<Family> rateFamilies();
+/// The families of a rates run in `scalar` ("float" or "double"): seven property families
+/// (random, corner-pass, corner-tie, seam-landing, resting, far-sub-ulp, high-speed), the four
+/// one-way families (platform-landing, platform-jump, platform-walk, platforms), then far-<d> for
+/// each distance (kRateDistances, and kDoubleRateDistances in double).
+[[nodiscard]] std::vector<Family> rateFamilies(const std::string& scalar = "float");
 
 /// A histogram of breach distances, in binades: bin 0 holds the scenes that did not break the
 /// claim; bin k >= 1 those whose breach lay in [2^(k-42), 2^(k-41)) pixels, except at the ends:
@@ -94,10 +111,13 @@ constexpr std::size_t kBreachCount = 3;
 struct RateCell {
     std::uint64_t scenes = 0;
     std::array<std::uint64_t, kMetricCount> failures{};
-    std::uint64_t restingEligible = 0;  ///< scenes with a frame that starts resting on a floor (snag)
-    double insideDepth = 0;             ///< the largest depth inside a tile, pixels (may be infinite)
-    double shortfall = 0;               ///< the largest distance short of touching, pixels (likewise)
-    double overshoot = 0;               ///< the largest distance past the exact end, pixels (likewise)
+    std::uint64_t restingEligible = 0;   ///< scenes with a frame that starts resting on a floor (snag)
+    std::uint64_t platformLandings = 0;  ///< scenes with a frame that lands on a platform (platform-fall)
+    std::uint64_t platformPasses = 0;    ///< scenes with a frame that passes a platform (platform-block)
+    std::uint64_t platformResting = 0;   ///< scenes with a frame that starts on a platform (platform-snag)
+    double insideDepth = 0;              ///< the largest depth inside a tile, pixels (may be infinite)
+    double shortfall = 0;                ///< the largest distance short of touching, pixels (likewise)
+    double overshoot = 0;                ///< the largest distance past the exact end, pixels (likewise)
     std::array<BreachHistogram, kBreachCount> breaches{};  ///< per Breach, every scene's distance
     /// The lowest case index that broke each metric (regenerate it with generateScene), or none.
     std::array<std::uint64_t, kMetricCount> firstFailure;
@@ -106,7 +126,8 @@ struct RateCell {
     RateCell() { firstFailure.fill(kNoCase); }
     static constexpr std::uint64_t kNoCase = ~std::uint64_t{0};
 
-    /// The scenes a metric's share is out of (the resting ones for snag, else all).
+    /// The scenes a metric's share is out of (the resting ones for snag, those with a frame that
+    /// lands on, passes or starts on a platform for the platform metrics, else all).
     [[nodiscard]] std::uint64_t trials(Metric m) const noexcept;
     /// Adds another shard's figures.
     void merge(const RateCell& other);
@@ -119,7 +140,8 @@ struct RatesConfig {
     int jobs = 0;                   ///< worker threads; 0: all cores
     int shardIndex = 0;             ///< this run takes the cases whose index is shardIndex mod shardCount
     int shardCount = 1;
-    std::uint64_t batch = 1000;  ///< scenes per batch sent to a resolver
+    std::uint64_t batch = 1000;    ///< scenes per batch sent to a resolver
+    std::string scalar = "float";  ///< the scenes' and answers' scalar type: "float" or "double"
     /// Called from the coordinating thread now and then: (scenes judged, scenes in all).
     std::function<void(std::uint64_t, std::uint64_t)> progress;
 };
@@ -144,7 +166,7 @@ struct RatesResult {
 [[nodiscard]] std::string ratesJson(const RatesResult& result);
 [[nodiscard]] RatesResult readRatesJson(const std::string& text);
 
-/// Adds up shards of the same run (same seed, cases, shard count, engines and families, names in
+/// Adds up shards of the same run (same seed, cases, scalar, shard count, engines and families, names in
 /// order); throws std::invalid_argument when they are not, or when a shard appears twice, naming
 /// the shard by `labels[k]` (its file, say) when given, else as "shard file k+1", and the field
 /// that differs.
@@ -156,7 +178,8 @@ struct RatesResult {
 [[nodiscard]] std::string ratesMarkdown(const RatesResult& result);
 
 /// `tilesweep audit`'s engine implementations as batch resolvers (tilesweep, twin, grid), in
-/// process: the same scene population, for comparison.
+/// process: the same scene population, for comparison. It answers scenes of its own scalar type
+/// (Implementation::isDouble) and fails the others.
 [[nodiscard]] std::unique_ptr<BatchResolver> makeInProcessResolver(const Implementation& impl);
 
 }  // namespace tilesweep::audit

@@ -19,13 +19,15 @@ namespace tilesweep::audit {
 /// What a column builds.
 enum class FamilyKind : std::uint8_t {
     Suite,  ///< a family of the property suite (`suite`), drawn from a seed (scenarios::buildScene)
-    Far,    ///< random, corner-pass, corner-tie and seam-landing scenes in turn, built at `magnitude`
+    Far,    ///< the families of kFarFamilies in turn, built at `magnitude`
 };
 
-/// The families of the far columns, case by case in turn.
-inline constexpr scenarios::Family kFarFamilies[] = {scenarios::Family::Random, scenarios::Family::CornerPass,
-                                                     scenarios::Family::CornerTie,
-                                                     scenarios::Family::SeamLanding};
+/// The families of the far columns, case by case in turn: solid tiles, then one-way platforms
+/// (landed on, jumped through, walked along), so that every claim is measured by distance.
+inline constexpr scenarios::Family kFarFamilies[] = {
+    scenarios::Family::Random,      scenarios::Family::CornerPass,      scenarios::Family::CornerTie,
+    scenarios::Family::SeamLanding, scenarios::Family::PlatformLanding, scenarios::Family::PlatformJump,
+    scenarios::Family::PlatformWalk};
 
 /// One column of the report.
 struct Family {
