@@ -5,8 +5,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 namespace tilesweep::cli {
 namespace {
@@ -103,9 +105,29 @@ void writeConformanceReport(const std::vector<ConformanceEntry>& entries, const 
         for (const CheckRow& r : e.run.rows) anyFailure = anyFailure || r.failures > 0;
         if (!anyFailure) continue;
         md << "\n### Smallest counterexamples: " << e.label << "\n";
+        // One counterexample per claim: the shortest scene among the properties that state it (the
+        // same claim over other families fails for the same reason), the others named beside it.
+        std::map<std::string, const CheckRow*> smallest;
+        std::map<std::string, std::vector<std::string>> alsoFailing;
         for (const CheckRow& r : e.run.rows) {
             if (r.failures == 0) continue;
-            md << "\n**" << r.property << "**: " << cell(firstLine(r.smallestFailure)) << "\n\n";
+            const CheckRow*& kept = smallest[r.claim];
+            const bool better =
+                kept == nullptr ||
+                (!r.smallestScene.empty() &&
+                 (kept->smallestScene.empty() || r.smallestScene.size() < kept->smallestScene.size()));
+            if (kept != nullptr) alsoFailing[r.claim].push_back(better ? kept->property : r.property);
+            if (better) kept = &r;
+        }
+        for (const CheckRow& r : e.run.rows) {
+            if (r.failures == 0 || smallest[r.claim] != &r) continue;
+            md << "\n**" << r.property << "**: " << cell(firstLine(r.smallestFailure)) << "\n";
+            if (!alsoFailing[r.claim].empty()) {
+                md << "\nThe same claim (" << r.claim << ") also fails in:";
+                for (const std::string& other : alsoFailing[r.claim]) md << " " << other;
+                md << ".\n";
+            }
+            md << "\n";
             if (r.smallestScene.empty()) continue;
             md << "```json\n" << r.smallestScene << "\n```\n";
             if (!r.smallestPicture.empty() && std::filesystem::exists(r.smallestPicture)) {
