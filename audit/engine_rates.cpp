@@ -544,7 +544,7 @@ const char* metricHeading(Metric m) {
         case Metric::Snag:
             return "snags on a seam (of resting)";
         case Metric::PlatformFall:
-            return "falls through a platform (of landings)";
+            return "ends below a platform it lands on (of landings)";
         case Metric::PlatformBlock:
             return "blocked by a platform it passes (of passes)";
         case Metric::PlatformSnag:

@@ -275,7 +275,7 @@ TEST(EngineRates, eachPlatformMetricCatchesTheResolverThatBreaksItsRule) {
     EXPECT_EQ(total(r, 3, Metric::PlatformFall), 0u);
     EXPECT_EQ(total(r, 3, Metric::PlatformBlock), 0u);
     const std::string md = ratesMarkdown(r);
-    EXPECT_NE(md.find("falls through a platform (of landings)"), std::string::npos);
+    EXPECT_NE(md.find("ends below a platform it lands on (of landings)"), std::string::npos);
     const RatesResult back = readRatesJson(ratesJson(r));
     EXPECT_EQ(ratesJson(back), ratesJson(r));
 }

@@ -81,6 +81,7 @@ enum class Metric : std::uint8_t {
     Position,
     Time,
     PlatformFall,   ///< ends with its bottom below the top of a one-way tile the exact frame lands on
+                    ///< (sinking into it by any amount, or falling through it)
     PlatformBlock,  ///< stopped by a one-way tile the exact frame passes (from below, the side, inside)
     PlatformSnag    ///< stopped on x by a one-way tile of the platform it starts standing on
 };
