@@ -17,7 +17,9 @@ while (($#)); do
     esac
 done
 export TILESWEEP_PRESET=${TILESWEEP_PRESET:-plain}
-TILESWEEP_EXTRA_PACKAGES=python3-matplotlib TILESWEEP_TARGETS=tilesweep_cli bash "$root/scripts/build.sh" >/dev/null
+export TILESWEEP_EXTRA_PACKAGES=python3-matplotlib
+bash "$root/scripts/setup.sh"
+TILESWEEP_TARGETS=tilesweep_cli bash "$root/scripts/build.sh" >/dev/null
 cd "$root"
 "${TILESWEEP_BUILD_DIR:-$root/build/$TILESWEEP_PRESET}/cli/tilesweep" audit --out "$out" "${args[@]}" || status=$?
 /usr/bin/python3 "$root/scripts/plots.py" audit "$out"

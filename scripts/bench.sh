@@ -57,8 +57,8 @@ if ((build)); then
     # The release preset: the library, the oracles (the exact reference, the seed and substep
     # baselines) and the benchmarks; no tests.
     # shellcheck disable=SC2086  # BENCH_CMAKE_ARGS is a list of words on purpose
-    TILESWEEP_EXTRA_PACKAGES=python3-matplotlib TILESWEEP_PRESET=release TILESWEEP_BUILD_DIR=$build_dir \
-        bash "$root/scripts/build.sh" ${BENCH_CMAKE_ARGS:-}
+    TILESWEEP_EXTRA_PACKAGES=python3-matplotlib bash "$root/scripts/setup.sh"
+    TILESWEEP_PRESET=release TILESWEEP_BUILD_DIR=$build_dir bash "$root/scripts/build.sh" ${BENCH_CMAKE_ARGS:-}
 fi
 if [ ! -x "$binary" ]; then
     echo "bench.sh: $binary not found (build first, or drop --no-build)" >&2

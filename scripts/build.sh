@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Configures and builds tilesweep into build/<preset>/, installing missing packages first.
+# Configures and builds tilesweep into build/<preset>/. It installs nothing: a missing Debian
+# package is named, with the command that installs it (scripts/setup.sh; main.sh and test.sh run it).
 #
 # TILESWEEP_PRESET=plain (the default) is the build a user makes, with no preset:
 #   cmake -S . -B build/plain -DCMAKE_BUILD_TYPE=Release
@@ -11,6 +12,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 source "$root/scripts/setup.sh"
+tilesweep_require_base || exit 2
 preset=${TILESWEEP_PRESET:-plain}
 build=${TILESWEEP_BUILD_DIR:-$root/build/$preset}
 if [ "$preset" = plain ]; then

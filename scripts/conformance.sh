@@ -35,9 +35,9 @@ done
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 export TILESWEEP_PRESET=${TILESWEEP_PRESET:-plain}
-TILESWEEP_EXTRA_PACKAGES=python3-matplotlib \
-    TILESWEEP_TARGETS="tilesweep_cli tilesweep_twin_adapter tilesweep_box2d_adapter" \
-    bash "$root/scripts/build.sh" >/dev/null
+export TILESWEEP_EXTRA_PACKAGES=python3-matplotlib
+bash "$root/scripts/setup.sh"
+TILESWEEP_TARGETS="tilesweep_cli tilesweep_twin_adapter tilesweep_box2d_adapter" bash "$root/scripts/build.sh" >/dev/null
 build=${TILESWEEP_BUILD_DIR:-$root/build/$TILESWEEP_PRESET}
 tool=$build/cli/tilesweep
 cd "$root"

@@ -17,6 +17,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 source "$root/scripts/setup.sh"
+tilesweep_setup_base
 cases=${1:-4000}
 listed=$(sed -n 's|^//   \([A-Z][A-Z0-9_]*\) .*|\1|p' "$root/src/fault_injection.h")
 faults=(${TILESWEEP_FAULTS:-$listed})

@@ -14,7 +14,8 @@ case "${1:-}" in
     *) echo "format.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
 esac
 if ! command -v clang-format-14 >/dev/null; then
-    TILESWEEP_EXTRA_PACKAGES=clang-format-14 source "$root/scripts/setup.sh"
+    source "$root/scripts/setup.sh"
+    TILESWEEP_EXTRA_PACKAGES=clang-format-14 tilesweep_setup_base
 fi
 cd "$root"
 mapfile -t files < <(git ls-files '*.h' '*.cpp' '*.c')

@@ -39,7 +39,9 @@ build=${TILESWEEP_FUZZ_BUILD_DIR:-$root/build/$preset}
 
 # clang and its sanitizer and libFuzzer runtimes, from Debian's packages, when missing, with
 # what every build needs (scripts/setup.sh).
-TILESWEEP_EXTRA_PACKAGES="clang libclang-rt-14-dev" source "$root/scripts/setup.sh"
+export TILESWEEP_EXTRA_PACKAGES="clang libclang-rt-14-dev"
+source "$root/scripts/setup.sh"
+tilesweep_setup_base
 
 if [ "${TILESWEEP_FUZZ_NO_BUILD:-0}" != 1 ]; then
     # Warnings are errors under clang too, as in the g++ builds.

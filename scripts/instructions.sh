@@ -13,7 +13,9 @@
 # Needs valgrind (installed when missing) and the release preset's bench binaries.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-TILESWEEP_EXTRA_PACKAGES=valgrind source "$root/scripts/setup.sh"
+export TILESWEEP_EXTRA_PACKAGES=valgrind
+source "$root/scripts/setup.sh"
+tilesweep_setup_base
 frames=${1:-16384}
 filter=${2:-}
 build=${TILESWEEP_BUILD_DIR:-$root/build/release}

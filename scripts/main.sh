@@ -6,6 +6,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 export TILESWEEP_PRESET=${TILESWEEP_PRESET:-plain}
+bash "$root/scripts/setup.sh"
 bash "$root/scripts/build.sh"
 cd "$root"
 "${TILESWEEP_BUILD_DIR:-$root/build/$TILESWEEP_PRESET}/cli/tilesweep" check "$@"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what building and testing tilesweep needs, from Debian's packages, when missing.
-# Sourced by scripts/build.sh, scripts/test.sh and the other scripts; safe to run again (it
-# installs nothing twice). Every apt-get runs under one machine-wide lock, so that setups started
+# Run by the scripts a person starts (main.sh, test.sh, audit.sh, conformance.sh, ...), never by
+# scripts/build.sh, which only says what is missing; safe to run again (it installs nothing
+# twice). Sourced, it only defines its functions (tilesweep_setup_base installs the base set). Every apt-get runs under one machine-wide lock, so that setups started
 # together install one after the other, and after `dpkg --configure -a` when dpkg was interrupted.
 #
 #   bash scripts/setup.sh                        # the packages every build needs
@@ -119,10 +120,16 @@ tilesweep_setup_engines() {  # [ENGINE...]: each engine adapter's runtime (defau
     fi
 }
 
-if [ "${BASH_SOURCE[0]}" != "$0" ]; then
-    # Sourced: the arguments are the sourcing script's.
-    tilesweep_setup_base
-else
+tilesweep_require_base() {  # says what tilesweep_setup_base would install, and fails, when anything
+    local extra missing
+    read -r -a extra <<<"${TILESWEEP_EXTRA_PACKAGES:-}"
+    mapfile -t missing < <(tilesweep_missing_packages "${TILESWEEP_PACKAGES[@]}" "${extra[@]}")
+    ((${#missing[@]})) || return 0
+    echo "build: missing Debian packages: ${missing[*]}: run  bash scripts/setup.sh  (or scripts/test.sh or" \
+        "scripts/main.sh, which install them), or as root: apt-get install ${missing[*]}" >&2
+    return 1
+}
+if [ "${BASH_SOURCE[0]}" = "$0" ]; then
     case "${1:-}" in
         "") tilesweep_setup_base ;;
         --engines) shift; tilesweep_setup_base; tilesweep_setup_engines "$@" ;;

@@ -11,6 +11,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 seconds=${1:-60}
 shift || true
 export TILESWEEP_PRESET=${TILESWEEP_PRESET:-plain}
+bash "$root/scripts/setup.sh"
 TILESWEEP_TARGETS=tilesweep_soak bash "$root/scripts/build.sh" >/dev/null
 soak=${TILESWEEP_BUILD_DIR:-$root/build/$TILESWEEP_PRESET}/soak/tilesweep_soak
 if (($#)); then

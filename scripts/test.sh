@@ -15,6 +15,7 @@ if [ "${TILESWEEP_SANITIZE:-OFF}" = ON ] && [ -z "${TILESWEEP_PRESET:-}" ]; then
     export TILESWEEP_PRESET=asan
 fi
 export TILESWEEP_PRESET=${TILESWEEP_PRESET:-plain}
+bash "$root/scripts/setup.sh"
 bash "$root/scripts/build.sh"
 build=${TILESWEEP_BUILD_DIR:-$root/build/$TILESWEEP_PRESET}
 # Every property at two seeds (properties/CMakeLists.txt), 4000 cases each: about 25 s on 2 cores.
