@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Builds tilesweep in Release, runs the Google Benchmark suite (bench/resolve_bench.cpp) with
 # repetitions, keeps the aggregates (median, mean, stddev, cv) as JSON in
-# docs/bench/results-<host>.json with the machine beside it (machine-<host>.json), then writes
-# docs/bench/bench.md (medians and target ratios) and docs/bench/pareto.svg (run time against
-# the audit's error figures) with scripts/bench_report.py, whose chart scripts/plots.py draws.
+# OUT/results-<host>.json with the machine beside it (machine-<host>.json), then writes
+# OUT/bench.md (medians and target ratios, stamped with the commit and date) and OUT/pareto.svg
+# (run time against the audit's error figures, from build/audit/report.json: bash scripts/audit.sh
+# runs first when it is missing) with scripts/bench_report.py, whose chart scripts/plots.py draws.
+# OUT is build/bench; `--out-dir docs/bench` replaces the committed page.
 #
 #   bash scripts/bench.sh                      # 5 repetitions of every benchmark
 #   bash scripts/bench.sh --repetitions 3      # fewer, on a busy machine
@@ -12,8 +14,8 @@
 #
 # Options: --repetitions N (or BENCH_REPETITIONS; default 5), --filter REGEX (Google
 # Benchmark's --benchmark_filter), --min-time SECONDS (--benchmark_min_time), --no-build (use
-# the binary already in the build directory), --out-dir DIR (default docs/bench; for trial runs
-# that must not replace the committed figures), and anything after `--` goes to the benchmark
+# the binary already in the build directory), --out-dir DIR (default build/bench; docs/bench for
+# the committed page), and anything after `--` goes to the benchmark
 # binary unchanged. The build directory is ${TILESWEEP_BUILD_DIR:-build/release} (the release
 # preset), relative to
 # the repository root when not absolute; extra configure arguments can be given in
@@ -26,7 +28,7 @@ repetitions=${BENCH_REPETITIONS:-5}
 filter=""
 min_time=""
 build=1
-out_dir=$root/docs/bench
+out_dir=$root/build/bench
 extra=()
 while (($#)); do
     case "$1" in
@@ -115,5 +117,6 @@ with open(sys.argv[1], "w", encoding="utf-8") as f:
 EOF
 
 # The report's chart is drawn by scripts/plots.py with Debian's matplotlib (/usr/bin/python3).
+[ -f "$root/build/audit/report.json" ] || bash "$root/scripts/audit.sh"
 /usr/bin/python3 "$root/scripts/bench_report.py" --results "$results" --machine "$machine" \
-    --audit "$root/docs/audit/report.json" --out-dir "$out_dir"
+    --audit "$root/build/audit/report.json" --out-dir "$out_dir"

@@ -2,7 +2,7 @@
 """Turns one run of the benchmark suite into docs/bench/bench.md and docs/bench/pareto.svg.
 
 Reads the Google Benchmark JSON written by scripts/bench.sh (the median aggregates of repeated
-runs, CPU time in ns per item) and the audit's docs/audit/report.json (every implementation's
+runs, CPU time in ns per item) and the audit's build/audit/report.json (every implementation's
 error figures against the exact reference). Writes:
 
   bench.md    the medians of every benchmark, the issue's target ratios computed from the same
@@ -14,7 +14,7 @@ The chart is drawn by scripts/plots.py (Debian's python3-matplotlib), the one wa
 the project is drawn.
 
     /usr/bin/python3 scripts/bench_report.py --results docs/bench/results-HOST.json \\
-        [--machine docs/bench/machine-HOST.json] [--audit docs/audit/report.json] \\
+        [--machine docs/bench/machine-HOST.json] [--audit build/audit/report.json] \\
         [--out-dir docs/bench]
 """
 
@@ -489,7 +489,7 @@ def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--results", help="Google Benchmark JSON (default: the newest docs/bench/results-*.json)")
     parser.add_argument("--machine", help="machine description written by scripts/bench.sh")
-    parser.add_argument("--audit", default=os.path.join(root, "docs", "audit", "report.json"))
+    parser.add_argument("--audit", default=os.path.join(root, "build", "audit", "report.json"))
     parser.add_argument("--out-dir", default=os.path.join(root, "docs", "bench"))
     args = parser.parse_args(argv)
 
