@@ -264,7 +264,7 @@ BENCHMARK(BM_Box2D_TimeOfImpact_Pairs);
 #endif
 
 // ---------------------------------------------------------------------------------------------
-// Side by side (issue 10): tilesweep's exact resolver against the baselines a game developer
+// Side by side: tilesweep's exact resolver against the baselines a game developer
 // would pick instead, on the same pre-generated frames (frame_scenarios.h, 65,536 per
 // scenario), each with what it keeps per map (side_by_side.h): tilesweep on its PreparedMap
 // (and TilesweepView, on the bare view, redoing the map's checks each frame); the lean inexact twin

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // How often the inexact twin (and the swept-bounds grid resolver) decide differently from
-// tilesweep, on the benchmarks' own frames (frame_scenarios.h). Issue 10 quotes the twin
-// disagreeing on about 0.04% of frames; this prints the figure for every scenario.
+// tilesweep, on the benchmarks' own frames (frame_scenarios.h): the share of frames on which
+// they disagree, for every scenario.
 //
 //   tilesweep_twin_agreement            # every scenario, float and double
 //
@@ -15,7 +15,7 @@
 //   decisions differ  the contact count, or any contact's tile or normal (in order), or the
 //                     start-overlap list differs;
 //   positions differ  the final position differs in any bit (-0 == 0); tilesweep rounds toward
-//                     the start (CONTRACT.md "Positions"), plain arithmetic to nearest, so most
+//                     the start (docs/contract.md "Positions"), plain arithmetic to nearest, so most
 //                     of these are one ulp apart: "> 1 ulp" counts the rest;
 //   ends inside       the final box overlaps (open, evaluated exactly) a solid tile it did not
 //                     overlap at the start: the failure the contract's rounding rule rules out.

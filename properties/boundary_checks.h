@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-// Claims about the boundaries of the game-loop API and the C API (issue 20): buffers of exactly
+// Claims about the boundaries of the game-loop API and the C API: buffers of exactly
 // the size needed, the inline contact limit and the wide path at exactly their bounds, and every
 // C error code from a cause built to give exactly it. They concern tilesweep's own library
 // (ClaimScope::Internal), and scene_checks.cpp lists them with the other claims.

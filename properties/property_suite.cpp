@@ -325,8 +325,8 @@ void addAll(std::vector<Property>& out) {
         {"time-tie", 0.05}, {"reaches-at-end", 0.05}, {"lattice-wide", 0.05}, {"lattice-192", 0.03}};
     if (std::is_same<T, double>::value) fineBits.push_back({"full-precision-refined", 0.15});
     addClaim<T>(out, "decidesFineBitsExactly", "matchesExactReferenceBitForBit", Family::FineBits, fineBits);
-    // Float far edges are all on the fast path since its range test lost its slack (issue 20): the
-    // float range test's edge has its own family and floor (decidesRangeEdgeScenesExactly).
+    // Float far edges all take the fast path, whose range test has no slack: the float range
+    // test's edge has its own family and floor (decidesRangeEdgeScenesExactly).
     addClaim<T>(out, "farEdgesNeverEndInsideATile", "neverEndsInsideATileItDidNotStartIn", Family::FarEdge,
                 std::is_same<T, double>::value
                     ? std::vector<CoverageFloor>{{"rounded-down", 0.05}, {"fallback", 0.05}}
@@ -346,7 +346,7 @@ void addAll(std::vector<Property>& out) {
     addClaim<T>(out, "exactReferenceAgreesWithSubsteps", "exactReferenceAgreesWithSubsteps", Family::Mixed,
                 {{"hit", 0.2}, {"touch-at-0", 0.03}});
     addClaim<T>(out, "zeroMoveChangesNothing", "zeroMoveChangesNothing", Family::Mixed, {});
-    // What only the unit tests reached before: bad input, sweepBox, empty maps, huge moves.
+    // Bad input, sweepBox, empty maps, huge moves: inputs the other families seldom make.
     addClaim<T>(out, "badInputIsRejected", "badInputIsRejected", Family::Mixed, {});
     addClaim<T>(out, "sweepBoxMatchesTheReference", "sweepBoxMatchesTheReference", Family::Mixed,
                 {{"hit", 0.2}, {"tie", 0.03}});
@@ -370,8 +370,10 @@ void addAll(std::vector<Property>& out) {
                 {{"touch-at-0", 0.3}});
     addClaim<T>(out, "slidingAlongFloorNeverSnags", "slidingAlongFloorNeverSnags", Family::SeamLanding,
                 {{"seam", 0.1}, {"touch-at-0", 0.2}});
-    // Issue 20's four classes, each a family aimed at it. Corner entries one ulp off a tie, whose
-    // products differ by less than the filter's bound: the refinement decides a nonzero sign.
+    // Four classes of inputs random scenes reach rarely, each with a family aimed at it (double
+    // near-ties, the tiny end of the range, capacity boundaries, error codes). Corner entries one
+    // ulp off a tie, whose products differ by less than the filter's bound: the refinement
+    // decides a nonzero sign.
     // (Float frames hold every product exactly in double: no refinement there, the same claim.)
     const bool isDouble = std::is_same<T, double>::value;
     addClaim<T>(out, "decidesNearTiesInsideTheFilterBand", "matchesExactReferenceBitForBit", Family::NearTie,

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-// An outside resolver as a process speaking the protocol of `tilesweep resolve` (CONTRACT.md):
+// An outside resolver as a process speaking the protocol of `tilesweep resolve` (docs/contract.md):
 // scene lines in, one result line per scene out, in order. Two transports:
 //
 //   pipe mode (the default): `sh -c COMMAND`, fed the scene lines on its standard input, answers

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-// Reading a result line of `tilesweep resolve` (CONTRACT.md, "tilesweep resolve") back into
+// Reading a result line of `tilesweep resolve` (docs/contract.md, "tilesweep resolve") back into
 // frames, as an outside resolver prints it:
 //
 //     {"frames": [{"pos": [x, y], "contacts": [{"tile": [i, j], "normal": [0, -1], "t": 0.25}],

@@ -13,7 +13,7 @@ namespace tilesweep::properties {
 using namespace claim_support;
 
 /// At the end of every frame, the box overlaps no solid tile it did not overlap at the frame's
-/// start: CONTRACT.md's promise, with no allowance (the amended rounding rule keeps it).
+/// start: docs/contract.md's promise, with no allowance (the amended rounding rule keeps it).
 template <class T>
 std::string neverEndsInsideATileItDidNotStartIn(const Scene<T>& scene) {
     const CheckedFrames<T> c = checkedFrames(scene);

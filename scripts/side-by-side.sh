@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The side-by-side table of issue 19: tilesweep against the lean twin and the lean grid (and
+# The side-by-side table: tilesweep against the lean twin and the lean grid (and
 # tilesweep on the bare view, and the libm twin, for reference) on every scenario of
 # bench/resolve_bench.cpp, in float and double, as medians of repeated runs in random interleaved
 # order within one binary, in several processes of it: a process runs as a whole faster or

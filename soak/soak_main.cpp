@@ -330,7 +330,7 @@ int main(int argc, char** argv) {
     std::printf("soak: RSS %ld kB at start, %ld kB at end, peak %ld kB\n", rssStart, rssEnd, rssPeak);
     std::printf(
         "soak: %llu frames rounded an axis down, past the exact end by less than an ulp, where "
-        "rounding back would have carried the far edge over a grid line (CONTRACT.md, Positions)\n",
+        "rounding back would have carried the far edge over a grid line (docs/contract.md, Positions)\n",
         static_cast<unsigned long long>(counters.roundedDown));
     std::printf("soak: %llu violations\n", static_cast<unsigned long long>(counters.violations));
     return counters.violations == 0 ? 0 : 1;

@@ -12,7 +12,7 @@
 //     dir > 0: entryDistance = lo - high,  exitDistance = hi - low
 //     dir < 0: entryDistance = low - hi,   exitDistance = high - lo.
 // A static axis overlaps for all t or for none. With E = max entry and X = min exit over both
-// axes, the tile blocks iff 0 <= E < 1 and E < X (0 not in I and I meets (0, 1), CONTRACT.md).
+// axes, the tile blocks iff 0 <= E < 1 and E < X (0 not in I and I meets (0, 1), docs/contract.md).
 // Every comparison of two times n1/s1 and n2/s2 is made as n1*s2 against n2*s1 (s1, s2 > 0),
 // exactly (compareProducts: integers on the lattice; monotonic rounding and TwoProduct, or a
 // certified filter with an exact refinement, on doubles). That settles corner misses (E >= X,
@@ -68,7 +68,7 @@ template <class Num>
 /// Whether two closed intervals [low, high] and [lo, hi] overlap, given the signs of low - hi
 /// and high - lo as two callables (the second is evaluated only when the first leaves the answer
 /// open, which matters for pairs and wide integers): their interiors must meet, so touching is
-/// not overlapping (CONTRACT.md). The one statement of that rule: the start overlaps, the tile
+/// not overlapping (docs/contract.md). The one statement of that rule: the start overlaps, the tile
 /// test and the held axis of a one-axis move all ask it.
 template <class LowMinusHi, class HighMinusLo>
 [[nodiscard, gnu::always_inline]] inline bool overlapsOpen(const LowMinusHi& lowMinusHi,
@@ -211,7 +211,7 @@ template <class Motion, class Coord = typename Motion::Coord, class Speed = type
 }
 
 /// The contact axis of an exact corner tie: the face that is exposed when exactly one is,
-/// otherwise y (CONTRACT.md; it decides whether a character snags on a corner).
+/// otherwise y (docs/contract.md; it decides whether a character snags on a corner).
 [[nodiscard]] inline Axis settleTie(bool xFaceExposed, bool yFaceExposed) noexcept {
 #if defined(TILESWEEP_FAULT_TIE_REVERSED)
     return (yFaceExposed && !xFaceExposed) ? Axis::Y : Axis::X;  // deliberate fault

@@ -17,7 +17,7 @@
 namespace tilesweep::detail {
 
 // The members below run in the solver's innermost loops, from many call sites: always inlined
-// (gnu::always_inline; other compilers ignore it), as they were when each solver had its own.
+// (gnu::always_inline; other compilers ignore it), so that a call costs nothing there.
 
 /// One axis of a fast frame: the box's motion and the grid, as exact doubles. The far box edge
 /// low + size is held as high + highLow: on float frames it is a double (highLow = 0); on double

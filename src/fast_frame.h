@@ -123,7 +123,7 @@ public:
     double edge(int a, std::int64_t k) const noexcept { return axis_[a].edge(k); }
     /// e + tile or e - tile as the motion on `a` goes, for a tile edge e: exact, since both edges
     /// are exact doubles (the range test). (Both are representable in T as well, which a valid map
-    /// guarantees, CONTRACT.md: a step rounded to T would change nothing.)
+    /// guarantees, docs/contract.md: a step rounded to T would change nothing.)
     [[gnu::always_inline]] double nextEdge(int a, double e) const noexcept {
         return axis_[a].dir > 0 ? e + axis_[a].tile : e - axis_[a].tile;
     }
@@ -258,8 +258,8 @@ public:
             }
             return detail::testTile(mx, my, xlo, xhi, ylo, yhi, refined_);  // the screen's rare fallback
         } else {
-            // Float frames: every tile test, inlined (FloorAndWalls<float>/16 costs 2125
-            // instructions a frame with the call, 1969 without; scripts/instructions.sh).
+            // Float frames: every tile test, inlined (a call costs a frame that tests many tiles
+            // more instructions than the inlined code: scripts/instructions.sh, FloorAndWalls).
             return detail::testTileInline(mx, my, xlo, xhi, ylo, yhi, refined_);
         }
     }

@@ -60,7 +60,7 @@
 //                      one of the listed cells, not all of them (frame_loop.h)
 //   ONE_WAY_SIDE_BLOCKS  a one-way tile entered through a side blocks on x (frame_loop.h)
 //   ONE_WAY_TIE_ON_X   an exact corner landing on a one-way tile blocks on x, not y (frame_loop.h)
-// Issue 20's four classes, one fault standing for each:
+// Four classes of inputs that random scenes reach rarely, one fault standing for each:
 //   PAIR_REFINEMENT_SWAPPED  double near-ties: the exact refinement of the pair comparison called
 //                      with its two sides swapped, so a nonzero sign inside the filter's band
 //                      comes out reversed (exact_double.h)

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-// The contract's rounding of a final coordinate ("Positions", CONTRACT.md), written once for
+// The contract's rounding of a final coordinate ("Positions", docs/contract.md), written once for
 // every arithmetic of the frame loop (frame_loop.h): toward the start, except on an axis that
 // moved toward minus infinity when that would carry the far edge (x + w) over a grid line the
 // exact far edge had not passed; then toward minus infinity. Rounding down never carries the

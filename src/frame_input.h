@@ -3,8 +3,8 @@
 
 // A frame's inputs as the solver reads them: the map, the box and the displacement by
 // reference, where the caller keeps them. ResolveInput (resolve.h) holds the same three by value,
-// and building one from a prepared map's view and a MoveInput copies 12 words a frame, about 15
-// instructions of a zero move's 190 (scripts/instructions.sh); a FrameInput copies none.
+// and building one from a prepared map's view and a MoveInput copies 12 words a frame, a
+// noticeable share of a zero move's work; a FrameInput copies none.
 
 #include "tilesweep/resolve.h"
 

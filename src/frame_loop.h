@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-// The contract's frame loop ("One frame through a map", CONTRACT.md), written once for every
+// The contract's frame loop ("One frame through a map", docs/contract.md), written once for every
 // arithmetic the resolver uses: the exact lattice integers (lattice_frame.h), and the exact
 // doubles or exact pairs of the fast path (fast_frame.h), which may answer "undecided", so that
 // the frame falls back to the lattice.
@@ -26,14 +26,13 @@
 // Cell ranges may be supersets (the fast path estimates them with a certified margin): every
 // cell in them gets the exact tile test.
 //
-// One-way tiles (CONTRACT.md, "One-way tiles"). They can block only when the box moves down, so
-// such a frame, on a map that has them (oneWayCellsMayBlock, frame_solve.h), runs on
-// FrameLoop<Arith, true> (kOneWayDown), and every other frame on the loop compiled without a
-// test of them: the caller chooses before it builds the frame's arithmetic. They block only on
-// y: in step 1 when the tile test says BlocksOnY or Tie (testOneWayAndRecord), in a step 2
-// sliding down exactly as a solid tile would, and never in a move or slide along x. Otherwise
-// they are empty cells: start overlaps, the exposed-face rule and every other read of `solid`
-// ignore them.
+// One-way tiles (docs/contract.md, "One-way tiles"). They can block only when the box moves down,
+// so such a frame, on a map that has them (oneWayCellsMayBlock, frame_solve.h), runs on
+// FrameLoop<Arith, true> (kOneWayDown), and every other frame on the loop compiled without a test
+// of them: the caller chooses before it builds the frame's arithmetic. They block only on y: in
+// step 1 when the tile test says BlocksOnY or Tie (testOneWayAndRecord), in a step 2 sliding down
+// exactly as a solid tile would, and never in a move or slide along x. Otherwise they are empty
+// cells: start overlaps, the exposed-face rule and every other read of `solid` ignore them.
 //
 // What an arithmetic `Arith` provides (LatticeFrame, FastFrame):
 //   types   Scalar (float or double), Coord (a box coordinate or a distance), Edge (a tile
@@ -70,8 +69,8 @@
 namespace tilesweep::detail {
 
 // The small steps of the loop (add, firstCellAhead, the overlap and edge helpers) are always
-// inlined (gnu::always_inline; other compilers ignore it), as they were when each arithmetic had
-// its own solver: the fast path is measured against that (bench/).
+// inlined (gnu::always_inline; other compilers ignore it): one loop over two arithmetics runs as
+// fast as a solver of each arithmetic's own would (bench/).
 template <class Arith, bool kOneWayDown = false>
 class FrameLoop {
 public:
@@ -307,9 +306,8 @@ private:
     }
 
     /// sweepBothAxes along primary axis `p`, a constant, so that the cells' indices and the
-    /// axes' fields take no choice between the axes. With this and sweepOneAxisAlong,
-    /// FloorAndWalls at 8 tiles a frame runs 1761 instructions a frame instead of 1931 in float,
-    /// 2223 instead of 2404 in double (scripts/instructions.sh).
+    /// axes' fields take no choice between the axes (as sweepOneAxisAlong does): a walk then
+    /// runs fewer instructions a cell (scripts/instructions.sh, FloorAndWalls).
     template <int p>
     void sweepBothAxesAlong(Hits& hits) noexcept {
         const auto& mp = m_.axis(p);

@@ -5,10 +5,10 @@
 // admits it, else on the exact lattice (solveOnLatticeAs). Compiled twice: for frames that may
 // meet a blocking one-way cell (kOneWayDown, oneWayCellsMayBlock in frame_solve.h), instantiated
 // in frame_solve_one_way.cpp, and for the others, in frame_solve.cpp. resolveFrame
-// (frame_solve.h) chooses before anything else, so the others run the code they ran before
-// one-way cells existed, one test aside; and each copy sits in a unit of its own, so that neither takes the
-// other's share of the compiler's inlining budget (in one unit the fast path inlined less, and
-// frames on maps without one-way cells ran 5 to 13% more instructions, scripts/instructions.sh).
+// (frame_solve.h) chooses before anything else, so the others pay for one-way cells with that
+// one test alone; and each copy sits in a unit of its own, so that neither takes the
+// other's share of the compiler's inlining budget (in one unit the fast path inlines less, and
+// frames on maps without one-way cells run more instructions: scripts/instructions.sh).
 
 #include "fast_frame.h"
 #include "frame_input.h"
@@ -86,7 +86,7 @@ template <bool kOneWayDown, class T>
 /// resolveMovingFrame on the map's range test, whichever way it came (prepared or computed).
 /// `kOneWayDown` as for solveFastOn.
 /// Always inlined into both entry points (frame_solve.cpp), so that a prepared map's frame builds no range
-/// of its own (a MapRange's fields, zeroed and never read, cost 16 instructions a frame).
+/// of its own (a MapRange's fields, zeroed and never read, would cost every frame).
 template <bool kOneWayDown, class T>
 [[gnu::always_inline]] inline ResolveResult<T> solveMovingFrame(const TileMapView<T>& map,
                                                                 const MoveInput<T>& move,

@@ -9,12 +9,10 @@
 // decided here, on the fast path, before the frame loop is entered.
 //
 // Why here and not in the loop. The loop's near listing finds the same frames (no solid cell
-// listed), and an exit there saves as many instructions, but it cost the frames that are not
-// free: with the exit and its rounding inlined into the loop, the batch's walking movers (on a
-// floor, a contact every frame) ran 18% slower by the clock on 4% fewer instructions
-// (tilesweep_batch_bench, Walking at 27.3 against 22.1 million mover-frames a second, three
-// processes side by side, 4 December). Here the loop is the same code as before, and a frame
-// that is not free pays only the block read.
+// listed), and an exit there would save as many instructions, but it would cost the frames that
+// are not free: the exit and its rounding, inlined into the loop, slow down a walker with a
+// contact every frame by more than the instructions they save (tilesweep_batch_bench, Walking).
+// Here the loop stays as it is, and a frame that is not free pays only the block read.
 //
 // Exact: the swept bounds (FastFrame::sweptCellsOfBoth) are a certified superset of the cells
 // the box covers over the frame on each axis (cell_range.h), and blockHoldsNoSolidCell reads

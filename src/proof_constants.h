@@ -70,13 +70,12 @@ inline constexpr double kZeroMoveProductGuard = 0x1p-900;
 /// decides only when |D| > fl(c * fl(S)) >= c(1 - u)^2 S, and c(1 - u)^3 >= 2u + u^2 holds for
 /// c = 2u + 7u^2 + 16u^3 already: (2 + 16u)u is safe.
 ///
-/// Through issue 20 this was (3 + 16u)u: the derivation bounded u|D| by u(1 + u)S, which is
-/// true but only matters when |D| is far outside the band. Inside it the error is at most about
-/// 2uS, two thirds of the old bound, so the old band's top third was never reachable; the
-/// construction of tests/exact_primitives_test.cpp (comparesExactTiesInTheFilterBandsUpperHalf)
-/// reaches 0.946 of the new bound (0.63 of the old), and its upper half in every case where the
-/// two rounded products land two ulps apart. Halving the new bound (FILTER_BOUND_HALVED) is
-/// wrong on exactly those: the sign of D (two ulps of p) is not the sign of an exact tie.
+/// The bound is close to tight: the u|D| term is kept apart rather than bounded by u(1 + u)S, so
+/// inside the band the error is at most about 2uS, the bound itself. Exact ties come within
+/// 0.946 of it in the construction of tests/exact_primitives_test.cpp
+/// (comparesExactTiesInTheFilterBandsUpperHalf), and reach its upper half wherever the two
+/// rounded products land two ulps apart. Half the bound (FILTER_BOUND_HALVED) is wrong on
+/// exactly those: the sign of D (two ulps of p) is not the sign of an exact tie.
 inline constexpr double kPairProductErrorBound = (2.0 + 16.0 * kUnitRoundoff) * kUnitRoundoff;
 
 /// The filter of roundTimeToDouble (time_rounding.h), in units of u times |d| + |e| + |lo|: the
@@ -152,8 +151,8 @@ inline constexpr double kFloatLineReachLeast = 0x1p-148;
 /// + w| + 2t <= A, as c + 2 >= 2). The range test bounds A by exponent fields: |x|, |w|, |dx| <
 /// 2^B (B = boxTop - 126), so their sum is below 3 * 2^B < 2^(B+2); |o| + (c + 2)t < 2^E (E =
 /// edgeTop - 126); so A < 2^(B+2) + 2^E <= 2^(C+1) with C = max(B + 2, E), and C + 1 - G <= 53
-/// suffices. Through issue 20 the test asked C + 3 - G <= 53 (C + 1 bounded the coordinates, and
-/// two more bits the differences, which A already counts): two binades of slack, gone.
+/// suffices. A bounds the differences as well as the coordinates, so the differences need no
+/// bits of their own.
 ///
 /// What a wider test admits. A value misses the double grid only when it is at least 2^(G+53)
 /// and has a bit at 2^G, which only an input with its ulp at 2^G (below 2^(G+24)) provides; it

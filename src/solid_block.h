@@ -5,8 +5,8 @@
 // (SSE2). The free-move test (free_move.h) reads a short move's swept bounds so, and finds a
 // frame whose bounds hold no solid cell without a loop over them. A frame's swept bounds change
 // size from frame to frame (a move of 2 tiles covers 3 or 4 cells on an axis), and a loop over
-// them mispredicts its exits: on FreeFlight<double>/4 (every frame free), listing the bounds
-// cell by cell took 18 of the frame's 35 ns (bench/, the listing left out).
+// them mispredicts its exits: listing the bounds cell by cell would take about half of a free
+// frame's time (FreeFlight in bench/).
 
 #include "cell_range.h"
 #include "fault_injection.h"

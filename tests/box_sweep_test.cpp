@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The single box-against-tile sweep. Expected values are worked out from CONTRACT.md.
+// The single box-against-tile sweep. Expected values are worked out from docs/contract.md.
 #include "tilesweep/box_sweep.h"
 
 #include <gtest/gtest.h>

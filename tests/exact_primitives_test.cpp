@@ -3,7 +3,7 @@
 // src/time_rounding.h) against the oracle's exact rationals, on inputs built to sit
 // where a filter cannot decide: products that round to the same double, pairs whose products
 // differ by far less than the filter's bound, and quotients next to a rounding midpoint. These
-// are the cases that double frames reach rarely (issue 20, class 1); each test counts how many
+// are the cases that double frames reach rarely (double near-ties); each test counts how many
 // of its draws took the exact refinement and asserts a floor, so none of them is vacuous.
 #include "exact_double.h"
 #include "fast_frame.h"

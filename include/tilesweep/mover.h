@@ -159,7 +159,7 @@ inline constexpr std::int32_t kInlineContacts = 64;
 /// The most contacts one frame can record for a box of this size in tiles of this size:
 /// (floor(w/tw) + 2) + (floor(h/th) + 2), saturated at INT32_MAX; 0 for a size that is not
 /// finite and > 0 (such a move is invalid and records none). A contact buffer this large is
-/// never too small. Why (CONTRACT.md, "One frame through a map"): a frame has at most two
+/// never too small. Why (docs/contract.md, "One frame through a map"): a frame has at most two
 /// steps. The tiles hit in a step with contact axis x all enter at the step's time s on x, so
 /// they lie in the one column across the box's leading x face, in rows that overlap the box's
 /// open y extent just after s: an open interval of h/th cells meets at most ceil(h/th) + 1 open

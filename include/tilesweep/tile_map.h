@@ -11,7 +11,7 @@
 // [origin.y + j*tileSize.y, origin.y + (j+1)*tileSize.y], where i is the column and j the row
 // (row 0 is the top). Cells outside [0, columns) x [0, rows) are empty. A cell is empty, solid,
 // or one-way (a jump-through platform: it blocks only a box moving down onto its top face, from
-// at or above it; CONTRACT.md, "One-way tiles"). A map is valid when
+// at or above it; docs/contract.md, "One-way tiles"). A map is valid when
 // every tile edge it defines is exactly representable in T: the resolver is exact either way,
 // but a contact position must be able to land exactly on the edge it touches.
 

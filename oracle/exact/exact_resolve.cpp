@@ -10,7 +10,7 @@
 namespace tilesweep::oracle {
 namespace {
 
-constexpr int kMaxSteps = 2;  // CONTRACT.md: "repeat at most 2 times"
+constexpr int kMaxSteps = 2;  // docs/contract.md: "It takes at most two steps"
 
 // -1, 0 or +1.
 int signOf(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Hand-worked one-way cases of the exact reference. Every expected value below is derived in the
-// comment above it from CONTRACT.md ("One-way tiles"): a '-' tile blocks only a step with r_y > 0
-// whose box bottom starts at or above the tile's top, and then when I meets (0, 1) and
-// entry_y >= entry_x, at entry_y, on y, with normal (0, -1). Tiles are 16 x 16 at the origin unless
-// said otherwise, so tile (i, j) is [16i, 16i + 16] x [16j, 16j + 16].
+// comment above it from docs/contract.md ("One-way tiles"): a '-' tile blocks only a step with
+// r_y > 0 whose box bottom starts at or above the tile's top, and then when I meets (0, 1) and
+// entry_y >= entry_x, at entry_y, on y, with normal (0, -1). Tiles are 16 x 16 at the origin
+// unless said otherwise, so tile (i, j) is [16i, 16i + 16] x [16j, 16j + 16].
 
 #include "scene_builder.h"
 

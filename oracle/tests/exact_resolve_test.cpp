@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Hand-worked cases of the exact reference. Every expected value below is derived in the comment
-// above it from CONTRACT.md (per-axis open intervals, I, inf I, the tie rule, the two-step frame),
-// not taken from the program's output. Tiles are 16 x 16 at the origin unless said otherwise, so
-// tile (i, j) is [16i, 16i + 16] x [16j, 16j + 16].
+// above it from docs/contract.md (per-axis open intervals, I, inf I, the tie rule, the two-step
+// frame), not taken from the program's output. Tiles are 16 x 16 at the origin unless said
+// otherwise, so tile (i, j) is [16i, 16i + 16] x [16j, 16j + 16].
 
 #include "tilesweep/oracle/exact/exact_resolve.h"
 

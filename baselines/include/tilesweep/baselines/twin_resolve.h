@@ -9,11 +9,12 @@
 #include <limits>
 
 // The inexact twin: the move-and-slide a competent game developer writes, in plain T arithmetic,
-// as the baseline tilesweep::resolveMove has to be measured against (issue 10, "Exact at the
-// speed of inexact"). It is NOT exact and is not meant to be: it exists for the benchmarks and
+// as the baseline tilesweep::resolveMove is measured against: exact has to cost no more than
+// this. It is NOT exact and is not meant to be: it exists for the benchmarks and
 // for counting how often plain arithmetic decides differently (tilesweep_twin_agreement).
 //
-// What it does, per frame (the contract's loop in spirit, CONTRACT.md "One frame through a map"):
+// What it does, per frame (the contract's loop in spirit, docs/contract.md "One frame through a
+// map"):
 //   - at most two steps; each finds the earliest time of impact over the cells the step's path
 //     covers, takes every tile hit at exactly that time (T equality), snaps the box to the face
 //     on each contact axis, zeroes that axis of the remaining motion and slides on;
@@ -30,7 +31,7 @@
 // next frame then lets it walk out. No validation: the input is assumed valid (tilesweep's
 // resolveMove checks it every frame; a NaN here just propagates). No allocation.
 //
-// Lean, as a careful game developer writes it (issue 19, "Honest baselines"): a coordinate
+// Lean, as a careful game developer writes it, so that the comparison is honest: a coordinate
 // becomes a cell index with one multiplication by the tile size's reciprocal, computed once per
 // map (TileReciprocal; the two-argument overload computes it once per frame), and a floor or
 // ceiling by truncation and a one-step correction, with no libm call. The reciprocal rounds, so

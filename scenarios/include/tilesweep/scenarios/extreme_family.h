@@ -16,7 +16,7 @@
 
 namespace tilesweep::scenarios::detail {
 
-/// What the unit tests alone used to reach: a map of 0 x 0 cells or with no solid cell, moves of
+/// Inputs the other families seldom make: a map of 0 x 0 cells or with no solid cell, moves of
 /// 2^20 up to near the largest finite value, boxes far beyond the map (2^60 to 2^120 in float,
 /// to 2^1000 in double), each on a small random map otherwise.
 template <class T>

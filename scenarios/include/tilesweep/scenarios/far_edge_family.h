@@ -16,13 +16,13 @@
 
 namespace tilesweep::scenarios::detail {
 
-/// The rounding rule's family (CONTRACT.md, "Positions"). Far from the origin (float 2^17 to 2^21,
-/// double 2^46 to 2^50), the box's far edge lies a few ulps past a grid line, just above a solid
-/// tile on the far side of that line. Frame 1 moves toward minus infinity on that axis by a
-/// few ulps, mostly just enough to take the exact far edge back over the line, and down
-/// onto the tile's row, often missing its corner; rounding back toward the start would put the
-/// far edge over the line again, inside the tile. Frames 2 and 3 move back toward the tile: the
-/// box must stop at its face, never walk into it. Half the scenes swap the axes.
+/// The rounding rule's family (docs/contract.md, "Positions"). Far from the origin (float 2^17 to
+/// 2^21, double 2^46 to 2^50), the box's far edge lies a few ulps past a grid line, just above a
+/// solid tile on the far side of that line. Frame 1 moves toward minus infinity on that axis by a
+/// few ulps, mostly just enough to take the exact far edge back over the line, and down onto the
+/// tile's row, often missing its corner; rounding back toward the start would put the far edge
+/// over the line again, inside the tile. Frames 2 and 3 move back toward the tile: the box must
+/// stop at its face, never walk into it. Half the scenes swap the axes.
 template <class T>
 rc::Gen<GeneratedScene<T>> genFarEdgeScene() {
     return rc::gen::exec([] {

@@ -24,7 +24,7 @@ namespace tilesweep::scenarios::detail {
 /// but in double they are not doubles (the resolver carries them as exact pairs hi + lo), and the
 /// rounded comparison of a(K-g)*b*s against b(K-g)*a*s comes out nonzero in about 28% of cases.
 /// The search below asks for a rounded difference in the upper half of the certified band
-/// (kPairProductErrorBound, src/proof_constants.h: (2 + 16u)u since issue 20, which no exact
+/// (kPairProductErrorBound, src/proof_constants.h: (2 + 16u)u, which no exact
 /// tie passes). Its four parts (the roundings of both products, both low parts) each reach u of
 /// their value only when every significand is just above 1, and add up only when all four are
 /// near their largest with one sign: then the two rounded products land two ulps apart. So in

@@ -19,7 +19,7 @@
 
 namespace tilesweep::scenarios {
 
-/// Frames per scenario (issue 10 asks for 65,536); a power of two, so the loop index wraps by mask.
+/// Frames per scenario: 65,536, a power of two, so that the loop index wraps by mask.
 inline constexpr std::size_t kFrameCount = 65536;
 inline constexpr int kFrameMapSize = 256;
 inline constexpr int kFrameTile = 16;

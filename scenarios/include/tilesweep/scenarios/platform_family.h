@@ -2,10 +2,11 @@
 #pragma once
 
 // The one-way families (platforms, platform-landing, platform-jump, platform-walk): jump-through
-// platforms ('-', CONTRACT.md "One-way tiles") among solid tiles; landed on at every speed and on
-// an exact corner, jumped up through and landed on over the following frames, entered from the
-// side, walked along across seams. Every value is on the tile/8 (or tile/16, tile/32) grid, so a
-// box placed on a platform's top is exactly on it, near the origin and far from it (genOrigin).
+// platforms ('-', docs/contract.md "One-way tiles") among solid tiles; landed on at every speed
+// and on an exact corner, jumped up through and landed on over the following frames, entered from
+// the side, walked along across seams. Every value is on the tile/8 (or tile/16, tile/32) grid,
+// so a box placed on a platform's top is exactly on it, near the origin and far from it
+// (genOrigin).
 
 #include "tilesweep/scenarios/scene_pieces.h"
 
@@ -61,7 +62,8 @@ rc::Gen<GeneratedScene<T>> genPlatformLayoutScene() {
             const T dy = *genDisplacement<T>(tile, box.pos.y);
             moves.push_back({*genDisplacement<T>(tile, box.pos.x), roll(4) == 0 ? dy : std::fabs(dy)});
         }
-        return GeneratedScene<T>{makeScene(g, ox, oy, tile, box, moves), Family::Platforms, isFarOrigin(ox, oy)};
+        return GeneratedScene<T>{makeScene(g, ox, oy, tile, box, moves), Family::Platforms,
+                                 isFarOrigin(ox, oy)};
     });
 }
 
@@ -111,8 +113,8 @@ rc::Gen<GeneratedScene<T>> genPlatformLandingScene() {
                 x = ox + *rc::gen::inRange(topFrom * 8 - 16, (topTo + 1) * 8 + 8) * tile / 8.0;
                 y = top - h - *rc::gen::inRange(0, 17) * tile / 8.0;
                 dx = *rc::gen::inRange(-32, 33) * tile / 8.0;
-                dy = (top - h - y) + *rc::gen::weightedOneOf<int>({{3, rc::gen::inRange(1, 17)},
-                                                                   {2, rc::gen::inRange(17, 801)}}) *
+                dy = (top - h - y) + *rc::gen::weightedOneOf<int>(
+                                         {{3, rc::gen::inRange(1, 17)}, {2, rc::gen::inRange(17, 801)}}) *
                                          tile / 8.0;
                 break;
             }
@@ -121,7 +123,8 @@ rc::Gen<GeneratedScene<T>> genPlatformLandingScene() {
                 y = top - h;
                 nudgeY = *rc::gen::element(0, 0, 1, -1);
                 dx = *rc::gen::inRange(-16, 17) * tile / 8.0;
-                dy = *rc::gen::weightedOneOf<int>({{3, rc::gen::inRange(1, 17)}, {1, rc::gen::inRange(17, 801)}}) *
+                dy = *rc::gen::weightedOneOf<int>(
+                         {{3, rc::gen::inRange(1, 17)}, {1, rc::gen::inRange(17, 801)}}) *
                      tile / 8.0;
                 break;
             }
@@ -142,8 +145,9 @@ rc::Gen<GeneratedScene<T>> genPlatformLandingScene() {
                 const double away = *rc::gen::inRange(1, 17) * tile / 8.0;
                 const double end = ox + (fromRight ? topTo + 1 : topFrom) * tile;
                 x = fromRight ? end + away : end - w - away;
-                y = top - h + *rc::gen::inRange(1, static_cast<int>(std::min(h, double(tile)) * 8 / tile) + 1) *
-                                  tile / 8.0;
+                y = top - h +
+                    *rc::gen::inRange(1, static_cast<int>(std::min(h, double(tile)) * 8 / tile) + 1) * tile /
+                        8.0;
                 dx = (fromRight ? -1 : 1) * (away + *rc::gen::inRange(1, 33) * tile / 8.0);
                 dy = *rc::gen::inRange(0, 9) * tile / 8.0;
                 break;
@@ -187,12 +191,13 @@ rc::Gen<GeneratedScene<T>> genPlatformJumpScene() {
         if (roll(4) == 0) {  // a solid ceiling over part of the platform
             const int ceiling = platformRow - *rc::gen::inRange(2, 4);
             const int c0 = *rc::gen::inRange(0, g.columns);
-            for (int i = c0; i <= std::min(g.columns - 1, c0 + *rc::gen::inRange(0, 4)); ++i) g.set(i, ceiling, true);
+            for (int i = c0; i <= std::min(g.columns - 1, c0 + *rc::gen::inRange(0, 4)); ++i)
+                g.set(i, ceiling, true);
         }
         const double h = *rc::gen::inRange(4, 13) * tile / 8.0;
         const double w = *rc::gen::inRange(2, 17) * tile / 8.0;
         double y = oy + floorRow * tile - h;  // standing on the floor
-        if (roll(4) == 0)  // already inside the platform, its bottom below the top
+        if (roll(4) == 0)                     // already inside the platform, its bottom below the top
             y = oy + platformRow * tile - h + *rc::gen::inRange(1, 9) * tile / 8.0;
         const double x = ox + *rc::gen::inRange(from * 8 - 8, (to + 1) * 8) * tile / 8.0;
         const Box<T> box{{static_cast<T>(x), static_cast<T>(y)}, {static_cast<T>(w), static_cast<T>(h)}};
@@ -235,8 +240,7 @@ rc::Gen<GeneratedScene<T>> genPlatformWalkScene() {
         const int row = 3;
         const int from = *rc::gen::inRange(0, g.columns / 2);
         const int to = *rc::gen::inRange(g.columns / 2, g.columns);
-        for (int i = from; i <= to; ++i)
-            g.put(i, row, roll(6) == 0 ? kSolidCell : kOneWayCell);
+        for (int i = from; i <= to; ++i) g.put(i, row, roll(6) == 0 ? kSolidCell : kOneWayCell);
         for (int i = 0; i < g.columns; ++i) g.set(i, g.rows - 1, true);
         if (roll(3) == 0) g.set(*rc::gen::inRange(from, to + 1), row - 1, true);  // a block
         const double top = oy + row * tile;
@@ -247,8 +251,8 @@ rc::Gen<GeneratedScene<T>> genPlatformWalkScene() {
                          {w, h}};
         const T vx = static_cast<T>(*rc::gen::inRange(-32, 33) * tile / 16.0);
         const T gravity = static_cast<T>(
-            *rc::gen::weightedOneOf<int>({{4, rc::gen::inRange(1, 33)}, {1, rc::gen::inRange(33, 513)}}) * tile /
-            32.0);
+            *rc::gen::weightedOneOf<int>({{4, rc::gen::inRange(1, 33)}, {1, rc::gen::inRange(33, 513)}}) *
+            tile / 32.0);
         const int frames = *rc::gen::inRange(2, 41);
         std::vector<Vec2<T>> moves(static_cast<std::size_t>(frames), Vec2<T>{vx, gravity});
         clearUnder(g, ox, oy, tile, box, true);

@@ -11,10 +11,10 @@
 #include <vector>
 
 // Exact counterparts of the public value types: the contract's geometry with rational
-// coordinates. Conventions are those of CONTRACT.md: x grows right, y grows down, a box is the
-// closed rectangle [pos, pos + size], tile (i, j) is [origin + (i, j) * tileSize, origin +
-// (i + 1, j + 1) * tileSize], cells outside the map are empty. A cell is empty, solid or one-way
-// (CellKind, tile_map.h).
+// coordinates. Conventions are those of docs/contract.md: x grows right, y grows down, a box is
+// the closed rectangle [pos, pos + size], tile (i, j) is [origin + (i, j) * tileSize,
+// origin + (i + 1, j + 1) * tileSize], cells outside the map are empty. A cell is empty, solid
+// or one-way (CellKind, tile_map.h).
 
 namespace tilesweep::oracle {
 

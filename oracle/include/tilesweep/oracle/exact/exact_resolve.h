@@ -11,10 +11,11 @@
 #include <cstdint>
 #include <vector>
 
-// The exact reference: one frame through a map, and whole scenes, exactly as CONTRACT.md defines
-// them ("One frame through a map"), in rational arithmetic. It tests every solid and one-way tile
-// of the map (no broadphase), so it cannot skip a tile a broadphase would wrongly leave out. A
-// one-way tile blocks by its own rule (sweepOneWayTileExact) and then joins B like a solid one.
+// The exact reference: one frame through a map, and whole scenes, exactly as docs/contract.md
+// defines them ("One frame through a map"), in rational arithmetic. It tests every solid and
+// one-way tile of the map (no broadphase), so it cannot skip a tile a broadphase would wrongly
+// leave out. A one-way tile blocks by its own rule (sweepOneWayTileExact) and then joins B like a
+// solid one.
 //
 //     p = start, r = d
 //     at most 2 steps:

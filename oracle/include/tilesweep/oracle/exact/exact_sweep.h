@@ -7,9 +7,9 @@
 
 #include <cstdint>
 
-// One box against one tile, in exact arithmetic, straight from CONTRACT.md ("One box against one
-// tile"). The box moves by d: at time t it is at pos + t*d. On each axis the times at which the
-// projections overlap (strictly: touching is not overlapping) form
+// One box against one tile, in exact arithmetic, straight from docs/contract.md ("One box against
+// one tile"). The box moves by d: at time t it is at pos + t*d. On each axis the times at which
+// the projections overlap (strictly: touching is not overlapping) form
 //
 //   - the open interval (entry, exit) when d_a != 0,
 //   - every time, (-inf, +inf), when d_a == 0 and the projections overlap,
