@@ -21,9 +21,11 @@ namespace tilesweep {
 
 namespace {
 
-/// The most rounds the caller of a batch spins on the workers' last chunks before it sleeps:
-/// about a chunk's time (kBatchChunk movers, tens of microseconds) at a pause of 20 to 140
-/// cycles a round.
+/// Tuning knob: the most rounds the caller of a batch spins on the workers' last chunks before it
+/// sleeps until they finish. Unit: spin rounds, one CPU pause hint each (20 to 140 cycles on
+/// x86). Usual value: 4096, about the time of a chunk (kBatchChunk movers), which is as long as
+/// a worker that joined can still be working. Changes cost, never results: the caller waits for
+/// every worker either way, spinning or asleep.
 constexpr int kFinishSpins = 4096;
 
 /// One round of a spin-wait: the CPU's pause hint where there is one.
@@ -159,9 +161,9 @@ void BatchPool::run(std::size_t count, std::size_t chunk, void (*work)(void*, st
     s.wake.notify_all();
     s.runRanges();
     s.open.store(false);
-    // The workers that joined are each within one chunk of the end (a chunk is about 10 us of
-    // work): wait for them spinning first, and sleep only if they take longer. A sleep and its
-    // wake-up cost tens of microseconds on a VM, a tenth of a 16,384-mover batch on 2 threads.
+    // The workers that joined are each within one chunk of the end: wait for them spinning
+    // first, and sleep only if they take longer. A sleep and its wake-up cost about as much as a
+    // chunk's work, a large share of a batch that only takes a few chunks per thread.
     for (int spin = 0; spin < kFinishSpins && s.active.load() != 0; ++spin) pauseSpin();
     if (s.active.load() == 0) return;
     std::unique_lock<std::mutex> lock(s.mutex);

@@ -50,6 +50,8 @@ struct Remainder {
         magnitude += std::fabs(t);
     }
 };
+static_assert(std::extent<decltype(Remainder::terms)>::value <= kSumFilterMostTerms,
+              "signAgainst's filter is sound for every sum a Remainder holds");
 
 /// The sign of the exact sum of r's terms and `extra`, by a filter with a certified bound, and
 /// by the exact expansion (signOfSum) inside the bound, which sets `refined`.
@@ -57,10 +59,10 @@ struct Remainder {
 /// Recursive summation of n terms errs by at most gamma(n-1) * sum|t|, gamma(k) = k*u / (1 - k*u)
 /// (Higham, "Accuracy and Stability of Numerical Algorithms", 4.2); `extra` is the n-th term,
 /// added last. The bound, computed as fl((n+1)u * M) with M = fl(sum|t|) >= (1-u)^(n-1) sum|t|,
-/// is at least (n+1)u(1-u)^n sum|t|, which exceeds gamma(n-1) sum|t| for every n <= 16. So a
-/// computed sum beyond the bound has the exact sum's sign. Additions that underflow are exact, and
-/// the terms stay far above the subnormals (kPositionFloor), so the bound's product does not
-/// underflow either.
+/// is at least (n+1)u(1-u)^n sum|t|, which exceeds gamma(n-1) sum|t| for every n up to
+/// kSumFilterMostTerms (proof_constants.h), more than a Remainder holds. So a computed sum beyond
+/// the bound has the exact sum's sign. Additions that underflow are exact, and the terms stay far
+/// above the subnormals (kPositionFloor), so the bound's product does not underflow either.
 [[nodiscard]] inline int signAgainst(Remainder& r, double extra, bool& refined) noexcept {
     const int n = r.count + 1;
     const double sum = r.sum + extra;
@@ -122,14 +124,14 @@ template <class T>
 /// (or the nearest float is zero), and the exact test decides. q is num / den rounded to the
 /// nearest double (roundPositionAtTime). Three roundings, each within u of its result, and
 /// |fl(q * d) - P| <= (2u + u^2)|P| for P = num*d/den: |v - V| <= u|v|/(1 - u) + 2.01u|P~| <
-/// 3u(|v| + |P~|), P~ the computed product; the bound, computed as fl(4u * fl(|v| + |P~|)),
-/// exceeds that. The midpoints are exact doubles (25 bits).
+/// 3u(|v| + |P~|), P~ the computed product; the bound, computed as fl(4u * fl(|v| + |P~|))
+/// (kPositionEstimateErrorUlps), exceeds that. The midpoints are exact doubles (25 bits).
 [[nodiscard]] inline bool nearestFloatOfEstimate(double x0, double d, double q, float& out) noexcept {
     const double product = q * d;
     const double v = x0 + product;
     const auto c = static_cast<float>(v);
     if (c == 0) return false;
-    const double bound = 4 * kUnitRoundoff * (std::fabs(v) + std::fabs(product));
+    const double bound = kPositionEstimateErrorUlps * kUnitRoundoff * (std::fabs(v) + std::fabs(product));
     const auto cd = static_cast<double>(c);
     const double midUp = 0.5 * (cd + static_cast<double>(stepFloat(c, true)));
     const double midDown = 0.5 * (cd + static_cast<double>(stepFloat(c, false)));
@@ -154,7 +156,7 @@ template <class T>
     const double p = q * d;
     const ExactPair s = twoSum(x0, p);
     if (!(std::fabs(s.hi) >= kPositionFloor)) return false;
-    const double bound = 4 * kUnitRoundoff * std::fabs(p);
+    const double bound = kPositionEstimateErrorUlps * kUnitRoundoff * std::fabs(p);
     const double spacing = ulpAbove(s.hi);
     std::uint64_t bits = 0;
     std::memcpy(&bits, &s.hi, sizeof bits);

@@ -35,11 +35,10 @@ namespace tilesweep::detail {
 /// The rounding error of p = fl(a*b): a*b - p, exactly (Dekker's TwoProduct with Veltkamp's
 /// split; no FMA).
 [[nodiscard]] inline double productError(double a, double b, double p) noexcept {
-    constexpr double kSplitter = 134217729.0;  // 2^27 + 1: splits 53 bits into 26 + 26
-    const double ca = kSplitter * a;
+    const double ca = kVeltkampSplitter * a;
     const double aHigh = ca - (ca - a);
     const double aLow = a - aHigh;
-    const double cb = kSplitter * b;
+    const double cb = kVeltkampSplitter * b;
     const double bHigh = cb - (cb - b);
     const double bLow = b - bHigh;
     return ((aHigh * bHigh - p) + aHigh * bLow + aLow * bHigh) + aLow * bLow;

@@ -59,6 +59,7 @@
 #include "cell_range.h"
 #include "fault_injection.h"
 #include "final_rounding.h"
+#include "proof_constants.h"
 
 #include "tilesweep/resolve.h"
 
@@ -534,25 +535,12 @@ private:
         return m_.compareTimes(entry, from) < 0 ? hint : k0;
     }
 
-    /// Swept bounds of up to kNearArea cells are always listed (collectNear). Larger ones, up to
-    /// kSparseArea cells and at most kSparseAcross cells across (a move along one axis more than
-    /// the other: the bounds then hold little more than the path), are listed when they hold at
-    /// most kSparseSolids solid cells: on a sparse map (floors and walls) testing those few tiles
-    /// costs less than walking the path cell by cell, and on a dense one the scan gives up after
-    /// the row that passes the limit. (scripts/instructions.sh, FloorAndWalls<double>/16: 2036
-    /// instructions a frame by the walk, 1719 with any bounds of up to 48 cells, 1757 with these;
-    /// Random30<double>/16, where the scans give up: 2007, 2135 and 2072.)
-    static constexpr std::int64_t kNearArea = 12;
-    static constexpr std::int64_t kSparseArea = 48;
-    static constexpr std::int64_t kSparseAcross = 4;
-    static constexpr std::int64_t kSparseSolids = 4;
-
     /// Lists the solid cells of the frame's swept bounds, row by row, when those bounds hold at
     /// most kNearArea cells, or are sparse (at most kSparseArea cells, kSparseAcross across, and
-    /// kSparseSolids solid), and at most `contactCapacity` of them are solid; false otherwise
-    /// (the walk then runs). Every tile that can block either step, or that the box overlaps at
-    /// the start, lies in them: on each axis the box covers [min(low, low + disp), max(high,
-    /// high + disp)] over the frame, and step 2 stays inside that (its held axis is at a touch
+    /// kSparseSolids solid: the tuning knobs of proof_constants.h), and at most `contactCapacity`
+    /// of them are solid; false otherwise (the walk then runs). Every tile that can block either step, or
+    /// that the box overlaps at the start, lies in them: on each axis the box covers [min(low, low + disp),
+    /// max(high, high + disp)] over the frame, and step 2 stays inside that (its held axis is at a touch
     /// position between the start and the end, its free axis on the rest of its own motion).
     /// The arithmetic's sweptCells is a superset of that; extra cells are tested exactly and
     /// rejected. With every tile tested, the earliest hits are the same set as the walk's, and

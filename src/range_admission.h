@@ -32,6 +32,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 
 namespace tilesweep::detail {
 
@@ -183,7 +184,8 @@ inline void setWindowLinesClear(MapRange& r, int windowExponent, int p) noexcept
     for (int a = 0; a < 2; ++a)
         r.windowMagnitude[a] =
             windowMagnitudeOf(static_cast<double>(r.commonLimit), static_cast<double>(origin[a]));
-    setWindowLinesClear(r, std::min(highField + 1, 255) - 127, 24);  // commonLimit = 2^W
+    setWindowLinesClear(r, std::min(highField + 1, 255) - 127,
+                        std::numeric_limits<float>::digits);  // commonLimit = 2^W
     return r;
 }
 
@@ -292,20 +294,6 @@ inline void setWindowLinesClear(MapRange& r, int windowExponent, int p) noexcept
     return magnitude == 0 ? -100000 : static_cast<int>(magnitude >> 52) - 1023;
 }
 
-/// The short form of admitDoubleFrame, for the frames of a game: every nonzero box input in
-/// [2^-20, 2^30). Then the full test's conditions on the box hold: the inputs are within
-/// [2^-250, 2^251); boxTop (the field of max(|x|, |w|) plus 2) is at most kCommonBoxTop = 31; and
-/// each nonzero input's lowest set bit is at or above its ulp, 2^(field - 52) >= 2^-72
-/// (kCommonLowestBit), so the span test max(top, boxTop) <= min(lowest bits, map's lowest) + 104
-/// holds when max(top, 31) <= min(-72, map's lowest) + 104 on each axis: the map's half of that
-/// is MapRange::common, computed once per map. A frame the short form does not admit takes the
-/// full test, which decides.
-inline constexpr int kCommonBoxTop = 31;
-inline constexpr int kCommonLowestBit = -72;
-/// The window: [2^-20, 2^30) (input_window.h).
-inline constexpr double kCommonLargest = 0x1p30;
-inline constexpr double kCommonLeast = 0x1p-20;
-
 /// The double map's range (see admitDoubleFrame): per axis, top[a] with |origin + k*tile| <
 /// 2^top[a] for |k| <= cells + 2, and lowest[a] the least set bit of origin and tile; admitted
 /// when the map is valid, both are in range, every such tile edge is a multiple of 2^lowest[a]
@@ -337,7 +325,7 @@ inline constexpr double kCommonLeast = 0x1p-20;
     }
     r.admitted = admitted;
     r.common = admitted && common;
-    setWindowLinesClear(r, 30, 53);  // kCommonLargest = 2^30
+    setWindowLinesClear(r, kCommonLargestExponent, kDoubleDigits);
     return r;
 }
 
@@ -385,8 +373,10 @@ inline constexpr double kCommonLeast = 0x1p-20;
     return map.admitted & inRange & positiveSizes & spanX & spanY;
 }
 
-/// The short form of admitDoubleFrameFully (above): the box's inputs in the window [2^-20, 2^30)
-/// (input_window.h) on a map whose half of the test holds for every such frame (MapRange::common).
+/// The short form of admitDoubleFrameFully (above), for the frames of a game: the box's inputs in
+/// the window [2^-20, 2^30) (kCommonLeast and kCommonLargest, proof_constants.h, which says why it
+/// suffices; input_window.h) on a map whose half of the test holds for every such frame
+/// (MapRange::common). A frame outside the window takes the full test, which decides.
 [[nodiscard, gnu::always_inline]] inline bool admitDoubleFrameInWindow(FrameInput<double> in,
                                                                        const MapRange& map) noexcept {
     return map.common & boxInputsInWindow(in.box, in.displacement, kCommonLeast, kCommonLargest);
