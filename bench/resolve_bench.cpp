@@ -30,7 +30,7 @@
 #include "tilesweep/oracle/seed/seed_resolve.h"
 #include "tilesweep/oracle/substep/substep_float.h"
 #include "tilesweep/scene/scene.h"
-#include "tilesweep/sweep.h"
+#include "tilesweep/tilesweep.hpp"
 
 namespace {
 

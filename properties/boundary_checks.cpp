@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "boundary_checks.h"
 
+#include "c_types.h"
+
 #include "tilesweep/mover.h"
 #include "tilesweep/resolve.h"
 #include "tilesweep/tilesweep.h"
@@ -27,16 +29,11 @@ bool sameContact(const Contact<T>& a, const Contact<T>& b) {
     return a.tile == b.tile && a.normal == b.normal && sameBits(a.time, b.time);
 }
 
-// The C API by scalar type.
+// The C API by scalar type: its types (c_types.h) and the calls the claims make.
 template <class T>
 struct CApi;
 template <>
-struct CApi<float> {
-    using Map = ts_map_f;
-    using Desc = ts_map_desc_f;
-    using Mover = ts_mover_f;
-    using Result = ts_result_f;
-    using ContactC = ts_contact_f;
+struct CApi<float> : detail::CTypes<float> {
     static ts_error create(const Desc* d, Map** m) { return ts_map_create_f(d, m); }
     static ts_error createOneWay(const Desc* d, const std::uint8_t* oneWay, Map** m) {
         return ts_map_create_one_way_f(d, oneWay, m);
@@ -50,12 +47,7 @@ struct CApi<float> {
     }
 };
 template <>
-struct CApi<double> {
-    using Map = ts_map_d;
-    using Desc = ts_map_desc_d;
-    using Mover = ts_mover_d;
-    using Result = ts_result_d;
-    using ContactC = ts_contact_d;
+struct CApi<double> : detail::CTypes<double> {
     static ts_error create(const Desc* d, Map** m) { return ts_map_create_d(d, m); }
     static ts_error createOneWay(const Desc* d, const std::uint8_t* oneWay, Map** m) {
         return ts_map_create_one_way_d(d, oneWay, m);

@@ -7,7 +7,9 @@
 #include "scene_runner.h"
 
 #include "tilesweep/oracle/exact/exact_resolve.h"
+#include "tilesweep/scene/file_write.h"
 #include "tilesweep/scene/render.h"
+#include "tilesweep/scene/scalar_text.h"
 
 #include <nlohmann/json.hpp>
 #include <rapidcheck.h>
@@ -17,7 +19,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -30,21 +31,11 @@ std::uint64_t fnv1a(const std::string& text) {
     return h;
 }
 
-/// Writes `text` to `path` whole or not at all (a temporary file, then a rename).
+/// Writes `text` to `path` whole or not at all (writeFileWhole), its directory made first.
 void writeAtomically(const std::filesystem::path& path, const std::string& text) {
     std::filesystem::create_directories(path.parent_path());
-    const std::filesystem::path temporary = path.string() + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        out << text;
-        if (!out) throw std::runtime_error("cannot write " + temporary.string());
-    }
-    std::filesystem::rename(temporary, path);
-}
-
-template <class T>
-const char* scalarName() {
-    return std::is_same<T, float>::value ? "float" : "double";
+    std::string error;
+    if (!writeFileWhole(path.string(), text, error)) throw std::runtime_error(error);
 }
 
 /// The seed of a run's coverage round `round` (> 0): far from the seeds `tilesweep check` gives
@@ -214,9 +205,9 @@ PropertyOutcome runClaimOnce(const std::string& propertyName, const Claim<T>& cl
             } else {
                 pictured = runScene(lastFailure.scene);
             }
-            writeAtomically(
-                file, corpusLine(sceneLine, propertyName, options.seed, scalarName<T>(), lastMessage, extra) +
-                          "\n");
+            writeAtomically(file, corpusLine(sceneLine, propertyName, options.seed, detail::scalarName<T>(),
+                                             lastMessage, extra) +
+                                      "\n");
             outcome.corpusFile = file.string();
             std::filesystem::path picture = file;
             picture.replace_extension(".svg");
@@ -276,8 +267,8 @@ template <class T>
 void addClaim(std::vector<Property>& out, const std::string& propertyName, const std::string& claimName,
               Family family, std::vector<CoverageFloor> floors) {
     const Claim<T>* claim = findClaim<T>(claimName);
-    const std::string name = propertyName + "_" + scalarName<T>();
-    out.push_back({name, claimName, claim->scope, scalarName<T>(), floors,
+    const std::string name = propertyName + "_" + detail::scalarName<T>();
+    out.push_back({name, claimName, claim->scope, detail::scalarName<T>(), floors,
                    [name, claim, family, floors](const RunOptions& o) {
                        return runClaim<T>(name, *claim, family, floors, o);
                    }});

@@ -3,6 +3,7 @@
 // throws but the pool's thread start, which is caught; memory comes from the map's allocator
 // (malloc by default), never from operator new, and no C++ object is made in a caller's buffer.
 #include "batch_run.h"
+#include "c_types.h"
 
 #include "tilesweep/batch.h"
 #include "tilesweep/mover.h"
@@ -62,25 +63,7 @@ using tilesweep::MapError;
 using tilesweep::MoveStatus;
 
 template <class T>
-struct Types;
-template <>
-struct Types<float> {
-    using Map = ts_map_f;
-    using Desc = ts_map_desc_f;
-    using Vec = ts_vec2_f;
-    using Mover = ts_mover_f;
-    using Result = ts_result_f;
-    using ContactC = ts_contact_f;
-};
-template <>
-struct Types<double> {
-    using Map = ts_map_d;
-    using Desc = ts_map_desc_d;
-    using Vec = ts_vec2_d;
-    using Mover = ts_mover_d;
-    using Result = ts_result_d;
-    using ContactC = ts_contact_d;
-};
+using Types = tilesweep::detail::CTypes<T>;
 
 ts_error errorOf(MapError e) noexcept {
     switch (e) {

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The names before the one naming scheme (<Op>Input, <Op>Result, <Op>Status) still compile for
-// one release, as the same types, so that a game can upgrade and then rename. Built with
-// -Wno-deprecated-declarations: everywhere else a use of them warns.
-#include "tilesweep/box_sweep.h"
-#include "tilesweep/resolve.h"
+// one release, as the same types, and so does the umbrella header's old name, tilesweep/sweep.h
+// (now tilesweep/tilesweep.hpp), so that a game can upgrade and then rename. Built with -w:
+// everywhere else a use of them warns.
+#include "tilesweep/sweep.h"  // the only include: it still brings every header of the core library
 
 #include <gtest/gtest.h>
 
@@ -27,6 +27,16 @@ TEST(DeprecatedNames, codeWrittenWithTheOldNamesStillResolves) {
     const tilesweep::BoxSweepOutput<float> s =
         tilesweep::sweepBox<float>({{{2, 2}, {10, 10}}, {0, 8}, {0, 16}, {16, 32}});
     EXPECT_EQ(s.status, tilesweep::BoxSweepState::Blocks);
+}
+
+TEST(DeprecatedNames, theOldUmbrellaHeaderStillBringsTheGameLoop) {
+    const std::uint8_t cells[] = {0, 0, 1, 1};
+    const tilesweep::TileMapView<float> map{{0, 0}, {16, 16}, 2, 2, cells};
+    const tilesweep::PreparedMap<float> prepared = tilesweep::prepareMap(map);  // mover.h
+    EXPECT_TRUE(prepared.isValid());
+    const tilesweep::MoveResult<float> r = tilesweep::moveAndSlide(prepared, {{{2, 2}, {10, 10}}, {0, 8}});
+    EXPECT_TRUE(r.onGround);
+    EXPECT_EQ(r.position.y, 6.0f);
 }
 
 }  // namespace

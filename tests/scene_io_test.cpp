@@ -3,6 +3,7 @@
 // straight to the scalar type), writing them back bit for bit, the `tilesweep resolve` output
 // format, and runScene's chaining of frames. Expected values are worked out by hand from
 // docs/contract.md and IEEE 754 rounding, not copied from program output.
+#include "tilesweep/scene/file_write.h"
 #include "tilesweep/scene/scene.h"
 
 #include <gtest/gtest.h>
@@ -15,6 +16,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <ios>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -813,6 +816,29 @@ TEST(ShippedExamples, everyLineReadsUnlessItsNameSaysBad) {
         }
     }
     EXPECT_GE(lines, 5);
+}
+
+// writeFileWhole: a new file, a replaced one, and a failure that leaves no temporary file.
+TEST(FileWrite, writesWholeReplacesAndLeavesNothingBehindOnFailure) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "tilesweep_file_write_test";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const std::string path = (dir / "out.txt").string();
+    const auto read = [](const std::string& p) {
+        std::ifstream in(p, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    };
+    std::string error;
+    ASSERT_TRUE(tilesweep::writeFileWhole(path, "first\n", error)) << error;
+    EXPECT_EQ(read(path), "first\n");
+    ASSERT_TRUE(tilesweep::writeFileWhole(path, "second", error)) << error;
+    EXPECT_EQ(read(path), "second");
+    EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
+    const std::string missing = (dir / "no-such-directory" / "out.txt").string();
+    EXPECT_FALSE(tilesweep::writeFileWhole(missing, "text", error));
+    EXPECT_NE(error.find("no-such-directory"), std::string::npos) << error;
+    EXPECT_FALSE(std::filesystem::exists(missing + ".tmp"));
+    std::filesystem::remove_all(dir);
 }
 
 }  // namespace

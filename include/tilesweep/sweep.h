@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-// Umbrella header of the tilesweep core library (target tilesweep::tilesweep): includes its
-// headers, declares nothing. The batch (batch.h, tilesweep::batch) and the C API (tilesweep.h)
-// are included on their own.
+// Deprecated: the C++ umbrella header is tilesweep/tilesweep.hpp, and this one only includes it.
+// It is kept for one release, as the names before the one naming scheme are (resolve.h), and
+// warns where it is included.
 
-#include "tilesweep/box_sweep.h"
-#include "tilesweep/frame_stats.h"
-#include "tilesweep/math.h"
-#include "tilesweep/mover.h"
-#include "tilesweep/resolve.h"
-#include "tilesweep/tile_map.h"
+#if defined(_MSC_VER)
+#pragma message("tilesweep/sweep.h is deprecated: include tilesweep/tilesweep.hpp")
+#elif defined(__GNUC__)
+#pragma GCC warning "tilesweep/sweep.h is deprecated: include tilesweep/tilesweep.hpp"
+#endif
+
+#include "tilesweep/tilesweep.hpp"

@@ -2,7 +2,7 @@
 // exit status 0 when it lands on it both ways.
 #include <cstdio>
 #include <tilesweep/batch.h>
-#include <tilesweep/sweep.h>
+#include <tilesweep/tilesweep.hpp>
 
 int main() {
     const std::uint8_t cells[] = {0, 0, 0, 0, 1, 1};  // 2 columns, 3 rows; the bottom row solid

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "tilesweep/scene/scene.h"
-#include "tilesweep/sweep.h"
+#include "tilesweep/tilesweep.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,8 @@
 #include <string>
 #include <string_view>
 
-// Numbers as scene files write them, internal to tilesweep_scene.
+// Numbers as scene files write them, used inside tilesweep_scene and by the tools built on it
+// (the property suite reads result lines and names scalar types with them).
 //
 // Reading: a JSON number lexeme, or a C99 hexadecimal float as printf("%a") writes it, is
 // rounded once, straight to T, to nearest (ties to even). Going through double first would

@@ -5,8 +5,10 @@
 // Boost.Multiprecision). Every value the contract talks about (an input float, a sum, a product,
 // a quotient) is one of these, with no rounding anywhere.
 //
-// Boost is included here, and only here, between pragmas: the project builds with -Wconversion,
-// -Wshadow and friends as errors, and Boost's headers are not written for that set.
+// Boost is included between pragmas: the project builds with -Wconversion, -Wshadow and friends
+// as errors, and Boost's headers are not written for that set. This is the oracles' one Boost
+// include. The exact safety checks include Boost's cpp_int under the same pragmas
+// (checks/grid_line.cpp), in a library that must not depend on the oracles or on GMP.
 
 #if defined(__GNUC__)
 #pragma GCC diagnostic push
