@@ -13,7 +13,8 @@
 //                              y (the scene is resolved transposed and transposed back; a scene
 //                              with one-way tiles, whose rule is not symmetric, as the contract):
 //                              matchesExactReferenceBitForBit
-//   flipped-normal             the first contact's normal points along the motion [wellFormed]
+//   flipped-normal             the first contact on a solid tile has its normal along the motion
+//                              [wellFormed]
 //   time-past-one              the first contact's time is the value just above 1 [wellFormed]
 //   contact-on-empty-cell      the first contact names the empty cell across the face it hit
 //                              [wellFormed]
@@ -26,8 +27,8 @@
 //   short-of-bottom-face       likewise, a bottom face hit moving up (a ceiling)
 //   past-end-positive          one ulp past the exact end on a free axis moving toward +infinity
 //                              [staysWithinExactMotion]
-//   past-end-negative          likewise toward -infinity, where the exception does not ask for it
-//                              [staysWithinExactMotion]
+//   past-end-negative          likewise toward -infinity, where the exception does not ask for the
+//                              value below the exact end [staysWithinExactMotion]
 //   behind-start               one ulp behind the start, against the motion, on a free axis moving
 //                              toward -infinity [staysWithinExactMotion]
 //   drifts-on-still-axis       one ulp off the start on an axis that does not move: zeroMoveChangesNothing
@@ -294,10 +295,12 @@ void mutateFrame(Change change, const ExactTileMap& map, const Box<T>& start, Ve
             if (exact.position.y == exact.start.y) frame.position.y = start.pos.y;
             break;
         case Change::FlippedNormal:
-            if (!frame.contacts.empty()) {
-                Normal& n = frame.contacts.front().normal;
-                n = {static_cast<std::int8_t>(-n.x), static_cast<std::int8_t>(-n.y)};
-            }
+            // On a solid tile: a one-way tile's flipped normal would also leave its only face.
+            for (Contact<T>& c : frame.contacts)
+                if (map.kind(c.tile.i, c.tile.j) == CellKind::Solid) {
+                    c.normal = {static_cast<std::int8_t>(-c.normal.x), static_cast<std::int8_t>(-c.normal.y)};
+                    break;
+                }
             break;
         case Change::TimePastOne:
             if (!frame.contacts.empty()) frame.contacts.front().time = std::nextafter(T(1), T(2));
@@ -342,11 +345,16 @@ void mutateFrame(Change change, const ExactTileMap& map, const Box<T>& start, Ve
         }
         case Change::PastEndPositive:
         case Change::PastEndNegative: {
+            // Only where the contract rounded toward the start: one ulp past that is the value
+            // just past the exact end, where the exception (when it applies) is already.
             const int sign = change == Change::PastEndPositive ? 1 : -1;
-            for (int axis = 0; axis < 2; ++axis)
+            for (int axis = 0; axis < 2; ++axis) {
+                const Rational& e = axis == 0 ? exact.position.x : exact.position.y;
                 if (along(move, axis) * T(sign) > 0 && !hasContactOn(frame, axis) &&
+                    oracle::roundToward<T>(e, startOf(axis)) == along(frame.position, axis) &&
                     stepOneUlp(map, start, frame, axis, sign > 0 ? inf : -inf))
                     break;
+            }
             break;
         }
         case Change::BehindStart:
