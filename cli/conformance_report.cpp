@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "conformance_report.h"
 
+#include "tilesweep/scene/file_write.h"
+
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
@@ -150,13 +152,7 @@ void writeConformanceReport(const std::vector<ConformanceEntry>& entries, const 
             }
         }
     }
-    const std::string temporary = file + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        out << md.str();
-        if (!out) throw std::runtime_error("cannot write " + temporary);
-    }
-    std::filesystem::rename(temporary, file);
+    if (std::string error; !writeFileWhole(file, md.str(), error)) throw std::runtime_error(error);
 }
 
 }  // namespace tilesweep::cli

@@ -3,6 +3,7 @@
 // happens here. A subcommand is a pair of functions, add<Name>Command (its options) and
 // run<Name>Command (its work), and main only dispatches, so adding `check`, `render` or
 // `audit` touches neither `resolve` nor main's structure.
+#include "tilesweep/scene/file_write.h"
 #include "tilesweep/scene/render.h"
 
 #include <CLI/CLI.hpp>
@@ -260,32 +261,6 @@ std::string readSceneLine(const std::string& path, int index, std::string& error
     return {};
 }
 
-/// Writes `text` to `path` through `path`.tmp and a rename, so that a reader never sees half a
-/// file and a failed run leaves any previous file as it was.
-bool writeFileAtomically(const std::string& path, const std::string& text, std::string& error) {
-    const std::string temporary = path + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (out.is_open()) out.write(text.data(), static_cast<std::streamsize>(text.size()));
-        if (out.is_open()) out.close();
-        if (!out) {
-            error = "cannot write '" + temporary + "': " + std::strerror(errno);
-            std::error_code ignored;
-            std::filesystem::remove(temporary, ignored);
-            return false;
-        }
-    }
-    std::error_code renameError;
-    std::filesystem::rename(temporary, path, renameError);
-    if (renameError) {
-        error = "cannot rename '" + temporary + "' to '" + path + "': " + renameError.message();
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
-        return false;
-    }
-    return true;
-}
-
 /// The picture of one scene line, or an error message in `error`.
 template <class T>
 std::string renderLine(const std::string& line, std::string& error) {
@@ -308,7 +283,7 @@ int runRenderCommand(const RenderOptions& options) {
     std::string svg;
     if (error.empty())
         svg = options.scalar == "double" ? renderLine<double>(line, error) : renderLine<float>(line, error);
-    if (error.empty()) writeFileAtomically(options.output, svg, error);
+    if (error.empty()) (void)tilesweep::writeFileWhole(options.output, svg, error);
     if (!error.empty()) {
         std::cerr << "tilesweep render: " << error << '\n';
         return kExitRenderError;
