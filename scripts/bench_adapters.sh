@@ -3,7 +3,7 @@
 # every adapter whose runtime is here, one after the other, each for the same budget on all
 # cores, every round kept going and none shrinking (--keep-going --no-shrink: every case is
 # judged and every failure counted, so the figure is the engine's, not shrinking's).
-# Writes docs/bench/adapters.md (cases judged per second, passed and failed, with the machine's
+# Writes build/bench/adapters.md (--out docs/bench/adapters.md for the committed page; cases judged per second, passed and failed, with the machine's
 # load before and after each run) unless --out says otherwise. A benchmark, not a test: it
 # asserts nothing; read the figures against the targets in the README.
 #
@@ -16,7 +16,7 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 seconds=20
 cases=1000
-out=$root/docs/bench/adapters.md
+out=$root/build/bench/adapters.md
 while [ $# -gt 0 ]; do
     case $1 in
         --seconds) seconds=$2; shift 2 ;;
@@ -52,6 +52,9 @@ trap 'rm -rf "$scratch"' EXIT
 {
     echo "# Conformance throughput: the suite against each engine"
     echo
+    commit=$(git -C "$root" rev-parse --short HEAD)
+    dirty=$(git -C "$root" status --porcelain --untracked-files=no | grep -q . && echo " (with uncommitted changes)" || true)
+    echo "Made on $(date -u '+%Y-%m-%d %H:%M UTC') on commit $commit$dirty; regenerate it whole, never by hand:"
     echo "\`bash scripts/bench_adapters.sh --seconds $seconds --cases $cases\` on $(nproc) cores ($(uname -m),"
     echo "$(lscpu 2>/dev/null | sed -n 's/^Model name: *//p' | head -1)); each run is"
     echo "\`tilesweep check --resolver-cmd CMD --scalar S --cases $cases --seconds $seconds --keep-going --no-shrink\`,"
