@@ -27,8 +27,9 @@
 //   short-of-bottom-face       likewise, a bottom face hit moving up (a ceiling)
 //   past-end-positive          one ulp past the exact end on a free axis moving toward +infinity
 //                              [staysWithinExactMotion]
-//   past-end-negative          likewise toward -infinity, where the exception does not ask for the
-//                              value below the exact end [staysWithinExactMotion]
+//   past-end-negative          likewise toward -infinity, from an exact end that is not
+//                              representable: the value just below it, which only a grid line
+//                              would allow [staysWithinExactMotion]
 //   behind-start               one ulp behind the start, against the motion, on a free axis moving
 //                              toward -infinity [staysWithinExactMotion]
 //   drifts-on-still-axis       one ulp off the start on an axis that does not move: zeroMoveChangesNothing
@@ -47,8 +48,8 @@
 //                              neverFallsThroughAPlatformItStoodOn
 //   time-one-ulp-late          the first contact's time one ulp later (earlier at 1):
 //                              matchesExactReferenceBitForBit
-//   missing-contact            the first contact left out: matchesExactReferenceBitForBit,
-//                              substepOracleFindsNoMissedContact
+//   missing-contact            the first contact of a frame of one step left out:
+//                              matchesExactReferenceBitForBit, substepOracleFindsNoMissedContact
 //   extra-contact              the last contact listed twice: matchesExactReferenceBitForBit
 //   steps-reversed             the second step's contacts listed before the first's:
 //                              matchesExactReferenceBitForBit
@@ -346,12 +347,16 @@ void mutateFrame(Change change, const ExactTileMap& map, const Box<T>& start, Ve
         case Change::PastEndPositive:
         case Change::PastEndNegative: {
             // Only where the contract rounded toward the start: one ulp past that is the value
-            // just past the exact end, where the exception (when it applies) is already.
+            // just past the exact end, where the exception (when it applies) is already. Toward
+            // -infinity, only where the exact end is not representable: the value just below it
+            // is then what the exception would ask for, were there a grid line, and there is none.
             const int sign = change == Change::PastEndPositive ? 1 : -1;
             for (int axis = 0; axis < 2; ++axis) {
                 const Rational& e = axis == 0 ? exact.position.x : exact.position.y;
+                const T q = along(frame.position, axis);
                 if (along(move, axis) * T(sign) > 0 && !hasContactOn(frame, axis) &&
-                    oracle::roundToward<T>(e, startOf(axis)) == along(frame.position, axis) &&
+                    oracle::roundToward<T>(e, startOf(axis)) == q &&
+                    (sign > 0 || oracle::toRational(q) != e) &&
                     stepOneUlp(map, start, frame, axis, sign > 0 ? inf : -inf))
                     break;
             }
@@ -408,7 +413,12 @@ void mutateFrame(Change change, const ExactTileMap& map, const Box<T>& start, Ve
             }
             break;
         case Change::MissingContact:
-            if (!frame.contacts.empty()) frame.contacts.erase(frame.contacts.begin());
+            // Only in a frame of one step: what is left is hit at the same time, so the frame's
+            // first contact is not later, only one is missing (or all, after a single hit).
+            if (!frame.contacts.empty() &&
+                std::all_of(exact.contacts.begin(), exact.contacts.end(),
+                            [](const oracle::ExactContact& c) { return c.step == 1; }))
+                frame.contacts.erase(frame.contacts.begin());
             break;
         case Change::ExtraContact:
             if (!frame.contacts.empty()) frame.contacts.push_back(frame.contacts.back());
