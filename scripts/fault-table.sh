@@ -11,6 +11,7 @@
 #                                                  the mutants of scripts/mutants.txt instead (or
 #                                                  TILESWEEP_MUTANTS="NAME ..."): each applied to its
 #                                                  file for the build only, then restored; prints rows
+#                                                  (the JUDGE_ faults are scripts/judge-faults.sh's)
 #
 # Each fault gets its own build directory under build-faults/ (TILESWEEP_FAULT_DIR); ccache, when
 # installed, shares the unchanged objects between them. Run it under `nice` on a shared machine.
@@ -23,7 +24,8 @@ listed=$(sed -n 's|^//   \([A-Z][A-Z0-9_]*\) .*|\1|p' "$root/src/fault_injection
 faults=(${TILESWEEP_FAULTS:-$listed})
 mutants=${TILESWEEP_MUTANTS:-}
 if [ -n "$mutants" ]; then
-    all=$(sed -n 's/^\([A-Z][A-Z0-9_]*\) |||.*/\1/p' "$root/scripts/mutants.txt")
+    # The judge's faults (JUDGE_*) need the rule-breaker tests: scripts/judge-faults.sh runs them.
+    all=$(sed -n 's/^\([A-Z][A-Z0-9_]*\) |||.*/\1/p' "$root/scripts/mutants.txt" | grep -v '^JUDGE_')
     [ "$mutants" = 1 ] && mutants=$all
     faults=($mutants)
 fi
