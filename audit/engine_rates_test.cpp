@@ -74,17 +74,20 @@ private:
         std::vector<FrameResult<float>> frames = runScene(scene);
         const TileMapView<float> map = scene.map.view();
         Vec2<float> start = scene.box.pos;
+        const auto wide = [](float v) { return static_cast<double>(v); };
         for (std::size_t f = 0; f < frames.size(); ++f) {
             const float dx = scene.moves[f].x;
-            const double bottom = static_cast<double>(start.y) + scene.box.size.y;
-            for (std::int32_t j = 0; dx != 0 && j < map.rows; ++j)
+            const double bottom = wide(start.y) + wide(scene.box.size.y);
+            const double boxLeft = wide(start.x), boxRight = wide(start.x) + wide(scene.box.size.x);
+            const std::int8_t nx = dx > 0.0f ? std::int8_t{-1} : std::int8_t{1};
+            for (std::int32_t j = 0; dx != 0.0f && j < map.rows; ++j)
                 for (std::int32_t i = 0; i < map.columns; ++i) {
-                    const double left = map.origin.x + static_cast<double>(i) * map.tileSize.x;
-                    const double top = map.origin.y + static_cast<double>(j) * map.tileSize.y;
-                    if (!map.isOneWay(i, j) || bottom != top || start.x >= left + map.tileSize.x ||
-                        start.x + scene.box.size.x <= left)
+                    const double left = wide(map.origin.x) + static_cast<double>(i) * wide(map.tileSize.x);
+                    const double top = wide(map.origin.y) + static_cast<double>(j) * wide(map.tileSize.y);
+                    if (!map.isOneWay(i, j) || bottom != top || boxLeft >= left + wide(map.tileSize.x) ||
+                        boxRight <= left)
                         continue;
-                    frames[f].contacts.push_back({{i, j}, {dx > 0 ? -1 : 1, 0}, 0.5f, {}});
+                    frames[f].contacts.push_back({{i, j}, {nx, 0}, 0.5f, {}});
                 }
             start = frames[f].position;
         }
