@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The inexact game-style twin (tilesweep/baselines/twin_resolve.h) behind the resolver
 // protocol: scene lines in on standard input, one result line per scene out, flushed per line
-// (CONTRACT.md, "tilesweep resolve"). What `tilesweep check --resolver-cmd` and `tilesweep audit
+// (docs/contract.md, "tilesweep resolve"). What `tilesweep check --resolver-cmd` and `tilesweep audit
 // --resolver-cmd` hold to the contract as "the move-and-slide a competent game developer writes".
 //
 //     tilesweep_twin_adapter [--scalar float|double] < scenes.jsonl

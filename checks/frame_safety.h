@@ -16,7 +16,7 @@
 #include <vector>
 
 // The contract's safety rules for one resolved frame, checked exactly: the one checker that the
-// property suite, the fuzz targets, the soak and the audit all use (CONTRACT.md, "Positions").
+// property suite, the fuzz targets, the soak and the audit all use (docs/contract.md, "Positions").
 //
 //   - EndsInsideNewTile: the box at the rounded end overlaps (open) no solid tile it did not
 //     overlap at the start. No allowance: the amended rounding rule keeps the far edge short of

@@ -6,8 +6,8 @@
 //     near d / step (Phaser moves a body by velocity * step, so the displacement it applies is
 //     then the frame's own);
 //   - roundPosition(s, e, size, origin, tile): Phaser's double end coordinate e brought to a
-//     float32 by the contract's rule for positions (CONTRACT.md, "What a float (or double)
-//     resolver returns"): the float32 nearest e between the start s and e, except on an axis
+//     float32 by the contract's rule for positions (docs/contract.md, "Positions"):
+//     the float32 nearest e between the start s and e, except on an axis
 //     moving toward minus infinity when that would carry the far edge back over a grid line,
 //     where it is the largest float32 <= e. Phaser's position stands for the exact one.
 'use strict';
