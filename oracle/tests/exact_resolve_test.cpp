@@ -6,6 +6,7 @@
 
 #include "tilesweep/oracle/exact/exact_resolve.h"
 
+#include "exact_expectations.h"
 #include "scene_builder.h"
 
 #include "tilesweep/oracle/exact/exact_sweep.h"
@@ -24,36 +25,11 @@ namespace {
 using test::makeMap;
 using test::makeScene;
 
-Rational ratio(std::int64_t a, std::int64_t b) { return Rational(a) / Rational(b); }
-
-struct Expected {
-    Cell tile;
-    Normal normal;
-    Rational time;
-    std::int32_t step;
-};
-
-void expectContacts(const ExactFrame& frame, const std::vector<Expected>& expected) {
-    ASSERT_EQ(frame.contacts.size(), expected.size());
-    for (std::size_t k = 0; k < expected.size(); ++k) {
-        const ExactContact& c = frame.contacts[k];
-        EXPECT_EQ(c.tile, expected[k].tile) << "contact " << k;
-        EXPECT_EQ(c.normal, expected[k].normal) << "contact " << k;
-        EXPECT_EQ(c.time, expected[k].time) << "contact " << k << ": " << toString(c.time);
-        EXPECT_EQ(c.step, expected[k].step) << "contact " << k;
-    }
-}
-
-void expectPosition(const ExactFrame& frame, const Rational& x, const Rational& y) {
-    EXPECT_EQ(frame.position.x, x) << toString(frame.position.x);
-    EXPECT_EQ(frame.position.y, y) << toString(frame.position.y);
-}
-
-ExactFrame onlyFrame(const Scene<float>& scene) {
-    const std::vector<ExactFrame> frames = resolveSceneExact(scene);
-    EXPECT_EQ(frames.size(), 1U);
-    return frames.front();
-}
+using test::expectContacts;
+using test::Expected;
+using test::expectPosition;
+using test::onlyFrame;
+using test::ratio;
 
 // ---- one tile, directly ---------------------------------------------------------------------
 
