@@ -30,32 +30,7 @@ if [ -n "$mutants" ]; then
     faults=($mutants)
 fi
 # Applies (or with "restore", undoes) a mutant of scripts/mutants.txt in the working tree.
-mutate() {
-    python3 - "$root" "$1" "${2:-apply}" <<'PY'
-import os, sys
-root, name, mode = sys.argv[1:]
-for line in open(os.path.join(root, "scripts/mutants.txt")):
-    parts = line.rstrip("\n").split(" ||| ")
-    if line.startswith("#") or len(parts) != 4 or parts[0] != name:
-        continue
-    path = os.path.join(root, parts[1])
-    kept = path + ".before-mutant"  # the file as it was, put back whole on restore
-    if mode == "restore":
-        if os.path.exists(kept):
-            os.replace(kept, path)
-        print(parts[1])
-        break
-    text = open(path).read()
-    if text.count(parts[2]) != 1:
-        sys.exit(f"mutant {name}: the text occurs {text.count(parts[2])} times in {parts[1]}")
-    open(kept, "w").write(text)
-    open(path, "w").write(text.replace(parts[2], parts[3]))
-    print(parts[1])
-    break
-else:
-    sys.exit(f"no mutant {name}")
-PY
-}
+mutate() { python3 "$root/scripts/mutate.py" "$root" "$1" "${2:-apply}"; }
 out=${TILESWEEP_FAULT_DIR:-$root/build-faults}
 launcher=()
 if command -v ccache >/dev/null; then

@@ -44,32 +44,7 @@ cmake -S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DTILESWEEP_BUILD_FUZZ=OFF >/dev/null
 targets=(tilesweep_cli tilesweep_mutant_adapter frame_safety_test claims_test)
 # Applies (or with "restore", undoes) a mutant of the copy's scripts/mutants.txt in the copy.
-mutate() {
-    python3 - "$src" "$1" "${2:-apply}" <<'PY'
-import os, sys
-root, name, mode = sys.argv[1:]
-for line in open(os.path.join(root, "scripts/mutants.txt")):
-    parts = line.rstrip("\n").split(" ||| ")
-    if line.startswith("#") or len(parts) != 4 or parts[0] != name:
-        continue
-    path = os.path.join(root, parts[1])
-    kept = path + ".before-mutant"
-    if mode == "restore":
-        if os.path.exists(kept):
-            os.replace(kept, path)
-            os.utime(path)  # newer than the objects built with the fault: they are built again
-        break
-    text = open(path).read()
-    if text.count(parts[2]) != 1:
-        sys.exit(f"the text occurs {text.count(parts[2])} times in {parts[1]}")
-    os.replace(path, kept)
-    open(path, "w").write(text.replace(parts[2], parts[3]))
-    print(parts[1])
-    break
-else:
-    sys.exit(f"no mutant {name}")
-PY
-}
+mutate() { python3 "$root/scripts/mutate.py" "$src" "$1" "${2:-apply}"; }
 echo "| fault | where | failing tests (caught when any) | seconds |"
 echo "|---|---|---|---|"
 for fault in "${faults[@]}"; do
@@ -78,7 +53,7 @@ for fault in "${faults[@]}"; do
         echo "| $fault | - | not applied: $where | - |"
         continue
     fi
-    trap 'mutate "$fault" restore' EXIT
+    trap 'mutate "$fault" restore >/dev/null' EXIT
     built=0
     cmake --build "$build" --target "${targets[@]}" >"$build/judge-fault.log" 2>&1 || built=$?
     if [ "$built" -eq 0 ]; then
@@ -89,7 +64,7 @@ for fault in "${faults[@]}"; do
     else
         echo "| $fault | $where | does not build | - |"
     fi
-    mutate "$fault" restore
+    mutate "$fault" restore >/dev/null
     trap - EXIT
 done
 # The unmutated sources again, so that the next run starts from a clean build.
