@@ -33,10 +33,8 @@
 //     node adapter.js IN OUT                             (file mode: reads IN, writes OUT)
 'use strict';
 
-const fs = require('fs');
-const readline = require('readline');
 const Matter = require('matter-js');
-const {SceneError, parseScene, formatFrames, formatDouble, formatError, overlappedTiles} =
+const {SceneError, serve, parseScene, formatFrames, formatDouble, formatError, overlappedTiles} =
     require('../rapier/scene_text');
 
 const {Engine, Bodies, Body, Composite, Events} = Matter;
@@ -130,28 +128,13 @@ function answer(line) {
     }
 }
 
-const isBlank = (line) => /^\s*$/.test(line);
-
 async function main() {
     const paths = process.argv.slice(2);
-    if (paths.length === 2) {
-        // File mode: every answer is written as soon as it is known, so a crash mid-batch
-        // still leaves the answers so far.
-        const out = fs.openSync(paths[1], 'w');
-        for (const line of fs.readFileSync(paths[0], 'utf8').split('\n'))
-            if (!isBlank(line)) fs.writeSync(out, answer(line) + '\n');
-        fs.closeSync(out);
-        return;
-    }
-    if (paths.length !== 0) {
+    if (paths.length !== 0 && paths.length !== 2) {
         process.stderr.write('usage: node adapter.js [IN OUT]   (no IN OUT: scenes on stdin, answers on stdout)\n');
         process.exit(2);
     }
-    // Pipe mode: answer each line as it comes, never waiting for the end of the input.
-    process.stdout.on('error', (e) => process.exit(e.code === 'EPIPE' ? 0 : 1));  // reader gone
-    const input = readline.createInterface({input: process.stdin, crlfDelay: Infinity});
-    for await (const line of input)
-        if (!isBlank(line)) process.stdout.write(answer(line) + '\n');
+    await serve(paths, answer);
 }
 
 main().catch((e) => {

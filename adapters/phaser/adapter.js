@@ -31,11 +31,9 @@
 //     node adapter.js IN OUT                             (file mode: reads IN, writes OUT)
 'use strict';
 
-const fs = require('fs');
-const readline = require('readline');
 const {installPageStandIns} = require('./headless');
 const {velocityFor, roundPosition} = require('./doubles');
-const {SceneError, parseScene, formatFrames, formatError, overlappedTiles} = require('../rapier/scene_text');
+const {SceneError, serve, parseScene, formatFrames, formatError, overlappedTiles} = require('../rapier/scene_text');
 
 installPageStandIns();
 const Phaser = require('phaser');
@@ -181,8 +179,6 @@ function answer(resolver, line) {
     }
 }
 
-const isBlank = (line) => /^\s*$/.test(line);
-
 async function main() {
     const args = process.argv.slice(2);
     if (args.length !== 0 && args.length !== 2) {
@@ -190,20 +186,7 @@ async function main() {
         process.exit(2);
     }
     const resolver = new ArcadeResolver(await bootScene());
-    if (args.length === 2) {
-        // File mode: every answer is written as soon as it is known, so a crash mid-batch
-        // still leaves the answers so far.
-        const out = fs.openSync(args[1], 'w');
-        for (const line of fs.readFileSync(args[0], 'utf8').split('\n'))
-            if (!isBlank(line)) fs.writeSync(out, answer(resolver, line) + '\n');
-        fs.closeSync(out);
-        process.exit(0);  // the game holds timers and listeners; nothing else is left to do
-    }
-    // Pipe mode: answer each line as it comes, never waiting for the end of the input.
-    process.stdout.on('error', (e) => process.exit(e.code === 'EPIPE' ? 0 : 1));  // reader gone
-    const input = readline.createInterface({input: process.stdin, crlfDelay: Infinity});
-    for await (const line of input)
-        if (!isBlank(line)) process.stdout.write(answer(resolver, line) + '\n');
+    await serve(args, (line) => answer(resolver, line));
     process.exitCode = 0;
     process.stdout.end(() => process.exit(0));
 }

@@ -27,10 +27,8 @@
 //     node adapter.js --rapier PACKAGE ...               (another build of Rapier: see main)
 'use strict';
 
-const fs = require('fs');
-const readline = require('readline');
 let RAPIER = null;  // the Rapier package: main loads it
-const {SceneError, parseScene, formatFrames, formatError, overlappedTiles} = require('./scene_text');
+const {SceneError, serve, parseScene, formatFrames, formatError, overlappedTiles} = require('./scene_text');
 
 /// Pixels per Rapier meter: a 16-pixel tile is one meter.
 const kPixelsPerMeter = 16;
@@ -160,8 +158,6 @@ function answer(tileWorld, line) {
     }
 }
 
-const isBlank = (line) => /^\s*$/.test(line);
-
 // The answer to one line, from a world made for it alone, or from one shared world.
 function answerer(sharedWorld) {
     if (sharedWorld) {
@@ -196,25 +192,11 @@ async function main() {
     const sharedWorld = args.includes('--shared-world');
     const paths = args.filter((a) => a !== '--shared-world');
     const respond = answerer(sharedWorld);
-    if (paths.length === 2) {
-        // File mode: every answer is written as soon as it is known, so a crash mid-batch
-        // still leaves the answers so far.
-        const out = fs.openSync(paths[1], 'w');
-        for (const line of fs.readFileSync(paths[0], 'utf8').split('\n'))
-            if (!isBlank(line)) fs.writeSync(out, respond(line) + '\n');
-        fs.closeSync(out);
-        return;
-    }
-    if (paths.length !== 0) {
+    if (paths.length !== 0 && paths.length !== 2) {
         process.stderr.write('usage: node adapter.js [--shared-world] [--rapier PACKAGE] [IN OUT]   (no IN OUT: scenes on stdin, answers on stdout)\n');
         process.exit(2);
     }
-    // Pipe mode: answer each line as it comes, never waiting for the end of the input. Answers
-    // of the lines already read are written together, then the next batch is read.
-    process.stdout.on('error', (e) => process.exit(e.code === 'EPIPE' ? 0 : 1));  // reader gone
-    const input = readline.createInterface({input: process.stdin, crlfDelay: Infinity});
-    for await (const line of input)
-        if (!isBlank(line)) process.stdout.write(respond(line) + '\n');
+    await serve(paths, respond);
 }
 
 main().catch((e) => {

@@ -288,4 +288,26 @@ function overlappedTiles(scene, x, y) {
     return cells;
 }
 
-module.exports = {SceneError, parseScene, formatFrames, formatError, formatFloat32, formatDouble, overlappedTiles};
+const isBlank = (line) => /^\s*$/.test(line);
+
+/// Answers scene lines with respond(line), one answer line each: with paths [IN, OUT] the lines of
+/// the file IN into OUT, each answer written as soon as it is known (a crash mid-batch leaves the
+/// answers so far); with no paths the lines of standard input as they come, never waiting for the
+/// end of the input. A reader that goes away ends the process quietly.
+async function serve(paths, respond) {
+    const fs = require('fs');
+    if (paths.length === 2) {
+        const out = fs.openSync(paths[1], 'w');
+        for (const line of fs.readFileSync(paths[0], 'utf8').split('\n'))
+            if (!isBlank(line)) fs.writeSync(out, respond(line) + '\n');
+        fs.closeSync(out);
+        return;
+    }
+    const readline = require('readline');
+    process.stdout.on('error', (e) => process.exit(e.code === 'EPIPE' ? 0 : 1));  // reader gone
+    const input = readline.createInterface({input: process.stdin, crlfDelay: Infinity});
+    for await (const line of input)
+        if (!isBlank(line)) process.stdout.write(respond(line) + '\n');
+}
+
+module.exports = {SceneError, serve, parseScene, formatFrames, formatError, formatFloat32, formatDouble, overlappedTiles};
