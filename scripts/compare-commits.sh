@@ -7,7 +7,7 @@
 # binaries ran under the same conditions, turn about.
 #
 #   bash scripts/compare-commits.sh OLD NEW [FILTER [PROCESSES [REPETITIONS]]]
-#   bash scripts/compare-commits.sh dea13a4 HEAD '' 3 5     # defaults: every row, 3 processes, 5
+#   bash scripts/compare-commits.sh OLD HEAD '' 3 5         # defaults: every row, 3 processes, 5
 #   COMPARE_NO_BUILD=1 bash scripts/compare-commits.sh ...  # the binaries already built there
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
