@@ -3,6 +3,7 @@
 // scene of every failing cell as a replayable scene line. The charts are drawn from report.json
 // by scripts/plots.py (matplotlib), the one way every chart is drawn; scripts/audit.sh runs both.
 #include "tilesweep/audit/audit.h"
+#include "tilesweep/scene/scalar_text.h"
 #include "tilesweep/scene/scene.h"
 
 #include <nlohmann/json.hpp>
@@ -72,13 +73,9 @@ std::string ulpsText(std::uint64_t u) {
     return text;
 }
 
+/// n of `of` in percent; "0%" of nothing.
 std::string percent(std::uint64_t n, std::uint64_t of) {
-    if (of == 0) return "0";
-    if (n == 0) return "0";
-    char text[32];
-    const double p = 100.0 * static_cast<double>(n) / static_cast<double>(of);
-    std::snprintf(text, sizeof text, p < 0.1 ? "%.2f%%" : "%.1f%%", p);
-    return text;
+    return detail::percentText(of == 0 ? 0.0 : static_cast<double>(n) / static_cast<double>(of));
 }
 
 std::string number(double x) {

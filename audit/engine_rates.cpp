@@ -7,6 +7,8 @@
 #include "parallel_tasks.h"
 #include "scene_judge.h"
 
+#include "tilesweep/scene/scalar_text.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -497,25 +499,13 @@ RatesResult mergeRates(const std::vector<RatesResult>& shards, const std::vector
 
 namespace {
 
-std::string percent(double share) {
-    char text[32];
-    if (share == 0) return "0";
-    if (share >= 0.1) {
-        std::snprintf(text, sizeof text, "%.0f%%", 100 * share);
-    } else if (share >= 0.001) {
-        std::snprintf(text, sizeof text, "%.2g%%", 100 * share);
-    } else {
-        std::snprintf(text, sizeof text, "%.1g%%", 100 * share);
-    }
-    return text;
-}
-
 /// "1.2% [0.9, 1.6]": the share and its 95% Wilson interval, in percent; "–" with no trials.
 std::string rateText(std::uint64_t failures, std::uint64_t trials) {
     if (trials == 0) return "–";
     const RateInterval ci = wilsonInterval(failures, trials);
-    const std::string share = percent(static_cast<double>(failures) / static_cast<double>(trials));
-    std::string low = percent(ci.low), high = percent(ci.high);
+    const std::string share =
+        detail::percentText(static_cast<double>(failures) / static_cast<double>(trials));
+    std::string low = detail::percentText(ci.low), high = detail::percentText(ci.high);
     if (!low.empty() && low.back() == '%') low.pop_back();
     return (failures > 0 ? "**" + share + "**" : share) + " [" + low + ", " + high + "]";
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "tilesweep/scene/scalar_text.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
@@ -170,6 +171,31 @@ const char* scalarName<float>() noexcept {
 template <>
 const char* scalarName<double>() noexcept {
     return "double";
+}
+
+std::string percentText(double share) {
+    if (!(share > 0)) return "0%";
+    if (share >= 1) return "100%";
+    constexpr int kMostDecimals = 6;
+    const double percent = 100 * share;
+    // Two significant digits: one decimal more than the place of the leading digit's.
+    int decimals = std::clamp(1 - static_cast<int>(std::floor(std::log10(percent))), 0, kMostDecimals);
+    char buffer[32];
+    std::string text;
+    for (;; ++decimals) {
+        const auto result =
+            std::to_chars(buffer, buffer + sizeof buffer, percent, std::chars_format::fixed, decimals);
+        text.assign(buffer, result.ptr);
+        // Below one, rounding can only reach 100 from beneath: more digits, up to the most.
+        if (text.compare(0, 3, "100") != 0 || decimals == kMostDecimals) break;
+    }
+    if (text.compare(0, 3, "100") == 0) return ">99.999999%";
+    if (text.find_first_not_of("0.") == std::string::npos) return "<0.000001%";
+    if (text.find('.') != std::string::npos) {
+        text.erase(text.find_last_not_of('0') + 1);
+        if (text.back() == '.') text.pop_back();
+    }
+    return text + '%';
 }
 
 template ScalarText<float> readDecimalScalar<float>(std::string_view);

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 // The scene layer: reading scene lines (every error names its field; numbers are rounded once,
 // straight to the scalar type), writing them back bit for bit, the `tilesweep resolve` output
-// format, and runScene's chaining of frames. Expected values are worked out by hand from
-// docs/contract.md and IEEE 754 rounding, not copied from program output.
+// format, runScene's chaining of frames, and the percent text of the tools' reports. Expected
+// values are worked out by hand from docs/contract.md and IEEE 754 rounding, not copied from
+// program output.
 #include "tilesweep/scene/file_write.h"
+#include "tilesweep/scene/scalar_text.h"
 #include "tilesweep/scene/scene.h"
 
 #include <gtest/gtest.h>
@@ -839,6 +841,32 @@ TEST(FileWrite, writesWholeReplacesAndLeavesNothingBehindOnFailure) {
     EXPECT_NE(error.find("no-such-directory"), std::string::npos) << error;
     EXPECT_FALSE(std::filesystem::exists(missing + ".tmp"));
     std::filesystem::remove_all(dir);
+}
+
+// percentText: two significant digits in fixed notation, trailing zeros dropped; only 0 and 1
+// read "0%" and "100%".
+TEST(PercentText, twoSignificantDigitsWithoutTrailingZerosOrExponents) {
+    using tilesweep::detail::percentText;
+    EXPECT_EQ(percentText(0), "0%");
+    EXPECT_EQ(percentText(1), "100%");
+    EXPECT_EQ(percentText(0.453), "45%");
+    EXPECT_EQ(percentText(0.0453), "4.5%");
+    EXPECT_EQ(percentText(0.05), "5%");
+    EXPECT_EQ(percentText(0.001), "0.1%");
+    EXPECT_EQ(percentText(0.0016), "0.16%");
+    EXPECT_EQ(percentText(0.0996), "10%");
+    EXPECT_EQ(percentText(0.000034), "0.0034%");
+    EXPECT_EQ(percentText(1.0 / 3), "33%");
+    EXPECT_EQ(percentText(2.0 / 3), "67%");
+    EXPECT_EQ(percentText(1e-7), "0.00001%");
+    EXPECT_EQ(percentText(1.2e-8), "0.000001%");
+    EXPECT_EQ(percentText(4e-9), "<0.000001%");
+    EXPECT_EQ(percentText(0.997), "99.7%");
+    EXPECT_EQ(percentText(0.9996), "99.96%");
+    EXPECT_EQ(percentText(1 - 1e-10), ">99.999999%");
+    EXPECT_EQ(percentText(-0.5), "0%");
+    EXPECT_EQ(percentText(std::numeric_limits<double>::quiet_NaN()), "0%");
+    EXPECT_EQ(percentText(2), "100%");
 }
 
 }  // namespace

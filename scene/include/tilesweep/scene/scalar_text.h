@@ -5,7 +5,8 @@
 #include <string_view>
 
 // Numbers as scene files write them, used inside tilesweep_scene and by the tools built on it
-// (the property suite reads result lines and names scalar types with them).
+// (the property suite reads result lines and names scalar types with them), and shares as the
+// tools' reports write them, in percent (the audit's tables, the property suite's coverage).
 //
 // Reading: a JSON number lexeme, or a C99 hexadecimal float as printf("%a") writes it, is
 // rounded once, straight to T, to nearest (ties to even). Going through double first would
@@ -52,5 +53,12 @@ void appendShortest(std::string& out, T value);
 /// The name of T in messages: "float" or "double".
 template <class T>
 [[nodiscard]] const char* scalarName() noexcept;
+
+/// A share of a whole (0 to 1) in percent, as reports write it: two significant digits, trailing
+/// zeros dropped, never in exponent form ("45%", "5.2%", "5%", "0.16%", "0.0034%"). Only zero
+/// reads "0%" and only one reads "100%": a share just short of one keeps the digits that tell
+/// it apart ("99.97%", and ">99.999999%" within 5e-9 of one), and a nonzero share below 5e-9
+/// reads "<0.000001%". NaN and shares below zero read "0%", shares above one "100%".
+[[nodiscard]] std::string percentText(double share);
 
 }  // namespace tilesweep::detail
