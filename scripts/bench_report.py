@@ -5,8 +5,8 @@ Reads the Google Benchmark JSON written by scripts/bench.sh (the median aggregat
 runs, CPU time in ns per item) and the audit's build/audit/report.json (every implementation's
 error figures against the exact reference). Writes:
 
-  bench.md    the medians of every benchmark, the issue's target ratios computed from the same
-              run (met or missed, and by how much), the machine and the load it ran under;
+  bench.md    the medians of every benchmark, the performance targets as ratios computed from
+              the same run (met or missed, and by how much), the machine and the load it ran under;
   pareto.svg  run time per frame (log scale) against the share of audit scenes whose decisions
               differ from the exact reference, one labelled point per implementation.
 
@@ -249,8 +249,9 @@ def write_markdown(path, results, audit, machine, results_path, audit_path, out_
     add("# tilesweep benchmarks")
     add("")
     add("Medians of repeated runs of `bench/resolve_bench.cpp` (Google Benchmark), **CPU time per "
-        "item** (one frame, one pair), and the targets of issue 5 computed as ratios from this one "
-        "run. Written by `scripts/bench_report.py` from "
+        "item** (one frame, one pair), and the performance targets (run time against speed and map "
+        "size, against a brute force, Box2D and the inexact twin; the exact reference's rate), "
+        "computed as ratios from this one run. Written by `scripts/bench_report.py` from "
         f"`{os.path.relpath(results_path, os.path.dirname(path))}` and the audit's "
         f"`{os.path.relpath(audit_path, os.path.dirname(path))}`; regenerate both with "
         "`bash scripts/bench.sh`.")
@@ -312,7 +313,7 @@ def write_markdown(path, results, audit, machine, results_path, audit_path, out_
     add("")
 
     # --- targets
-    add("## Targets (issue 5), as ratios from this run")
+    add("## Targets, as ratios from this run")
     add("")
     add("| target | ratio | figures (median CPU time) | verdict |")
     add("|---|---:|---|---|")
@@ -361,9 +362,9 @@ def write_markdown(path, results, audit, machine, results_path, audit_path, out_
     add(f"| (d) one box-against-tile sweep vs Box2D: `b2TimeOfImpact` over `sweepBox<float>`, same "
         f"pairs | {fmt_ratio(r)} | {fmt_ns(results.get('BM_Box2D_TimeOfImpact_Pairs'))} / "
         f"{fmt_ns(results.get('BM_SweepBox_Pairs<float>'))} (over `sweepBox<double>`: {fmt_ratio(rd)}) "
-        f"| ≥ 10x: {text}. The issue names `b2ShapeCast`; the suite measures Box2D's "
-        f"`b2TimeOfImpact` (its swept-shape time of impact), which stops short of contact by its "
-        f"target separation |")
+        f"| ≥ 10x: {text}. The target is set against Box2D's shape cast (`b2ShapeCast`); the suite "
+        f"measures `b2TimeOfImpact` (its swept-shape time of impact), which stops short of contact "
+        f"by its target separation |")
     summary.append(("(d) Box2D over sweepBox<float>, ≥ 10x", status, fmt_ratio(r) if r else None))
 
     # (e) exact reference cost
@@ -403,7 +404,8 @@ def write_markdown(path, results, audit, machine, results_path, audit_path, out_
             add(f"| (f) exactness nearly free: tilesweep over the inexact twin (same walk, plain "
                 f"{scalar} arithmetic), worst speed, {level_text}, {scalar} | {fmt_ratio(r)} | "
                 f"per tiles/frame {per_speed} | ≤ 1.3x: {text}"
-                f"{'' if scalar == 'float' else ' (the issue states the bound for float)'} |")
+                f"{'' if scalar == 'float' else ' (the bound is set for float; double is shown beside it)'}"
+                f" |")
             if scalar == "float":
                 summary.append((f"(f) tilesweep over the inexact twin, worst speed, {level_text}, float, ≤ 1.3x",
                                 status, fmt_ratio(r) if r else None))
