@@ -1,20 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "grid_line.h"
 
-// Boost's headers are not written for the project's warning set (and GCC reports some of them
-// where they are instantiated), so this whole file is compiled with those warnings off.
-#if defined(__GNUC__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wconversion"
-#pragma GCC diagnostic ignored "-Wsign-conversion"
-#pragma GCC diagnostic ignored "-Wshadow"
-#pragma GCC diagnostic ignored "-Wpedantic"
-#pragma GCC diagnostic ignored "-Wdouble-promotion"
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#if !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
-#endif
+// Boost's headers are not written for the project's warning set, and GCC reports some of their
+// warnings where their code is inlined, so the whole file is compiled with those warnings off
+// (tilesweep/boost_warnings_off.h, cmake/include/).
+#include "tilesweep/boost_warnings_off.h"
+
 #include <boost/multiprecision/cpp_int.hpp>
 
 namespace tilesweep::checks::detail {
@@ -57,6 +48,4 @@ bool gridLineInExact(const Split* low, int lowCount, const Split* high, int high
 
 }  // namespace tilesweep::checks::detail
 
-#if defined(__GNUC__)
-#pragma GCC diagnostic pop
-#endif
+#include "tilesweep/boost_warnings_on.h"

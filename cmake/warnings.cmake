@@ -37,6 +37,13 @@ target_compile_options(tilesweep_warnings INTERFACE
     $<$<CXX_COMPILER_ID:Clang>:-Wno-gnu-zero-variadic-macro-arguments>
     $<$<BOOL:${TILESWEEP_WERROR}>:-Werror>)
 
+# Boost's headers are not written for that set: every Boost include sits between
+# tilesweep/boost_warnings_off.h and boost_warnings_on.h (cmake/include/), which turn the warnings
+# they trip off and on again. The oracles link this PUBLIC (their rational.h includes Boost), the
+# exact safety checks PRIVATE.
+add_library(tilesweep_boost_warnings INTERFACE)
+target_include_directories(tilesweep_boost_warnings INTERFACE ${CMAKE_CURRENT_LIST_DIR}/include)
+
 
 if(TILESWEEP_SANITIZE AND TILESWEEP_SANITIZE_THREAD)
     message(FATAL_ERROR "tilesweep: TILESWEEP_SANITIZE and TILESWEEP_SANITIZE_THREAD cannot be combined")

@@ -5,24 +5,15 @@
 // Boost.Multiprecision). Every value the contract talks about (an input float, a sum, a product,
 // a quotient) is one of these, with no rounding anywhere.
 //
-// Boost is included between pragmas: the project builds with -Wconversion, -Wshadow and friends
-// as errors, and Boost's headers are not written for that set. This is the oracles' one Boost
-// include. The exact safety checks include Boost's cpp_int under the same pragmas
-// (checks/grid_line.cpp), in a library that must not depend on the oracles or on GMP.
+// Boost is included with the warnings of the project's set that its headers are not written for
+// turned off (tilesweep/boost_warnings_off.h, in cmake/include/). This is the oracles' one Boost
+// include.
 
-#if defined(__GNUC__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wconversion"
-#pragma GCC diagnostic ignored "-Wsign-conversion"
-#pragma GCC diagnostic ignored "-Wshadow"
-#pragma GCC diagnostic ignored "-Wpedantic"
-#pragma GCC diagnostic ignored "-Wdouble-promotion"
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#endif
+#include "tilesweep/boost_warnings_off.h"
+
 #include <boost/multiprecision/gmp.hpp>
-#if defined(__GNUC__)
-#pragma GCC diagnostic pop
-#endif
+// The project's warnings again, for the oracles' own code.
+#include "tilesweep/boost_warnings_on.h"
 
 #include <string>
 
