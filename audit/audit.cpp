@@ -12,6 +12,7 @@
 #include "tilesweep/baselines/run_frames.h"
 #include "tilesweep/oracle/exact/exact_resolve.h"
 #include "tilesweep/oracle/seed/seed_resolve.h"
+#include "tilesweep/resolvers/resolver_registry.h"
 #include "tilesweep/scene/scene.h"
 
 #include <algorithm>
@@ -19,6 +20,9 @@
 #include <chrono>
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -60,10 +64,12 @@ void record(CellStats& cell, const SceneVerdict& v, std::uint64_t caseIndex) {
     if (v.hasTime) cell.timeErrors.push_back(v.timeError);
 }
 
-/// The cells one worker fills: [implementation][family], and the coverage [family][scalar].
+/// The cells one worker fills: [implementation][family], and the coverage [family][scalar]; the
+/// worker's own resolver of each implementation.
 struct Shard {
     std::vector<std::vector<CellStats>> cells;
     std::vector<std::array<Coverage, 2>> coverage;
+    std::vector<std::unique_ptr<resolvers::SceneResolver>> resolvers;
 };
 
 template <class T>
@@ -99,7 +105,10 @@ void auditScene(const std::vector<Implementation>& impls, const Family& family, 
         const Implementation& impl = impls[r];
         if (impl.isDouble != kDouble) continue;
         CellStats& cell = shard.cells[r][familyIndex];
-        record(cell, judge.judge(runImplementation(impl, scene)), caseIndex);
+        resolvers::Answer<T> answer = resolvers::resolveOne(*shard.resolvers[r], scene);
+        if (!answer.answered())
+            throw std::runtime_error(impl.name + " could not resolve a scene: " + answer.failure);
+        record(cell, judge.judge(answer.frames), caseIndex);
         if (impl.kind == ImplementationKind::Seed) {
             cell.epsilonMismatches.resize(kSeedEpsilons.size());
             for (std::size_t k = 0; k < kSeedEpsilons.size(); ++k) {
@@ -130,6 +139,11 @@ AuditResult runAudit(const AuditConfig& config) {
     for (Shard& s : shards) {
         s.cells.assign(rows, std::vector<CellStats>(columns));
         s.coverage.assign(columns, {});
+        for (const Implementation& impl : result.implementations) {
+            std::string error;
+            s.resolvers.push_back(resolvers::makeResolver(resolverName(impl), error));
+            if (!s.resolvers.back()) throw std::logic_error(impl.name + ": " + error);
+        }
     }
     // Tasks interleave the families, so that progress advances evenly across them.
     const std::uint64_t total = config.cases * columns;

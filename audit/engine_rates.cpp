@@ -62,49 +62,6 @@ void recordNoAnswer(RateCell& cell, const std::string& why, std::uint64_t caseIn
     if (cell.noAnswerSamples.size() < kNoAnswerSamples) cell.noAnswerSamples.push_back(why.substr(0, 400));
 }
 
-/// A resolver of audit.h's implementations, in this process.
-class InProcessResolver final : public BatchResolver {
-public:
-    explicit InProcessResolver(Implementation impl) : impl_(std::move(impl)) {}
-    std::vector<EngineAnswer> resolve(const std::vector<Scene<float>>& scenes) override {
-        return answer(scenes);
-    }
-    std::vector<EngineAnswerOf<double>> resolveDouble(const std::vector<Scene<double>>& scenes) override {
-        return answer(scenes);
-    }
-
-private:
-    template <class T>
-    std::vector<EngineAnswerOf<T>> answer(const std::vector<Scene<T>>& scenes) const {
-        std::vector<EngineAnswerOf<T>> answers(scenes.size());
-        for (std::size_t k = 0; k < scenes.size(); ++k) {
-            if (impl_.isDouble != std::is_same_v<T, double>) {
-                answers[k].failure =
-                    impl_.name + " answers " + (impl_.isDouble ? "double" : "float") + " scenes only";
-                continue;
-            }
-            try {
-                answers[k].frames = runImplementation(impl_, scenes[k]);
-            } catch (const std::exception& e) {
-                answers[k].failure = e.what();
-            }
-        }
-        return answers;
-    }
-
-    Implementation impl_;
-};
-
-/// A batch's answers from one resolver in the run's scalar type.
-inline std::vector<EngineAnswerOf<float>> answersOf(BatchResolver& r,
-                                                    const std::vector<Scene<float>>& scenes) {
-    return r.resolve(scenes);
-}
-inline std::vector<EngineAnswerOf<double>> answersOf(BatchResolver& r,
-                                                     const std::vector<Scene<double>>& scenes) {
-    return r.resolveDouble(scenes);
-}
-
 /// One batch of one family: the case indices it covers.
 struct Task {
     std::size_t family;
@@ -116,7 +73,7 @@ struct Task {
 /// resolver of engine e.
 template <class T>
 void judgeBatch(const Family& family, std::uint64_t seed, const std::vector<std::uint64_t>& cases,
-                const std::function<BatchResolver&(std::size_t)>& resolverOf,
+                const std::function<resolvers::SceneResolver&(std::size_t)>& resolverOf,
                 const std::vector<RateCell*>& cells) {
     std::vector<Scene<T>> scenes;
     std::vector<std::uint64_t> kept;
@@ -132,7 +89,7 @@ void judgeBatch(const Family& family, std::uint64_t seed, const std::vector<std:
     judges.reserve(scenes.size());
     for (const Scene<T>& s : scenes) judges.emplace_back(s);
     for (std::size_t e = 0; e < cells.size(); ++e) {
-        const std::vector<EngineAnswerOf<T>> answers = answersOf(resolverOf(e), scenes);
+        const std::vector<resolvers::Answer<T>> answers = resolvers::resolveAll(resolverOf(e), scenes);
         RateCell& cell = *cells[e];
         for (std::size_t k = 0; k < scenes.size(); ++k) {
             if (k >= answers.size()) {
@@ -225,10 +182,6 @@ std::vector<Family> rateFamilies(const std::string& scalar) {
     return f;
 }
 
-std::unique_ptr<BatchResolver> makeInProcessResolver(const Implementation& impl) {
-    return std::make_unique<InProcessResolver>(impl);
-}
-
 RatesResult measureRates(const RatesConfig& config, const std::vector<EngineSpec>& engines) {
     if (config.shardCount < 1 || config.shardIndex < 0 || config.shardIndex >= config.shardCount)
         throw std::invalid_argument("shard " + std::to_string(config.shardIndex) + "/" +
@@ -266,8 +219,8 @@ RatesResult measureRates(const RatesConfig& config, const std::vector<EngineSpec
     std::vector<Cells> shards(static_cast<std::size_t>(jobs),
                               Cells(engines.size(), std::vector<RateCell>(result.families.size())));
     // Each worker's engines (one process each, for an outside resolver), started at its first task.
-    std::vector<std::vector<std::unique_ptr<BatchResolver>>> resolvers(static_cast<std::size_t>(jobs));
-    for (auto& own : resolvers) own.resize(engines.size());
+    std::vector<std::vector<std::unique_ptr<resolvers::SceneResolver>>> made(static_cast<std::size_t>(jobs));
+    for (auto& own : made) own.resize(engines.size());
 
     ParallelTasks parallel;
     parallel.workers = jobs;
@@ -280,9 +233,9 @@ RatesResult measureRates(const RatesConfig& config, const std::vector<EngineSpec
         const Family& family = result.families[task.family];
         std::vector<RateCell*> row;
         for (std::size_t e = 0; e < engines.size(); ++e) row.push_back(&shards[w][e][task.family]);
-        const auto resolverOf = [&](std::size_t e) -> BatchResolver& {
-            if (!resolvers[w][e]) resolvers[w][e] = engines[e].make();
-            return *resolvers[w][e];
+        const auto resolverOf = [&](std::size_t e) -> resolvers::SceneResolver& {
+            if (!made[w][e]) made[w][e] = engines[e].make();
+            return *made[w][e];
         };
         if (config.scalar == "double")
             judgeBatch<double>(family, config.seed, task.cases, resolverOf, row);
@@ -291,7 +244,7 @@ RatesResult measureRates(const RatesConfig& config, const std::vector<EngineSpec
         return task.cases.size();
     };
     runParallelTasks(parallel);
-    resolvers.clear();  // the outside resolvers' processes end here, as when each worker ended
+    made.clear();  // the outside resolvers' processes end here, as when each worker ended
 
     result.cells.assign(engines.size(), std::vector<RateCell>(result.families.size()));
     for (const Cells& s : shards)

@@ -5,6 +5,8 @@
 // catch the resolver that breaks their one-way rule, and a double run reaches 2^52 from the origin.
 #include "tilesweep/audit/engine_rates.h"
 
+#include "tilesweep/resolvers/resolver_registry.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -23,20 +25,36 @@ Implementation implementation(const std::string& name) {
 }
 
 EngineSpec inProcess(const std::string& name, const std::string& implementationName) {
-    const Implementation impl = implementation(implementationName);
-    return {name, [impl] { return makeInProcessResolver(impl); }, 0, ""};
+    const std::string resolver = resolverName(implementation(implementationName));
+    return {name,
+            [resolver] {
+                std::string error;
+                return resolvers::makeResolver(resolver, error);
+            },
+            0, ""};
 }
 
-/// Answers every third scene with a failure and the others with tilesweep's frames.
-class FlakyResolver final : public BatchResolver {
+/// A resolver of float scenes only: every double scene fails.
+class FloatOnly : public resolvers::SceneResolver {
 public:
-    std::vector<EngineAnswer> resolve(const std::vector<Scene<float>>& scenes) override {
-        std::vector<EngineAnswer> answers(scenes.size());
+    std::vector<resolvers::Answer<double>> resolve(const resolvers::SceneBatch<double>& scenes) override {
+        return std::vector<resolvers::Answer<double>>(scenes.size(), {{}, "float scenes only", {}});
+    }
+    using resolvers::SceneResolver::resolve;
+    std::string name() const override { return "float-only"; }
+};
+
+/// Answers every third scene with a failure and the others with tilesweep's frames.
+class FlakyResolver final : public FloatOnly {
+public:
+    using FloatOnly::resolve;
+    std::vector<resolvers::Answer<float>> resolve(const resolvers::SceneBatch<float>& scenes) override {
+        std::vector<resolvers::Answer<float>> answers(scenes.size());
         for (std::size_t k = 0; k < scenes.size(); ++k) {
             if (++count_ % 3 == 0)
                 answers[k].failure = "the engine crashed";
             else
-                answers[k].frames = runScene(scenes[k]);
+                answers[k].frames = runScene(*scenes[k]);
         }
         return answers;
     }
@@ -49,18 +67,19 @@ private:
 /// falls through every platform), Solid with every '-' as '#' (it is blocked by the platforms it
 /// should pass), Snag answers tilesweep's frames but adds, to a frame that starts standing on a
 /// platform and moves sideways, a contact on the x face of the platform tile under it.
-class PlatformBreaker final : public BatchResolver {
+class PlatformBreaker final : public FloatOnly {
 public:
     enum class Rule { Drop, Solid, Snag };
     explicit PlatformBreaker(Rule rule) : rule_(rule) {}
-    std::vector<EngineAnswer> resolve(const std::vector<Scene<float>>& scenes) override {
-        std::vector<EngineAnswer> answers(scenes.size());
+    using FloatOnly::resolve;
+    std::vector<resolvers::Answer<float>> resolve(const resolvers::SceneBatch<float>& scenes) override {
+        std::vector<resolvers::Answer<float>> answers(scenes.size());
         for (std::size_t k = 0; k < scenes.size(); ++k) {
             if (rule_ == Rule::Snag) {
-                answers[k].frames = snagged(scenes[k]);
+                answers[k].frames = snagged(*scenes[k]);
                 continue;
             }
-            Scene<float> s = scenes[k];
+            Scene<float> s = *scenes[k];
             for (std::size_t c = 0; rule_ == Rule::Solid && c < s.map.oneWay.size(); ++c)
                 if (s.map.oneWay[c] != 0) s.map.solid[c] = 1;
             s.map.oneWay.clear();

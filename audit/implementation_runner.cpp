@@ -1,13 +1,8 @@
 // SPDX-License-Identifier: MIT
-// The audit's rows (audit.h): each implementation, and a scene's frames through it.
+// The audit's rows (audit.h): each implementation, and the registry name of its resolver.
 #include "tilesweep/audit/audit.h"
-#include "tilesweep/baselines/grid_resolve.h"
-#include "tilesweep/baselines/run_frames.h"
-#include "tilesweep/baselines/twin_resolve.h"
-#include "tilesweep/oracle/seed/seed_resolve.h"
-#include "tilesweep/oracle/substep/substep_float.h"
-#include "tilesweep/scene/scene.h"
 
+#include <string>
 #include <vector>
 
 namespace tilesweep::audit {
@@ -28,31 +23,20 @@ std::vector<Implementation> auditImplementations() {
     };
 }
 
-using baselines::runFrames;
-
-template <class T>
-std::vector<FrameResult<T>> runImplementation(const Implementation& impl, const Scene<T>& scene) {
+std::string resolverName(const Implementation& impl) {
     switch (impl.kind) {
-        case ImplementationKind::Twin:
-            return runFrames(scene, [](const ResolveInput<T>& in, const ResolveOutput<T>& out) {
-                return baselines::resolveMoveTwin(in, out);
-            });
-        case ImplementationKind::Grid:
-            return runFrames(scene, [](const ResolveInput<T>& in, const ResolveOutput<T>& out) {
-                return baselines::resolveMoveGrid(in, out);
-            });
         case ImplementationKind::Core:
-            return runScene(scene);
+            return "core";
         case ImplementationKind::Seed:
-            return oracle::resolveSceneSeed(scene);
+            return "seed";
         case ImplementationKind::SubstepFloat:
-            return oracle::frameResults(oracle::resolveSceneSubstepFloat(scene, impl.substeps));
+            return "substep-float:" + std::to_string(impl.substeps);
+        case ImplementationKind::Twin:
+            return "twin";
+        case ImplementationKind::Grid:
+            return "grid";
     }
     return {};
 }
-
-template std::vector<FrameResult<float>> runImplementation<float>(const Implementation&, const Scene<float>&);
-template std::vector<FrameResult<double>> runImplementation<double>(const Implementation&,
-                                                                    const Scene<double>&);
 
 }  // namespace tilesweep::audit

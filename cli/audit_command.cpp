@@ -9,6 +9,9 @@
 #include "shard.h"
 
 #include "tilesweep/audit/audit.h"
+#include "tilesweep/resolvers/outside_resolver.h"
+#include "tilesweep/resolvers/resolver_probe.h"
+#include "tilesweep/resolvers/resolver_registry.h"
 
 #include <chrono>
 #include <cmath>
@@ -17,13 +20,12 @@
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <unistd.h>
 #if TILESWEEP_HAVE_CHECK
 #include "check_command.h"
 #include "conformance_report.h"
-#include "outside_batch_resolver.h"
-#include "resolver_probe.h"
 
 #include "tilesweep/audit/engine_rates.h"
 
@@ -127,7 +129,13 @@ std::vector<audit::EngineSpec> comparedEngines(const std::string& list, const st
         bool found = false;
         for (const audit::Implementation& impl : audit::auditImplementations()) {
             if (impl.name != implementation) continue;
-            engines.push_back({name, [impl] { return audit::makeInProcessResolver(impl); }, 0, ""});
+            const std::string resolver = audit::resolverName(impl);
+            engines.push_back({name,
+                               [resolver] {
+                                   std::string error;
+                                   return resolvers::makeResolver(resolver, error);
+                               },
+                               0, ""});
             found = true;
         }
         if (!found)
@@ -197,7 +205,7 @@ int runConformance(const AuditOptions& options) {
             const std::string command = options.resolverCmds[k];
             const double timeout = options.resolverTimeout;
             const bool inDouble = options.scalar == "double";
-            if (const std::string why = properties::probeResolver(command, timeout, !inDouble, inDouble);
+            if (const std::string why = resolvers::probeResolver(command, timeout, !inDouble, inDouble);
                 !why.empty()) {
                 std::cerr << "tilesweep audit: resolver unusable: " << command
                           << "\n  it did not answer the known scene (a box falling onto a floor): " << why
@@ -205,7 +213,9 @@ int runConformance(const AuditOptions& options) {
                 return 2;
             }
             engines.push_back({label,
-                               [command, timeout] { return makeOutsideBatchResolver(command, timeout); },
+                               [command, timeout] {
+                                   return std::make_unique<resolvers::OutsideResolver>(command, timeout);
+                               },
                                tolerance, note});
         }
     } catch (const std::invalid_argument& error) {

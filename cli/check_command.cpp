@@ -5,10 +5,11 @@
 // scene is written to the regression corpus with its picture, and the exit status is 1.
 //
 // With --resolver-cmd the claims about results run against an outside process instead
-// (properties/scene_runner.h): each worker starts the command once and keeps it, a crash or a
-// hang fails the scene it was given and the process is restarted, and RapidCheck shrinks a
-// failure as usual, asking the process again at every step. Before any worker starts, the
-// command is sent one known scene (properties/resolver_probe.h): a resolver that cannot answer
+// (tilesweep/resolvers/outside_resolver.h): each worker starts the command once and keeps it; a
+// round draws its cases, sends every scene they ask for in one batch, judges them, and shrinks a
+// failure live, asking the process for each step's candidates; a crash or a hang fails the scene
+// it was given and the process is restarted. Before any worker starts, the
+// command is sent one known scene (tilesweep/resolvers/resolver_probe.h): a resolver that cannot answer
 // it ends the run at once with status 2. The workers are stopped at --seconds plus one
 // --resolver-timeout whatever the resolver does, and every failure of the resolver itself is
 // shown as it happens.
@@ -21,9 +22,10 @@
 #include "conformance_report.h"
 #include "outside_resolver_options.h"
 #include "property_suite.h"
-#include "resolver_probe.h"
-#include "scene_runner.h"
 #include "shard.h"
+
+#include "tilesweep/resolvers/outside_resolver.h"
+#include "tilesweep/resolvers/resolver_probe.h"
 
 #include <nlohmann/json.hpp>
 
@@ -86,26 +88,6 @@ std::string corpusDirOf(const CheckOptions& options) {
     return options.resolverCmd.empty() ? "properties/corpus" : "resolver-corpus";
 }
 
-/// Sends the outside resolver, in one batch, every scene a run of `property` will ask it for: the
-/// run is rehearsed on tilesweep's own resolver, which notes each scene (RecordingSceneRunner);
-/// the same seed then makes the same cases against the outside resolver, answered from what
-/// was kept. Scenes the rehearsal did not ask for (shrinking's) go to the resolver as they come.
-void prefetchRound(const Property& property, const properties::RunOptions& run,
-                   properties::ResolverProcess& process) {
-    std::vector<std::string> lines;
-    {
-        properties::RecordingSceneRunner<float> recordFloat(lines);
-        properties::RecordingSceneRunner<double> recordDouble(lines);
-        const properties::ScopedSceneRunner<float> useFloat(recordFloat);
-        const properties::ScopedSceneRunner<double> useDouble(recordDouble);
-        properties::RunOptions rehearsal = run;
-        rehearsal.corpusDir.clear();  // tilesweep passes; nothing to write in any case
-        (void)property.run(rehearsal);
-    }
-    process.clearKept();
-    process.prefetch(lines);
-}
-
 /// Writes one report line to the parent; a parent gone ends the worker.
 void sendLine(int out, const nlohmann::json& report) {
     const std::string line = report.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
@@ -115,7 +97,7 @@ void sendLine(int out, const nlohmann::json& report) {
 /// A worker stopped by the parent (the budget) or by the terminal (^C) takes its resolvers with it:
 /// they run in process groups of their own, which no signal to ours reaches.
 extern "C" void stopWorker(int signal) {
-    properties::killLiveResolverProcesses();
+    resolvers::killLiveResolverProcesses();
     _exit(128 + signal);
 }
 
@@ -123,20 +105,13 @@ extern "C" void stopWorker(int signal) {
 /// round, until the deadline (at least one round), each run reported on `out`.
 void runRounds(const std::vector<const Property*>& work, int worker, int jobs, const CheckOptions& options,
                const Shard& shard, int out) {
-    // The outside resolver, one process per worker, shared by the float and double runners.
-    std::shared_ptr<properties::ResolverProcess> process;
-    std::unique_ptr<properties::OutsideSceneRunner<float>> floatRunner;
-    std::unique_ptr<properties::OutsideSceneRunner<double>> doubleRunner;
-    std::unique_ptr<properties::ScopedSceneRunner<float>> useFloat;
-    std::unique_ptr<properties::ScopedSceneRunner<double>> useDouble;
+    // The outside resolver, one process per worker, for float and double scenes alike.
+    std::unique_ptr<resolvers::OutsideResolver> outside;
     if (!options.resolverCmd.empty()) {
-        process = std::make_shared<properties::ResolverProcess>(options.resolverCmd, options.resolverTimeout);
-        process->onFailure([out](const std::string& why) { sendLine(out, {{"resolver_failure", why}}); });
-        process->setBarrier(properties::knownSceneLine());
-        floatRunner = std::make_unique<properties::OutsideSceneRunner<float>>(process);
-        doubleRunner = std::make_unique<properties::OutsideSceneRunner<double>>(process);
-        useFloat = std::make_unique<properties::ScopedSceneRunner<float>>(*floatRunner);
-        useDouble = std::make_unique<properties::ScopedSceneRunner<double>>(*doubleRunner);
+        outside = std::make_unique<resolvers::OutsideResolver>(options.resolverCmd, options.resolverTimeout);
+        outside->process().onFailure([out](const std::string& why) {
+            sendLine(out, {{"resolver_failure", why}});
+        });
     }
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(options.seconds);
     // A property's first counterexample is shrunk; later rounds count failures without shrinking
@@ -153,6 +128,7 @@ void runRounds(const std::vector<const Property*>& work, int worker, int jobs, c
                        static_cast<std::uint64_t>(round) * static_cast<std::uint64_t>(shard.count) +
                        static_cast<std::uint64_t>(shard.index);
             run.cases = options.cases;
+            run.resolver = outside.get();
             run.shrink = !shrunk[k] && !options.noShrink;
             run.shrinkSeconds = options.shrinkSeconds >= 0    ? options.shrinkSeconds
                                 : options.resolverCmd.empty() ? 0.0
@@ -161,7 +137,6 @@ void runRounds(const std::vector<const Property*>& work, int worker, int jobs, c
             run.onFirstFailure = [out, k](const std::string& message, const std::string& scene) {
                 sendLine(out, {{"first_failure", message}, {"index", k}, {"scene", scene}});
             };
-            if (process) prefetchRound(*work[k], run, *process);
             const PropertyOutcome o = work[k]->run(run);
             if (!o.passed && !o.sceneLine.empty()) shrunk[k] = true;
             anyFailed = anyFailed || !o.passed;
@@ -319,8 +294,8 @@ CheckRun runChecks(const CheckOptions& options) {
             return std::any_of(work.begin(), work.end(),
                                [&](const Property* p) { return p->scalar == scalar; });
         };
-        const std::string why = properties::probeResolver(options.resolverCmd, options.resolverTimeout,
-                                                          inScalar("float"), inScalar("double"));
+        const std::string why = resolvers::probeResolver(options.resolverCmd, options.resolverTimeout,
+                                                         inScalar("float"), inScalar("double"));
         if (!why.empty()) throw ResolverUnusable(why);
     }
 

@@ -78,7 +78,7 @@ struct CheckRun {
     std::vector<std::string> resolverFailureMessages;
 };
 
-/// The outside resolver failed the known scene before the run (properties/resolver_probe.h):
+/// The outside resolver failed the known scene before the run (tilesweep/resolvers/resolver_probe.h):
 /// `tilesweep check` says why and exits with status 2.
 struct ResolverUnusable : std::runtime_error {
     using std::runtime_error::runtime_error;

@@ -64,14 +64,15 @@ void writeConformanceReport(const std::vector<ConformanceEntry>& entries, const 
     md << "# Conformance: resolvers held to the contract\n\n"
           "Written by `tilesweep audit --resolver-cmd` (see docs/verifier.md, \"Holding any resolver to the "
           "contract\"). Each resolver is an outside process speaking `tilesweep resolve`'s JSON Lines "
-          "protocol; every claim about results of the property suite runs against it, RapidCheck shrinks "
-          "each failure, and the smallest counterexample of each property is shown with its picture. "
+          "protocol; every claim about results of the property suite runs against it, each failure is "
+          "shrunk along RapidCheck's shrinks, and the smallest counterexample of each property is shown with "
+          "its picture. "
           "A failure rate is failing cases over cases run (a run stops at its first failure; rounds go on "
           "with a new seed until the budget is spent). Time includes shrinking, which asks the resolver "
           "again at "
           "every step; the first counterexample's time is that of the first failing run, shrinking "
-          "included. Each round's scenes go to the resolver in one batch (rehearsed on tilesweep's own "
-          "resolver, then prefetched); shrinking asks one scene at a time.\n\n";
+          "included. Each round's scenes go to the resolver in one batch; shrinking asks for each "
+          "step's candidates in batches of 16.\n\n";
     md << "| resolver | properties held | properties failed | cases run | cases/s "
           "|\n|---|---:|---:|---:|---:|\n";
     for (const ConformanceEntry& e : entries) {

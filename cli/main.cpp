@@ -24,7 +24,6 @@
 #if TILESWEEP_HAVE_CHECK
 #include "check_command.h"
 #include "replay_command.h"
-#include "scene_runner.h"
 #endif
 #if TILESWEEP_HAVE_AUDIT
 #include "audit_command.h"
@@ -32,9 +31,8 @@
 #if TILESWEEP_HAVE_AUDIT && TILESWEEP_HAVE_CHECK
 #include "merge_command.h"
 #endif
-#include "library_resolver.h"
-#include "resolvers.h"
-
+#include "tilesweep/resolvers/library_resolver.h"
+#include "tilesweep/resolvers/resolver_registry.h"
 #include "tilesweep/scene/scene.h"
 
 #ifndef TILESWEEP_CLI_VERSION
@@ -47,8 +45,7 @@ constexpr int kExitOk = 0;
 constexpr int kExitSceneError = 1;  // at least one line was answered with {"error": ...}
 constexpr int kExitUsage = 2;       // bad arguments, or FILE could not be read, or stdout failed
 
-using tilesweep::cli::findResolver;
-using tilesweep::cli::Resolver;
+using tilesweep::resolvers::SceneResolver;
 
 bool isBlank(std::string_view line) {
     return line.find_first_not_of(" \t\r\n\f\v") == std::string_view::npos;
@@ -66,7 +63,7 @@ struct ResolveOptions {
 
 /// One output line for one scene line: the frames, or an error naming the field at fault.
 template <class T>
-std::string resolveLine(const std::string& line, const Resolver<T>& resolve, bool& failed) {
+std::string resolveLine(const std::string& line, SceneResolver& resolver, bool& failed) {
     // parse and validate
     tilesweep::SceneParse<T> parsed = tilesweep::parseScene<T>(line);
     if (!parsed.scene) {
@@ -74,23 +71,21 @@ std::string resolveLine(const std::string& line, const Resolver<T>& resolve, boo
         return tilesweep::formatError(parsed.error);
     }
     // resolve and print
-    try {
-        return tilesweep::formatFrames(resolve(*parsed.scene));
-    } catch (const std::exception& error) {
-        failed = true;
-        return tilesweep::formatError(std::string("resolve: ") + error.what());
-    }
+    const tilesweep::resolvers::Answer<T> answer = tilesweep::resolvers::resolveOne(resolver, *parsed.scene);
+    if (answer.answered()) return tilesweep::formatFrames(answer.frames);
+    failed = true;
+    return tilesweep::formatError("resolve: " + answer.failure);
 }
 
 /// Answers every non-blank line of `in`, in order; returns the exit status.
 template <class T>
-int resolveLines(std::istream& in, std::ostream& out, const Resolver<T>& resolve) {
+int resolveLines(std::istream& in, std::ostream& out, SceneResolver& resolver) {
     bool failed = false;
     std::string line;
     while (std::getline(in, line)) {
         if (isBlank(line)) continue;
         // Flushed per line, so a harness can feed scenes through a pipe one at a time.
-        out << resolveLine(line, resolve, failed) << '\n' << std::flush;
+        out << resolveLine<T>(line, resolver, failed) << '\n' << std::flush;
     }
     return failed ? kExitSceneError : kExitOk;
 }
@@ -102,21 +97,22 @@ CLI::App* addResolveCommand(CLI::App& app, ResolveOptions& options) {
         ->check(CLI::IsMember(std::vector<std::string>{"float", "double"}))
         ->capture_default_str();
     command
-        ->add_option("--resolver", options.resolver,
-                     "The implementation: core (production, in --scalar), float, double (production in that\n"
-                     "type), exact (rational reference), substep:N, substep-float:N, seed (the article's)")
-        ->check(CLI::Validator(tilesweep::cli::checkResolverName, "NAME", "resolver"))
+        ->add_option(
+            "--resolver", options.resolver,
+            "The implementation: core (production, in --scalar), float, double (production in that\n"
+            "type), exact (rational reference), substep:N, substep-float:N, seed (the article's),\n"
+            "twin, grid (game-style baselines), lib:PATH (a user's library), cmd:COMMAND (a process)")
+        ->check(CLI::Validator(tilesweep::resolvers::checkResolverName, "NAME", "resolver"))
         ->capture_default_str();
-#if TILESWEEP_HAVE_CHECK
     command
         ->add_option("--resolver-cmd", options.resolverCmd,
                      "Pass every scene through an outside resolver (a shell command speaking this\n"
-                     "protocol) and print its answers, checked and re-printed in this format")
+                     "protocol) and print its answers, checked and re-printed in this format\n"
+                     "(the same as --resolver cmd:CMD)")
         ->type_name("CMD");
     command->add_option("--resolver-timeout", options.resolverTimeout, "Seconds per scene for --resolver-cmd")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
-#endif
     command->add_option("FILE", options.file, "The scene file; '-' or none reads standard input")
         ->type_name("PATH")
         ->capture_default_str();
@@ -156,39 +152,33 @@ int runResolveCommand(const ResolveOptions& options) {
     std::istream& in = options.file == "-" ? std::cin : file;
 
     // --resolver float / double name the production resolver in that scalar, whatever --scalar says.
-    const std::string forced = tilesweep::cli::scalarForcedBy(options.resolver);
+    const std::string forced = tilesweep::resolvers::scalarForcedBy(options.resolver);
     const std::string scalar = forced.empty() ? options.scalar : forced;
-    Resolver<float> floatResolver = findResolver<float>(options.resolver);
-    Resolver<double> doubleResolver = findResolver<double>(options.resolver);
-    if (scalar == "double" ? !doubleResolver : !floatResolver) {
-        // Only a library can lack one scalar's function: checkResolverName accepted the name.
-        const std::string path =
-            options.resolver.substr(std::string(tilesweep::cli::kLibraryResolverPrefix).size());
-        std::cerr << "tilesweep resolve: --resolver " << options.resolver << ": "
-                  << (scalar == "double" ? tilesweep::cli::loadLibraryResolver<double>(path).error
-                                         : tilesweep::cli::loadLibraryResolver<float>(path).error)
-                  << '\n';
-        return kExitUsage;
-    }
-#if TILESWEEP_HAVE_CHECK
     // --resolver-cmd: the outside process answers; its lines are read back exactly and printed
     // again, so a malformed answer becomes an error line naming what is wrong.
-    std::shared_ptr<tilesweep::properties::ResolverProcess> process;
-    if (!options.resolverCmd.empty()) {
-        process = std::make_shared<tilesweep::properties::ResolverProcess>(options.resolverCmd,
-                                                                           options.resolverTimeout);
-        auto floatOutside = std::make_shared<tilesweep::properties::OutsideSceneRunner<float>>(process);
-        auto doubleOutside = std::make_shared<tilesweep::properties::OutsideSceneRunner<double>>(process);
-        floatResolver = [floatOutside](const tilesweep::Scene<float>& s) {
-            return floatOutside->runAll({&s}).front();
-        };
-        doubleResolver = [doubleOutside](const tilesweep::Scene<double>& s) {
-            return doubleOutside->runAll({&s}).front();
-        };
+    const std::string name = options.resolverCmd.empty()
+                                 ? options.resolver
+                                 : std::string(tilesweep::resolvers::kCommandPrefix) + options.resolverCmd;
+    if (name.rfind(tilesweep::resolvers::kLibraryPrefix, 0) == 0) {
+        // A library may export one scalar's function only: the one asked for must be there.
+        const std::string path = name.substr(std::string(tilesweep::resolvers::kLibraryPrefix).size());
+        const std::string error = scalar == "double"
+                                      ? tilesweep::resolvers::loadLibraryResolver<double>(path).error
+                                      : tilesweep::resolvers::loadLibraryResolver<float>(path).error;
+        if (!error.empty()) {
+            std::cerr << "tilesweep resolve: --resolver " << options.resolver << ": " << error << '\n';
+            return kExitUsage;
+        }
     }
-#endif
-    const int status = scalar == "double" ? resolveLines<double>(in, std::cout, doubleResolver)
-                                          : resolveLines<float>(in, std::cout, floatResolver);
+    std::string error;
+    const std::unique_ptr<SceneResolver> resolver =
+        tilesweep::resolvers::makeResolver(name, error, {options.resolverTimeout});
+    if (!resolver) {
+        std::cerr << "tilesweep resolve: --resolver " << name << ": " << error << '\n';
+        return kExitUsage;
+    }
+    const int status = scalar == "double" ? resolveLines<double>(in, std::cout, *resolver)
+                                          : resolveLines<float>(in, std::cout, *resolver);
     if (in.bad()) {
         std::cerr << "tilesweep resolve: error while reading '" << options.file << "'\n";
         return kExitUsage;

@@ -7,7 +7,8 @@
 
 #include "outside_resolver_options.h"
 #include "scene_checks.h"
-#include "scene_runner.h"
+
+#include "tilesweep/resolvers/resolver_registry.h"
 
 #include <nlohmann/json.hpp>
 
@@ -39,7 +40,8 @@ std::vector<std::string> expandPaths(const std::vector<std::string>& paths) {
 
 /// Replays one scene line in T; prints its verdict; returns whether every claim held.
 template <class T>
-bool replayLine(const std::string& where, const std::string& line, bool outside, bool safetyOnly) {
+bool replayLine(const std::string& where, const std::string& line, resolvers::SceneResolver& resolver,
+                bool outside, bool safetyOnly) {
     const SceneParse<T> parsed = parseScene<T>(line);
     if (!parsed.scene) {
         std::printf("FAILED %s: not a scene: %s\n", where.c_str(), parsed.error.c_str());
@@ -52,7 +54,7 @@ bool replayLine(const std::string& where, const std::string& line, bool outside,
                                      : !(safetyOnly && claim.scope == properties::ClaimScope::BitForBit);
         if (!applies) continue;
         ++checked;
-        const std::string why = properties::checkClaim(claim, *parsed.scene);
+        const std::string why = properties::checkClaim(claim, *parsed.scene, resolver);
         if (why.empty()) continue;
         ok = false;
         std::printf("FAILED %s: %s: %s\n", where.c_str(), claim.name, why.c_str());
@@ -68,6 +70,7 @@ CLI::App* addReplayCommand(CLI::App& app, ReplayOptions& options) {
         app.add_subcommand("replay", "Replay regression files against every claim that applies");
     command->add_option("PATH", options.paths, "Regression files (.jsonl), or directories of them")
         ->required();
+    addResolverOption(command, options.resolver);
     command
         ->add_option(
             "--resolver-cmd", options.resolverCmd,
@@ -83,19 +86,15 @@ CLI::App* addReplayCommand(CLI::App& app, ReplayOptions& options) {
 }
 
 int runReplayCommand(const ReplayOptions& options) {
-    const bool outside = !options.resolverCmd.empty();
+    const std::string name = resolverUnderTest(options.resolver, options.resolverCmd);
+    const bool outside = !isTilesweepItself(name);
     const bool safetyOnly = options.claims == "safety";
-    std::shared_ptr<properties::ResolverProcess> process;
-    std::unique_ptr<properties::OutsideSceneRunner<float>> floatRunner;
-    std::unique_ptr<properties::OutsideSceneRunner<double>> doubleRunner;
-    std::unique_ptr<properties::ScopedSceneRunner<float>> useFloat;
-    std::unique_ptr<properties::ScopedSceneRunner<double>> useDouble;
-    if (outside) {
-        process = std::make_shared<properties::ResolverProcess>(options.resolverCmd, options.resolverTimeout);
-        floatRunner = std::make_unique<properties::OutsideSceneRunner<float>>(process);
-        doubleRunner = std::make_unique<properties::OutsideSceneRunner<double>>(process);
-        useFloat = std::make_unique<properties::ScopedSceneRunner<float>>(*floatRunner);
-        useDouble = std::make_unique<properties::ScopedSceneRunner<double>>(*doubleRunner);
+    std::string error;
+    const std::unique_ptr<resolvers::SceneResolver> resolver =
+        resolvers::makeResolver(name, error, {options.resolverTimeout});
+    if (!resolver) {
+        std::fprintf(stderr, "tilesweep replay: --resolver %s: %s\n", name.c_str(), error.c_str());
+        return 2;
     }
     int scenes = 0;
     int failed = 0;
@@ -114,8 +113,9 @@ int runReplayCommand(const ReplayOptions& options) {
                     ? json["scalar"].get<std::string>()
                     : "float";
             const std::string where = file + ":" + std::to_string(number);
-            const bool ok = scalar == "double" ? replayLine<double>(where, line, outside, safetyOnly)
-                                               : replayLine<float>(where, line, outside, safetyOnly);
+            const bool ok = scalar == "double"
+                                ? replayLine<double>(where, line, *resolver, outside, safetyOnly)
+                                : replayLine<float>(where, line, *resolver, outside, safetyOnly);
             ++scenes;
             failed += ok ? 0 : 1;
         }

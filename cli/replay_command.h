@@ -15,7 +15,8 @@ namespace tilesweep::cli {
 /// The options of `tilesweep replay`.
 struct ReplayOptions {
     std::vector<std::string> paths;  ///< files (.jsonl) or directories of them
-    std::string resolverCmd;         ///< outside resolver (sh -c); empty: tilesweep's own
+    std::string resolver = "core";   ///< the resolver under test, by registry name
+    std::string resolverCmd;         ///< outside resolver (sh -c): the same as resolver "cmd:" + it
     double resolverTimeout = 10;     ///< seconds without an answer before the process counts as hung
     std::string claims = "all";      ///< "all" or "safety"
 };

@@ -384,4 +384,32 @@ template std::string storesContactsAtExactCapacity<double>(const Scene<double>&)
 template std::string reportsEachCErrorByItsCause<float>(const Scene<float>&);
 template std::string reportsEachCErrorByItsCause<double>(const Scene<double>&);
 
+// ---- The claims of this file, with their properties (claim.h) ----------------------------------
+
+template <class T>
+std::vector<Claim<T>> boundaryClaims() {
+    using S = ClaimScope;
+    return {
+        // Capacity boundaries: buffers of exactly the count and the bound, the inline limit, the
+        // wide path at its bound; and the same on every kind of scene.
+        {"storesContactsAtExactCapacity",
+         &aboutTilesweep<T, &storesContactsAtExactCapacity<T>>,
+         S::Internal,
+         nullptr,
+         {{"storesContactsAtExactCapacity",
+           Family::Capacity,
+           {{"bound-inline-limit", 0.15}, {"bound-wide", 0.15}, {"many-contacts", 0.3}}},
+          {"storesEveryFramesContactsAtExactCapacity", Family::Mixed, {{"hit", 0.2}, {"two-step", 0.005}}}}},
+        // Every C error code from its own cause, through C.
+        {"reportsEachCErrorByItsCause",
+         &aboutTilesweep<T, &reportsEachCErrorByItsCause<T>>,
+         S::Internal,
+         nullptr,
+         {{"reportsEachCErrorByItsCause", Family::Mixed, {{"edge-causes-built", 0.9}}}}},
+    };
+}
+
+template std::vector<Claim<float>> boundaryClaims<float>();
+template std::vector<Claim<double>> boundaryClaims<double>();
+
 }  // namespace tilesweep::properties

@@ -4,11 +4,14 @@
 // Claims about the boundaries of the game-loop API and the C API: buffers of exactly
 // the size needed, the inline contact limit and the wide path at exactly their bounds, and every
 // C error code from a cause built to give exactly it. They concern tilesweep's own library
-// (ClaimScope::Internal), and scene_checks.cpp lists them with the other claims.
+// (ClaimScope::Internal), and scene_checks.cpp gathers them with the other claims.
+
+#include "claim.h"
 
 #include "tilesweep/scene/scene.h"
 
 #include <string>
+#include <vector>
 
 namespace tilesweep::properties {
 
@@ -29,6 +32,12 @@ template <class T>
 template <class T>
 [[nodiscard]] std::string reportsEachCErrorByItsCause(const Scene<T>& scene);
 
+/// The claims of this file, each with its scope and properties (claim.h).
+template <class T>
+[[nodiscard]] std::vector<Claim<T>> boundaryClaims();
+
+extern template std::vector<Claim<float>> boundaryClaims<float>();
+extern template std::vector<Claim<double>> boundaryClaims<double>();
 extern template std::string storesContactsAtExactCapacity<float>(const Scene<float>&);
 extern template std::string storesContactsAtExactCapacity<double>(const Scene<double>&);
 extern template std::string reportsEachCErrorByItsCause<float>(const Scene<float>&);

@@ -7,7 +7,7 @@
 // a missed contact. Internal to the property suite.
 
 #include "frame_safety.h"  // checks/
-#include "scene_runner.h"
+#include "resolver_under_test.h"
 
 #include "tilesweep/oracle/exact/exact_geometry.h"
 #include "tilesweep/oracle/exact/rational_convert.h"
@@ -107,9 +107,9 @@ struct CheckedFrames {
 };
 
 template <class T>
-CheckedFrames<T> checkedFrames(const Scene<T>& scene) {
+CheckedFrames<T> checkedFrames(const Scene<T>& scene, SceneResolver& resolver) {
     CheckedFrames<T> c;
-    c.frames = resolveUnderTest(scene);
+    c.frames = framesFrom(resolver, scene);
     c.starts = frameStarts(scene, c.frames);
     c.edges = checks::computeEdges(scene.map.view());
     return c;

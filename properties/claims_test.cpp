@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
-// The claims against an outside resolver that is tilesweep's own with each frame's start
-// overlaps rearranged (scene_runner.h): in another order they still hold, since the contract
-// leaves the order of started_overlapping free; with a cell left out, listed twice or replaced
-// they fail.
+// The claims against a resolver that is tilesweep's own with each frame's start overlaps
+// rearranged: in another order they still hold, since the contract leaves the order of
+// started_overlapping free; with a cell left out, listed twice or replaced they fail. And the
+// answer cache a round asks through: a scene it holds is never asked for again.
 #include "claims.h"
 
-#include "scene_runner.h"
+#include "answer_cache.h"
+
+#include "tilesweep/resolvers/in_process_resolver.h"
 
 #include <gtest/gtest.h>
 
@@ -20,32 +22,21 @@ namespace {
 using Rearrange = std::function<void(std::vector<Cell>&)>;
 
 /// tilesweep's own resolver, with `rearrange` applied to every frame's start overlaps that
-/// lists at least two cells.
-class RearrangingRunner final : public SceneRunner<float> {
-public:
-    explicit RearrangingRunner(Rearrange rearrange) : rearrange_(std::move(rearrange)) {}
-    std::vector<std::vector<FrameResult<float>>> runAll(
-        const std::vector<const Scene<float>*>& scenes) override {
-        std::vector<std::vector<FrameResult<float>>> all;
-        for (const Scene<float>* scene : scenes) {
-            std::vector<FrameResult<float>> frames = runScene(*scene);
+/// lists at least two cells; counts those frames in `rearranged`.
+resolvers::InProcessResolver rearranging(const Rearrange& rearrange, int& rearranged) {
+    return resolvers::InProcessResolver(
+        "rearranging",
+        [rearrange, &rearranged](const Scene<float>& scene) {
+            std::vector<FrameResult<float>> frames = runScene(scene);
             for (FrameResult<float>& f : frames)
                 if (f.startOverlaps.size() >= 2) {
-                    rearrange_(f.startOverlaps);
+                    rearrange(f.startOverlaps);
                     ++rearranged;
                 }
-            all.push_back(std::move(frames));
-        }
-        return all;
-    }
-    std::string answerText(const Scene<float>&) override { return {}; }
-    std::string name() const override { return "rearranging"; }
-
-    int rearranged = 0;  ///< frames whose list was rearranged
-
-private:
-    Rearrange rearrange_;
-};
+            return frames;
+        },
+        nullptr);
+}
 
 /// A 6 x 4 map of 16 px tiles with a solid block in its top-left 3 x 2 cells, and a 40 x 24 px
 /// box at (4, 4) inside all six of them, moving right into empty space for two frames. The zero
@@ -66,18 +57,18 @@ Scene<float> startsInsideSixTiles() {
 }
 
 std::string safetyRules(const Rearrange& rearrange, int* rearranged = nullptr) {
-    RearrangingRunner runner(rearrange);
-    ScopedSceneRunner<float> use(runner);
-    std::string why = obeysTheSafetyRules(startsInsideSixTiles());
-    if (rearranged) *rearranged = runner.rearranged;
+    int count = 0;
+    resolvers::InProcessResolver resolver = rearranging(rearrange, count);
+    std::string why = obeysTheSafetyRules(startsInsideSixTiles(), resolver);
+    if (rearranged) *rearranged = count;
     return why;
 }
 
 std::string zeroMove(const Rearrange& rearrange, int* rearranged = nullptr) {
-    RearrangingRunner runner(rearrange);
-    ScopedSceneRunner<float> use(runner);
-    std::string why = zeroMoveChangesNothing(startsInsideSixTiles());
-    if (rearranged) *rearranged = runner.rearranged;
+    int count = 0;
+    resolvers::InProcessResolver resolver = rearranging(rearrange, count);
+    std::string why = zeroMoveChangesNothing(startsInsideSixTiles(), resolver);
+    if (rearranged) *rearranged = count;
     return why;
 }
 
@@ -122,6 +113,33 @@ TEST(MetamorphicClaims, zeroMoveFailsWithAStartOverlapMissingTwiceOrWrong) {
         });
         EXPECT_NE(why.find("start overlaps differ"), std::string::npos) << why;
     }
+}
+
+TEST(AnswerCache, aSceneHeldIsNotAskedForAgain) {
+    int asked = 0;
+    resolvers::InProcessResolver counting(
+        "counting",
+        [&asked](const Scene<float>& scene) {
+            ++asked;
+            return runScene(scene);
+        },
+        nullptr);
+    AnswerCache cache(counting);
+    Scene<float> a = startsInsideSixTiles();
+    Scene<float> b = a;
+    b.moves = {{0, 3}};
+    cache.fill(std::vector<Scene<float>>{a, b, a});
+    EXPECT_EQ(asked, 2);  // the duplicate once
+    const std::vector<FrameResult<float>> frames = framesFrom(cache, a);
+    EXPECT_EQ(asked, 2);
+    EXPECT_EQ(frames.size(), a.moves.size());
+    Scene<float> c = a;
+    c.moves = {{-1, 0}};
+    (void)framesFrom(cache, b, c);  // only c is asked for
+    EXPECT_EQ(asked, 3);
+    cache.clear();
+    (void)framesFrom(cache, a);
+    EXPECT_EQ(asked, 4);
 }
 
 }  // namespace

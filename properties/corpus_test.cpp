@@ -3,11 +3,14 @@
 // is a named test case. A file is a scene line with the property, seed and scalar that found it.
 #include "scene_checks.h"
 
+#include "tilesweep/resolvers/resolver_registry.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,8 +31,11 @@ template <class T>
 void replay(const std::string& line) {
     const SceneParse<T> parsed = parseScene<T>(line);
     ASSERT_TRUE(parsed.scene.has_value()) << parsed.error;
+    std::string error;
+    const std::unique_ptr<SceneResolver> core = resolvers::makeResolver("core", error);
+    ASSERT_TRUE(core) << error;
     for (const Claim<T>& claim : allClaims<T>()) {
-        const std::string message = checkClaim(claim, *parsed.scene);
+        const std::string message = checkClaim(claim, *parsed.scene, *core);
         EXPECT_TRUE(message.empty()) << claim.name << ": " << message;
     }
 }

@@ -4,7 +4,8 @@
 // budget, and a floor the generator cannot reach is insufficient coverage, not a failed claim.
 #include "coverage_judgement.h"
 #include "property_suite.h"
-#include "scene_runner.h"
+
+#include "tilesweep/resolvers/in_process_resolver.h"
 
 #include <gtest/gtest.h>
 
@@ -73,22 +74,17 @@ TEST(CoverageFloors, aFloorNearTheTrueShareDrawsMoreCasesButNeverFails) {
     EXPECT_LE(o.cases, 3200);
 }
 
-/// An outside resolver that never moves and never hits anything.
-class StandStillRunner final : public SceneRunner<float> {
-public:
-    std::vector<std::vector<FrameResult<float>>> runAll(
-        const std::vector<const Scene<float>*>& scenes) override {
-        std::vector<std::vector<FrameResult<float>>> out;
-        for (const Scene<float>* scene : scenes) {
-            std::vector<FrameResult<float>> frames(scene->moves.size());
-            for (FrameResult<float>& f : frames) f.position = scene->box.pos;
-            out.push_back(frames);
-        }
-        return out;
-    }
-    std::string answerText(const Scene<float>&) override { return "{}"; }
-    std::string name() const override { return "stand-still"; }
-};
+/// A resolver that never moves and never hits anything.
+resolvers::InProcessResolver standStill() {
+    return resolvers::InProcessResolver(
+        "stand-still",
+        [](const Scene<float>& scene) {
+            std::vector<FrameResult<float>> frames(scene.moves.size());
+            for (FrameResult<float>& f : frames) f.position = scene.box.pos;
+            return frames;
+        },
+        nullptr);
+}
 
 TEST(CoverageFloors, tagsNeverComeFromTheResolverUnderTest) {
     // A claim the resolver does not enter (the reference against substeps), so it holds with
@@ -99,12 +95,9 @@ TEST(CoverageFloors, tagsNeverComeFromTheResolverUnderTest) {
     RunOptions options;
     options.cases = 200;
     const PropertyOutcome builtIn = p.run(options);
-    StandStillRunner standStill;
-    PropertyOutcome outside;
-    {
-        const ScopedSceneRunner<float> use(standStill);
-        outside = p.run(options);
-    }
+    resolvers::InProcessResolver still = standStill();
+    options.resolver = &still;
+    const PropertyOutcome outside = p.run(options);
     EXPECT_TRUE(builtIn.passed && outside.passed) << builtIn.message << outside.message;
     EXPECT_GT(builtIn.tagCounts.at("hit"), 0);
     EXPECT_EQ(outside.tagCounts, builtIn.tagCounts);

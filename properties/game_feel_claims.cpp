@@ -35,8 +35,8 @@ bool standsOn(const oracle::ExactTileMap& map, const Scene<T>& scene, Vec2<T> po
 /// at time 0) and keeps its height bit for bit, and its x too when it does not walk; empty when
 /// that holds.
 template <class T>
-std::string keepsStanding(const Scene<T>& scene, Support support) {
-    const std::vector<FrameResult<T>> frames = resolveUnderTest(scene);
+std::string keepsStanding(const Scene<T>& scene, SceneResolver& resolver, Support support) {
+    const std::vector<FrameResult<T>> frames = framesFrom(resolver, scene);
     const std::vector<Vec2<T>> starts = frameStarts(scene, frames);
     const oracle::ExactTileMap map = oracle::toExact(scene.map);
     const char* what = support == Support::Platform ? "a platform" : "a floor";
@@ -61,15 +61,15 @@ std::string keepsStanding(const Scene<T>& scene, Support support) {
 /// floor is a solid or a one-way tile's top). Every frame that starts on a floor is checked, so
 /// a box that sinks into or falls through the floor fails.
 template <class T>
-std::string restingContactIsStable(const Scene<T>& scene) {
-    return keepsStanding(scene, Support::Floor);
+std::string restingContactIsStable(const Scene<T>& scene, SceneResolver& resolver) {
+    return keepsStanding(scene, resolver, Support::Floor);
 }
 
 /// A box standing on a one-way tile's top and moving down, at any speed, lands on it at once
 /// and keeps its height: it never falls through a platform it stood on.
 template <class T>
-std::string neverFallsThroughAPlatformItStoodOn(const Scene<T>& scene) {
-    return keepsStanding(scene, Support::Platform);
+std::string neverFallsThroughAPlatformItStoodOn(const Scene<T>& scene, SceneResolver& resolver) {
+    return keepsStanding(scene, resolver, Support::Platform);
 }
 
 /// A platform stops a box only on its top face, and only a box whose bottom is at or above that
@@ -78,8 +78,8 @@ std::string neverFallsThroughAPlatformItStoodOn(const Scene<T>& scene) {
 /// another normal than (0, -1). The frame's start is enough: a second step moves down only if
 /// the first did, so the bottom at a second step's start is no higher than at the frame's.
 template <class T>
-std::string neverBlockedByAPlatformFromBelow(const Scene<T>& scene) {
-    const std::vector<FrameResult<T>> frames = resolveUnderTest(scene);
+std::string neverBlockedByAPlatformFromBelow(const Scene<T>& scene, SceneResolver& resolver) {
+    const std::vector<FrameResult<T>> frames = framesFrom(resolver, scene);
     const std::vector<Vec2<T>> starts = frameStarts(scene, frames);
     const oracle::ExactTileMap map = oracle::toExact(scene.map);
     for (std::size_t f = 0; f < frames.size(); ++f) {
@@ -100,8 +100,8 @@ std::string neverBlockedByAPlatformFromBelow(const Scene<T>& scene) {
 /// a wall stops it on the same face at the same time: no snag on the seams between floor tiles
 /// or platform tiles.
 template <class T>
-std::string slidingAlongFloorNeverSnags(const Scene<T>& scene) {
-    const std::vector<FrameResult<T>> frames = resolveUnderTest(scene);
+std::string slidingAlongFloorNeverSnags(const Scene<T>& scene, SceneResolver& resolver) {
+    const std::vector<FrameResult<T>> frames = framesFrom(resolver, scene);
     const std::vector<Vec2<T>> starts = frameStarts(scene, frames);
     const oracle::ExactTileMap map = oracle::toExact(scene.map);
     for (std::size_t f = 0; f < frames.size(); ++f) {
@@ -127,13 +127,50 @@ std::string slidingAlongFloorNeverSnags(const Scene<T>& scene) {
     return {};
 }
 
-template std::string restingContactIsStable<float>(const Scene<float>&);
-template std::string restingContactIsStable<double>(const Scene<double>&);
-template std::string slidingAlongFloorNeverSnags<float>(const Scene<float>&);
-template std::string slidingAlongFloorNeverSnags<double>(const Scene<double>&);
-template std::string neverFallsThroughAPlatformItStoodOn<float>(const Scene<float>&);
-template std::string neverFallsThroughAPlatformItStoodOn<double>(const Scene<double>&);
-template std::string neverBlockedByAPlatformFromBelow<float>(const Scene<float>&);
-template std::string neverBlockedByAPlatformFromBelow<double>(const Scene<double>&);
+template std::string restingContactIsStable<float>(const Scene<float>&, SceneResolver&);
+template std::string restingContactIsStable<double>(const Scene<double>&, SceneResolver&);
+template std::string slidingAlongFloorNeverSnags<float>(const Scene<float>&, SceneResolver&);
+template std::string slidingAlongFloorNeverSnags<double>(const Scene<double>&, SceneResolver&);
+template std::string neverFallsThroughAPlatformItStoodOn<float>(const Scene<float>&, SceneResolver&);
+template std::string neverFallsThroughAPlatformItStoodOn<double>(const Scene<double>&, SceneResolver&);
+template std::string neverBlockedByAPlatformFromBelow<float>(const Scene<float>&, SceneResolver&);
+template std::string neverBlockedByAPlatformFromBelow<double>(const Scene<double>&, SceneResolver&);
+
+// ---- The claims of this file, with their properties (claim.h) ----------------------------------
+
+template <class T>
+std::vector<Claim<T>> gameFeelClaims() {
+    using S = ClaimScope;
+    return {
+        {"restingContactIsStable",
+         &restingContactIsStable<T>,
+         S::Safety,
+         nullptr,
+         {{"restingContactIsStable", Family::Resting, {{"touch-at-0", 0.3}}}}},
+        {"slidingAlongFloorNeverSnags",
+         &slidingAlongFloorNeverSnags<T>,
+         S::Safety,
+         nullptr,
+         {{"slidingAlongFloorNeverSnags", Family::SeamLanding, {{"seam", 0.1}, {"touch-at-0", 0.2}}},
+          {"neverSnagsOnAPlatformSeam",
+           Family::PlatformWalk,
+           {{"on-platform", 0.75}, {"one-way-seam", 0.1}}}}},
+        {"neverFallsThroughAPlatformItStoodOn",
+         &neverFallsThroughAPlatformItStoodOn<T>,
+         S::Safety,
+         nullptr,
+         {{"neverFallsThroughAPlatformItStoodOn", Family::PlatformWalk, {{"on-platform", 0.75}}}}},
+        {"neverBlockedByAPlatformFromBelow",
+         &neverBlockedByAPlatformFromBelow<T>,
+         S::Safety,
+         nullptr,
+         {{"neverBlockedByAPlatformFromBelow",
+           Family::PlatformJump,
+           {{"in-one-way", 0.3}, {"one-way-hit", 0.15}}}}},
+    };
+}
+
+template std::vector<Claim<float>> gameFeelClaims<float>();
+template std::vector<Claim<double>> gameFeelClaims<double>();
 
 }  // namespace tilesweep::properties

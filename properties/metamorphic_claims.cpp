@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
+#include <utility>
 
 namespace tilesweep::properties {
 
@@ -44,29 +46,37 @@ Scene<T> stillScene(Scene<T> scene) {
     return scene;
 }
 
+/// The still scene, and when the map has a tile to start in, the still scene inside it.
 template <class T>
-std::string zeroMoveChangesNothing(const Scene<T>& scene) {
-    const Scene<T> still = stillScene(scene);
+std::vector<Scene<T>> zeroMoveScenes(const Scene<T>& scene) {
+    std::vector<Scene<T>> scenes{stillScene(scene)};
     const std::vector<std::uint8_t>& cells =
         std::find(scene.map.oneWay.begin(), scene.map.oneWay.end(), std::uint8_t{1}) != scene.map.oneWay.end()
             ? scene.map.oneWay
             : scene.map.solid;
     const auto first = std::find(cells.begin(), cells.end(), std::uint8_t{1});
-    Scene<T> inside = still;
-    bool hasInside = first != cells.end();
-    if (hasInside) {
-        const auto index = static_cast<std::int32_t>(first - cells.begin());
-        const T i = static_cast<T>(index % scene.map.columns);
-        const T j = static_cast<T>(index / scene.map.columns);
-        inside.box.pos = {scene.map.origin.x + (i + T(0.25)) * scene.map.tileSize.x,
-                          scene.map.origin.y + (j + T(0.25)) * scene.map.tileSize.y};
-        hasInside = std::isfinite(inside.box.pos.x) && std::isfinite(inside.box.pos.y);
-    }
-    if (!hasInside) return zeroMoveChangedNothing(still, resolveUnderTest(still));
-    const std::vector<std::vector<FrameResult<T>>> both = resolveUnderTest(still, inside);
-    if (std::string why = zeroMoveChangedNothing(still, both[0]); !why.empty()) return why;
-    if (std::string why = zeroMoveChangedNothing(inside, both[1]); !why.empty())
-        return "inside a tile: " + why;
+    if (first == cells.end()) return scenes;
+    Scene<T> inside = scenes.front();
+    const auto index = static_cast<std::int32_t>(first - cells.begin());
+    const T i = static_cast<T>(index % scene.map.columns);
+    const T j = static_cast<T>(index / scene.map.columns);
+    inside.box.pos = {scene.map.origin.x + (i + T(0.25)) * scene.map.tileSize.x,
+                      scene.map.origin.y + (j + T(0.25)) * scene.map.tileSize.y};
+    if (std::isfinite(inside.box.pos.x) && std::isfinite(inside.box.pos.y))
+        scenes.push_back(std::move(inside));
+    return scenes;
+}
+
+template <class T>
+std::string zeroMoveChangesNothing(const Scene<T>& scene, SceneResolver& resolver) {
+    const std::vector<Scene<T>> scenes = zeroMoveScenes(scene);
+    resolvers::SceneBatch<T> batch;
+    for (const Scene<T>& s : scenes) batch.push_back(&s);
+    const std::vector<std::vector<FrameResult<T>>> frames = framesFrom(resolver, batch);
+    if (std::string why = zeroMoveChangedNothing(scenes[0], frames[0]); !why.empty()) return why;
+    if (scenes.size() == 2)
+        if (std::string why = zeroMoveChangedNothing(scenes[1], frames[1]); !why.empty())
+            return "inside a tile: " + why;
     return {};
 }
 
@@ -74,10 +84,13 @@ std::string zeroMoveChangesNothing(const Scene<T>& scene) {
 /// decision and time unchanged, bit for bit (scaling by a power of two is exact, and so is
 /// every rounding after it, away from overflow and subnormals).
 template <class T>
-std::string scalingByPowerOfTwoScalesTheResult(const Scene<T>& scene) {
-    constexpr T kScale = 8;
+constexpr T kScale = 8;
+
+/// The scene with every length times kScale, when that is another valid scene of finite values.
+template <class T>
+std::optional<Scene<T>> scaledScene(const Scene<T>& scene) {
     Scene<T> big = scene;
-    const auto scale = [](Vec2<T>& v) { v = {v.x * kScale, v.y * kScale}; };
+    const auto scale = [](Vec2<T>& v) { v = {v.x * kScale<T>, v.y * kScale<T>}; };
     scale(big.map.origin);
     scale(big.map.tileSize);
     scale(big.box.pos);
@@ -89,10 +102,17 @@ std::string scalingByPowerOfTwoScalesTheResult(const Scene<T>& scene) {
                   std::isfinite(big.box.pos.x) && std::isfinite(big.box.pos.y) &&
                   std::isfinite(big.box.size.x) && std::isfinite(big.box.size.y);
     for (const auto& m : big.moves) finite = finite && std::isfinite(m.x) && std::isfinite(m.y);
-    if (!finite || validateTileMap(big.map.view()) != MapError::None) return {};
-    std::vector<std::vector<FrameResult<T>>> both = resolveUnderTest(scene, big);
+    if (!finite || validateTileMap(big.map.view()) != MapError::None) return std::nullopt;
+    return big;
+}
+
+template <class T>
+std::string scalingByPowerOfTwoScalesTheResult(const Scene<T>& scene, SceneResolver& resolver) {
+    const std::optional<Scene<T>> big = scaledScene(scene);
+    if (!big) return {};
+    std::vector<std::vector<FrameResult<T>>> both = framesFrom(resolver, scene, *big);
     std::vector<FrameResult<T>>& expected = both[0];
-    for (auto& f : expected) f.position = {f.position.x * kScale, f.position.y * kScale};
+    for (auto& f : expected) f.position = {f.position.x * kScale<T>, f.position.y * kScale<T>};
     return diffFrames(both[1], expected);
 }
 
@@ -100,17 +120,17 @@ std::string scalingByPowerOfTwoScalesTheResult(const Scene<T>& scene) {
 /// normals flipped on that axis, the same times, and the other axis's position unchanged. A map
 /// with one-way tiles is mirrored about x = 0 only (their rule is symmetric in x, not in y).
 template <class T, Axis kAxis>
-std::string mirroringMirrorsTheResult(const Scene<T>& scene) {
+std::optional<Scene<T>> mirroredScene(const Scene<T>& scene) {
     const bool onX = kAxis == Axis::X;
     // A one-way tile blocks only downward motion: mirrored about y = 0 it is another scene.
     if (!onX && std::find(scene.map.oneWay.begin(), scene.map.oneWay.end(), std::uint8_t{1}) !=
                     scene.map.oneWay.end())
-        return {};
+        return std::nullopt;
     const T pos = onX ? scene.box.pos.x : scene.box.pos.y;
     const T size = onX ? scene.box.size.x : scene.box.size.y;
     const T mirroredPos = -(pos + size);
     if (oracle::toRational(mirroredPos) != -(oracle::toRational(pos) + oracle::toRational(size)))
-        return {};  // not exact: no claim
+        return std::nullopt;  // not exact: no claim
     Scene<T> m = scene;
     const std::int32_t count = onX ? scene.map.columns : scene.map.rows;
     const T origin = onX ? scene.map.origin.x : scene.map.origin.y;
@@ -134,7 +154,15 @@ std::string mirroringMirrorsTheResult(const Scene<T>& scene) {
             m.map.solid[to] = scene.map.solid[from];
             if (!scene.map.oneWay.empty()) m.map.oneWay[to] = scene.map.oneWay[from];
         }
-    std::vector<std::vector<FrameResult<T>>> both = resolveUnderTest(scene, m);
+    return m;
+}
+
+template <class T, Axis kAxis>
+std::string mirroringMirrorsTheResult(const Scene<T>& scene, SceneResolver& resolver) {
+    const bool onX = kAxis == Axis::X;
+    const std::optional<Scene<T>> m = mirroredScene<T, kAxis>(scene);
+    if (!m) return {};
+    std::vector<std::vector<FrameResult<T>>> both = framesFrom(resolver, scene, *m);
     std::vector<FrameResult<T>>& expected = both[0];
     for (auto& f : expected) {
         for (auto& c : f.contacts) {
@@ -165,7 +193,7 @@ std::string mirroringMirrorsTheResult(const Scene<T>& scene) {
 /// Moving the map and the box by three whole tiles on each axis keeps every decision and time
 /// (when the translated values are exact; otherwise the scenes differ and nothing is claimed).
 template <class T>
-std::string translatingByWholeTilesKeepsDecisions(const Scene<T>& scene) {
+std::optional<Scene<T>> translatedScene(const Scene<T>& scene) {
     Scene<T> moved = scene;
     const auto shift = [](T v, T by, T& out) {
         out = v + by;
@@ -176,11 +204,18 @@ std::string translatingByWholeTilesKeepsDecisions(const Scene<T>& scene) {
     if (!shift(scene.map.origin.x, bx, moved.map.origin.x) ||
         !shift(scene.map.origin.y, by, moved.map.origin.y) || !shift(scene.box.pos.x, bx, moved.box.pos.x) ||
         !shift(scene.box.pos.y, by, moved.box.pos.y))
-        return {};
-    if (validateTileMap(moved.map.view()) != MapError::None) return {};
+        return std::nullopt;
+    if (validateTileMap(moved.map.view()) != MapError::None) return std::nullopt;
+    return moved;
+}
+
+template <class T>
+std::string translatingByWholeTilesKeepsDecisions(const Scene<T>& scene, SceneResolver& resolver) {
+    const std::optional<Scene<T>> moved = translatedScene(scene);
+    if (!moved) return {};
     Compare what;
     what.positionX = what.positionY = false;
-    std::vector<std::vector<FrameResult<T>>> both = resolveUnderTest(moved, scene);
+    std::vector<std::vector<FrameResult<T>>> both = framesFrom(resolver, *moved, scene);
     std::vector<FrameResult<T>>& got = both[0];
     std::vector<FrameResult<T>>& expected = both[1];
     got.resize(1);  // later frames start from rounded positions that may differ
@@ -188,15 +223,86 @@ std::string translatingByWholeTilesKeepsDecisions(const Scene<T>& scene) {
     return diffFrames(got, expected, what);
 }
 
-template std::string zeroMoveChangesNothing<float>(const Scene<float>&);
-template std::string zeroMoveChangesNothing<double>(const Scene<double>&);
-template std::string scalingByPowerOfTwoScalesTheResult<float>(const Scene<float>&);
-template std::string scalingByPowerOfTwoScalesTheResult<double>(const Scene<double>&);
-template std::string translatingByWholeTilesKeepsDecisions<float>(const Scene<float>&);
-template std::string translatingByWholeTilesKeepsDecisions<double>(const Scene<double>&);
-template std::string mirroringMirrorsTheResult<float, Axis::X>(const Scene<float>&);
-template std::string mirroringMirrorsTheResult<float, Axis::Y>(const Scene<float>&);
-template std::string mirroringMirrorsTheResult<double, Axis::X>(const Scene<double>&);
-template std::string mirroringMirrorsTheResult<double, Axis::Y>(const Scene<double>&);
+/// The scene and its transformed twin, when there is one.
+template <class T>
+std::vector<Scene<T>> withTwin(const Scene<T>& scene, std::optional<Scene<T>> twin) {
+    if (!twin) return {};
+    return {scene, std::move(*twin)};
+}
+
+template <class T>
+std::vector<Scene<T>> zeroMoveAsks(const Scene<T>& scene) {
+    return zeroMoveScenes(scene);
+}
+template <class T>
+std::vector<Scene<T>> scalingAsks(const Scene<T>& scene) {
+    return withTwin(scene, scaledScene(scene));
+}
+template <class T, Axis kAxis>
+std::vector<Scene<T>> mirroringAsks(const Scene<T>& scene) {
+    return withTwin(scene, mirroredScene<T, kAxis>(scene));
+}
+template <class T>
+std::vector<Scene<T>> translatingAsks(const Scene<T>& scene) {
+    return withTwin(scene, translatedScene(scene));
+}
+
+template std::vector<Scene<float>> zeroMoveAsks<float>(const Scene<float>&);
+template std::vector<Scene<double>> zeroMoveAsks<double>(const Scene<double>&);
+template std::vector<Scene<float>> scalingAsks<float>(const Scene<float>&);
+template std::vector<Scene<double>> scalingAsks<double>(const Scene<double>&);
+template std::vector<Scene<float>> mirroringAsks<float, Axis::X>(const Scene<float>&);
+template std::vector<Scene<float>> mirroringAsks<float, Axis::Y>(const Scene<float>&);
+template std::vector<Scene<double>> mirroringAsks<double, Axis::X>(const Scene<double>&);
+template std::vector<Scene<double>> mirroringAsks<double, Axis::Y>(const Scene<double>&);
+template std::vector<Scene<float>> translatingAsks<float>(const Scene<float>&);
+template std::vector<Scene<double>> translatingAsks<double>(const Scene<double>&);
+template std::string zeroMoveChangesNothing<float>(const Scene<float>&, SceneResolver&);
+template std::string zeroMoveChangesNothing<double>(const Scene<double>&, SceneResolver&);
+template std::string scalingByPowerOfTwoScalesTheResult<float>(const Scene<float>&, SceneResolver&);
+template std::string scalingByPowerOfTwoScalesTheResult<double>(const Scene<double>&, SceneResolver&);
+template std::string translatingByWholeTilesKeepsDecisions<float>(const Scene<float>&, SceneResolver&);
+template std::string translatingByWholeTilesKeepsDecisions<double>(const Scene<double>&, SceneResolver&);
+template std::string mirroringMirrorsTheResult<float, Axis::X>(const Scene<float>&, SceneResolver&);
+template std::string mirroringMirrorsTheResult<float, Axis::Y>(const Scene<float>&, SceneResolver&);
+template std::string mirroringMirrorsTheResult<double, Axis::X>(const Scene<double>&, SceneResolver&);
+template std::string mirroringMirrorsTheResult<double, Axis::Y>(const Scene<double>&, SceneResolver&);
+
+// ---- The claims of this file, with their properties (claim.h) ----------------------------------
+
+template <class T>
+std::vector<Claim<T>> metamorphicClaims() {
+    using S = ClaimScope;
+    return {
+        {"zeroMoveChangesNothing",
+         &zeroMoveChangesNothing<T>,
+         S::Safety,
+         &zeroMoveAsks<T>,
+         {{"zeroMoveChangesNothing", Family::Mixed, {}}}},
+        {"scalingByPowerOfTwoScalesTheResult",
+         &scalingByPowerOfTwoScalesTheResult<T>,
+         S::Safety,
+         &scalingAsks<T>,
+         {{"scalingByPowerOfTwoScalesTheResult", Family::Mixed, {{"hit", 0.2}, {"tie", 0.02}}}}},
+        {"mirroringXMirrorsTheResult",
+         &mirroringMirrorsTheResult<T, Axis::X>,
+         S::Safety,
+         &mirroringAsks<T, Axis::X>,
+         {{"mirroringXMirrorsTheResult", Family::Mixed, {{"hit", 0.2}}}}},
+        {"mirroringYMirrorsTheResult",
+         &mirroringMirrorsTheResult<T, Axis::Y>,
+         S::Safety,
+         &mirroringAsks<T, Axis::Y>,
+         {{"mirroringYMirrorsTheResult", Family::Mixed, {{"hit", 0.2}}}}},
+        {"translatingByWholeTilesKeepsDecisions",
+         &translatingByWholeTilesKeepsDecisions<T>,
+         S::Safety,
+         &translatingAsks<T>,
+         {{"translatingByWholeTilesKeepsDecisions", Family::Mixed, {{"hit", 0.2}}}}},
+    };
+}
+
+template std::vector<Claim<float>> metamorphicClaims<float>();
+template std::vector<Claim<double>> metamorphicClaims<double>();
 
 }  // namespace tilesweep::properties

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "property_suite.h"
 
+#include "answer_cache.h"
 #include "coverage_judgement.h"
 #include "generators.h"
 #include "scene_checks.h"
-#include "scene_runner.h"
 
 #include "tilesweep/oracle/exact/exact_resolve.h"
+#include "tilesweep/resolvers/resolver_registry.h"
 #include "tilesweep/scene/file_write.h"
 #include "tilesweep/scene/render.h"
 #include "tilesweep/scene/scalar_text.h"
@@ -19,7 +20,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <sstream>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 
 namespace tilesweep::properties {
@@ -47,12 +49,6 @@ std::uint64_t coverageRoundSeed(std::uint64_t seed, int round) {
     return h ^ (h >> 31);
 }
 
-std::string percent(double share) {
-    char text[32];
-    std::snprintf(text, sizeof text, share < 0.01 ? "%.2f%%" : "%.1f%%", 100 * share);
-    return text;
-}
-
 /// Judges every floor on the cases seen so far; fills the outcome's coverage fields when
 /// `final`. Returns whether some floor is still undecided.
 bool judgeFloors(const std::vector<CoverageFloor>& floors, PropertyOutcome& outcome, bool final) {
@@ -67,156 +63,200 @@ bool judgeFloors(const std::vector<CoverageFloor>& floors, PropertyOutcome& outc
         const double seen = outcome.cases > 0 ? double(hits) / outcome.cases : 0.0;
         std::string& text =
             verdict == FloorVerdict::Short ? outcome.coverageShortfall : outcome.coverageUndecided;
-        text += (text.empty() ? "" : "; ") + std::string("'") + floor.tag + "' in " + percent(seen) + " of " +
-                std::to_string(outcome.cases) + " cases (between " + percent(share.low) + " and " +
-                percent(share.high) + " at error rate 1e-9), " +
+        text += (text.empty() ? "" : "; ") + std::string("'") + floor.tag + "' in " +
+                detail::percentText(seen) + " of " + std::to_string(outcome.cases) + " cases (between " +
+                detail::percentText(share.low) + " and " + detail::percentText(share.high) +
+                " at error rate 1e-9), " +
                 (verdict == FloorVerdict::Short ? "below" : "not settled against") + " the floor of " +
-                percent(floor.fraction);
+                detail::percentText(floor.fraction);
     }
     return undecided;
 }
 
-/// One RapidCheck run of a claim: `cases` cases from `seed`.
+/// RapidCheck's size for case `i` of `cases`: every size from 0 to kMaxSize, evenly spread, the
+/// largest reached.
+int sizeFor(int i, int cases) {
+    constexpr int kMaxSize = 100;
+    if (cases <= 1) return kMaxSize;
+    return static_cast<int>(static_cast<long long>(i) * kMaxSize / (cases - 1));
+}
+
+/// The coverage tags of one case, as the floors count them: its family, the classes of its
+/// scene, and the rounding rule's exception per family.
+template <class T>
+std::vector<std::string> caseTags(const GeneratedScene<T>& g) {
+    std::vector<std::string> tags{std::string("family:") + familyName(g.family)};
+    for (std::string& tag : classifyScene(g.scene)) {
+        if (tag == "rounded-down") tags.push_back(std::string("rounded-down@") + familyName(g.family));
+        tags.push_back(std::move(tag));
+    }
+    return tags;
+}
+
+/// One drawn case: its value, and what it shrinks to.
+template <class T>
+struct DrawnCase {
+    rc::Shrinkable<GeneratedScene<T>> shrinkable;
+    GeneratedScene<T> value;
+};
+
+/// Every scene the claim asks for on `cases`, to the cache in one batch, when the resolver is in
+/// another process (an in-process resolver gains nothing from a batch).
+template <class T>
+void askInOneBatch(const Claim<T>& claim, const std::vector<const GeneratedScene<T>*>& cases,
+                   AnswerCache& cache) {
+    if (!cache.outside()) return;
+    std::vector<Scene<T>> asked;
+    for (const GeneratedScene<T>* g : cases)
+        for (Scene<T>& s : scenesAskedBy(claim, g->scene)) asked.push_back(std::move(s));
+    cache.fill(asked);
+}
+
+/// Shrinks a failing case, greedily as RapidCheck does: the first shrink that still fails takes
+/// its place, until none does or the budget is spent. Each step's candidates are asked for in
+/// batches. Returns whether the budget stopped it.
+template <class T>
+bool shrinkCase(const Claim<T>& claim, DrawnCase<T>& failing, std::string& message, AnswerCache& cache,
+                double budgetSeconds) {
+    constexpr std::size_t kCandidatesPerBatch = 16;
+    const auto started = std::chrono::steady_clock::now();
+    const auto spent = [&] {
+        return budgetSeconds > 0 &&
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >
+                   budgetSeconds;
+    };
+    for (bool progressed = true; progressed;) {
+        progressed = false;
+        rc::Seq<rc::Shrinkable<GeneratedScene<T>>> shrinks = failing.shrinkable.shrinks();
+        for (bool more = true; more && !progressed;) {
+            if (spent()) return true;
+            std::vector<DrawnCase<T>> candidates;
+            while (candidates.size() < kCandidatesPerBatch) {
+                rc::Maybe<rc::Shrinkable<GeneratedScene<T>>> next = shrinks.next();
+                if (!next) {
+                    more = false;
+                    break;
+                }
+                try {
+                    GeneratedScene<T> value = next->value();
+                    candidates.push_back({std::move(*next), std::move(value)});
+                } catch (const rc::GenerationFailure&) {
+                }
+            }
+            std::vector<const GeneratedScene<T>*> values;
+            for (const DrawnCase<T>& c : candidates) values.push_back(&c.value);
+            cache.clear();
+            askInOneBatch(claim, values, cache);
+            for (DrawnCase<T>& c : candidates) {
+                std::string why = checkClaim(claim, c.value.scene, cache);
+                if (why.empty()) continue;
+                failing = std::move(c);
+                message = std::move(why);
+                progressed = true;
+                break;
+            }
+        }
+    }
+    return false;
+}
+
+/// One round of a claim: `cases` cases drawn from `seed`, their scenes asked for in one batch,
+/// then each judged. With `options.shrink` the round stops at its first failure and shrinks it;
+/// without, every case is judged and the failures counted, the first one kept unshrunk.
 template <class T>
 PropertyOutcome runClaimOnce(const std::string& propertyName, const Claim<T>& claim, Family family,
-                             const RunOptions& options) {
+                             const RunOptions& options, AnswerCache& cache) {
     PropertyOutcome outcome;
-    GeneratedScene<T> lastFailure;
-    std::string lastMessage;
-    bool failed = false;
-    int counted = 0;  // failing cases, when counting (!options.shrink)
-    std::chrono::steady_clock::time_point firstFailure{};
-    bool shrinkingStopped = false;
-    const auto property = [&] {
-        // Past the shrinking budget every further candidate counts as passing, unjudged, so that
-        // RapidCheck ends with the smallest failing case found so far (with an outside resolver
-        // each candidate is a request: an engine that starts slowly would shrink for minutes).
-        if (failed && options.shrink && options.shrinkSeconds > 0 &&
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - firstFailure).count() >
-                options.shrinkSeconds) {
-            shrinkingStopped = true;
-            return;
-        }
-        const GeneratedScene<T> g = *genScene<T>(family);
-        // One RC_TAG per case (a second would replace the first): the classes, space-separated.
-        std::string tags = std::string("family:") + familyName(g.family);
-        for (const std::string& tag : classifyScene(g.scene)) {
-            tags += " " + tag;
-            // The rounding rule's exception per family, for the share each family reaches.
-            if (tag == "rounded-down") tags += std::string(" rounded-down@") + familyName(g.family);
-        }
-        RC_TAG(tags);
-        std::string message;
+    const rc::Gen<GeneratedScene<T>> gen = genScene<T>(family);
+    rc::Random random(options.seed);
+    std::vector<DrawnCase<T>> drawn;
+    drawn.reserve(static_cast<std::size_t>(std::max(options.cases, 0)));
+    for (int i = 0, discarded = 0;
+         static_cast<int>(drawn.size()) < options.cases && discarded <= 10 * options.cases; ++i) {
+        rc::Shrinkable<GeneratedScene<T>> shrinkable = gen(random.split(), sizeFor(i, options.cases));
         try {
-            message = checkClaim(claim, g.scene);
-        } catch (const RehearsalDone&) {
-            return;  // a rehearsal (scene_runner.h): the case's scenes are noted, not judged
+            GeneratedScene<T> value = shrinkable.value();
+            drawn.push_back({std::move(shrinkable), std::move(value)});
+        } catch (const rc::GenerationFailure&) {
+            ++discarded;
         }
-        if (!message.empty()) {
-            if (!failed && options.onFirstFailure) options.onFirstFailure(message, formatScene(g.scene));
-            if (!options.shrink) {  // counting: every case is judged; the first failure is kept
-                if (!failed) {
-                    lastFailure = g;
-                    lastMessage = message;
-                }
-                failed = true;
-                ++counted;
-                return;
-            }
-            // RapidCheck shrinks by keeping failing cases, so the last failure seen is the
-            // minimal one it reports.
-            if (!failed) firstFailure = std::chrono::steady_clock::now();
-            lastFailure = g;
-            lastMessage = message;
-            failed = true;
-            RC_FAIL(message);
-        }
-    };
-    rc::detail::TestParams params;
-    params.seed = options.seed;
-    params.maxSuccess = options.cases;
-    params.disableShrinking = !options.shrink;
-    rc::detail::TestMetadata metadata;
-    metadata.id = propertyName;
-    metadata.description = propertyName;
-    const rc::detail::TestResult result = rc::detail::checkTestable(property, metadata, params);
-
-    rc::detail::SuccessResult success{};
-    if (result.template is<rc::detail::SuccessResult>()) {
-        success = result.template get<rc::detail::SuccessResult>();
-        outcome.cases = success.numSuccess;
-        for (const auto& [tags, count] : success.distribution)
-            for (const std::string& shown : tags) {
-                // RC_TAG shows its value, so the string arrives in quotes.
-                const bool quoted = shown.size() >= 2 && shown.front() == '"' && shown.back() == '"';
-                std::istringstream words(quoted ? shown.substr(1, shown.size() - 2) : shown);
-                std::string tag;
-                while (words >> tag) outcome.tagCounts[tag] += count;
-            }
-        outcome.passed = counted == 0;
-        if (counted > 0) {
-            outcome.cases = success.numSuccess - counted;
-            outcome.failedCases = counted;
-            outcome.sceneLine = formatScene(lastFailure.scene);
-            outcome.failure = lastMessage;
-            outcome.message = lastMessage + "\n(" + std::to_string(counted) + " of " +
-                              std::to_string(success.numSuccess) + " cases failed; the first, not shrunk) " +
-                              familyName(lastFailure.family) + " scene: " + outcome.sceneLine;
-        }
-    } else if (result.template is<rc::detail::FailureResult>()) {
-        const auto failure = result.template get<rc::detail::FailureResult>();
-        outcome.cases = failure.numSuccess;
-        outcome.failedCases = 1;
-        if (shrinkingStopped) lastMessage += " (shrinking stopped after the --shrink-seconds budget)";
-        outcome.message = lastMessage + "\n" +
-                          (failed ? familyName(lastFailure.family) + std::string(" scene: ") +
-                                        formatScene(lastFailure.scene)
-                                  : std::string());
-        if (failed) {
-            outcome.sceneLine = formatScene(lastFailure.scene);
-            outcome.failure = lastMessage;
-        }
-        if (failed && !options.corpusDir.empty()) {
-            const std::string sceneLine = formatScene(lastFailure.scene);
-            char hash[17];
-            std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(fnv1a(sceneLine)));
-            const std::filesystem::path file = std::filesystem::path(options.corpusDir) /
-                                               (propertyName + "-" + std::string(hash, 8) + ".jsonl");
-            // An outside resolver's failure carries its command and its answer beside the exact
-            // one; the picture shows what it did, or the exact frames when it gave no answer.
-            std::string extra;
-            std::vector<FrameResult<T>> pictured;
-            if (SceneRunner<T>* outside = currentSceneRunner<T>()) {
-                nlohmann::ordered_json fields;
-                fields["resolver_cmd"] = outside->name();
-                const std::string answer = outside->answerText(lastFailure.scene);
-                const nlohmann::ordered_json parsedAnswer =
-                    nlohmann::ordered_json::parse(answer, nullptr, false);
-                fields["resolver_answer"] =
-                    parsedAnswer.is_discarded() ? nlohmann::ordered_json(answer) : parsedAnswer;
-                const std::vector<FrameResult<T>> exact = oracle::resolveSceneExactRounded(lastFailure.scene);
-                fields["exact_answer"] = nlohmann::ordered_json::parse(formatFrames(exact));
-                extra = fields.dump();
-                try {
-                    pictured = resolveUnderTest(lastFailure.scene);
-                } catch (const std::exception&) {
-                    pictured = exact;
-                }
-            } else {
-                pictured = runScene(lastFailure.scene);
-            }
-            writeAtomically(file, corpusLine(sceneLine, propertyName, options.seed, detail::scalarName<T>(),
-                                             lastMessage, extra) +
-                                      "\n");
-            outcome.corpusFile = file.string();
-            std::filesystem::path picture = file;
-            picture.replace_extension(".svg");
-            writeAtomically(picture, renderSceneSvg(lastFailure.scene, pictured));
-            outcome.pictureFile = picture.string();
-        }
-    } else {
-        outcome.message = "RapidCheck gave up";
     }
+    std::vector<const GeneratedScene<T>*> values;
+    for (const DrawnCase<T>& c : drawn) values.push_back(&c.value);
+    cache.clear();
+    askInOneBatch(claim, values, cache);
+
+    std::optional<std::size_t> firstFailure;
+    std::string message;
+    int counted = 0;
+    for (std::size_t k = 0; k < drawn.size(); ++k) {
+        for (const std::string& tag : caseTags(drawn[k].value)) ++outcome.tagCounts[tag];
+        std::string why = checkClaim(claim, drawn[k].value.scene, cache);
+        if (why.empty()) {
+            ++outcome.cases;
+            continue;
+        }
+        if (!firstFailure) {
+            firstFailure = k;
+            message = why;
+            if (options.onFirstFailure) options.onFirstFailure(why, formatScene(drawn[k].value.scene));
+        }
+        ++counted;
+        if (options.shrink) break;
+    }
+    outcome.passed = counted == 0;
+    if (outcome.passed) return outcome;
+
+    DrawnCase<T> failing = drawn[*firstFailure];
+    outcome.failedCases = counted;
+    if (!options.shrink) {
+        outcome.sceneLine = formatScene(failing.value.scene);
+        outcome.failure = message;
+        outcome.message = message + "\n(" + std::to_string(counted) + " of " + std::to_string(drawn.size()) +
+                          " cases failed; the first, not shrunk) " + familyName(failing.value.family) +
+                          " scene: " + outcome.sceneLine;
+        return outcome;
+    }
+    if (shrinkCase(claim, failing, message, cache, options.shrinkSeconds))
+        message += " (shrinking stopped after the --shrink-seconds budget)";
+    const GeneratedScene<T>& smallest = failing.value;
+    outcome.sceneLine = formatScene(smallest.scene);
+    outcome.failure = message;
+    outcome.message = message + "\n" + familyName(smallest.family) + " scene: " + outcome.sceneLine;
+    if (options.corpusDir.empty()) return outcome;
+
+    char hash[17];
+    std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(fnv1a(outcome.sceneLine)));
+    const std::filesystem::path file =
+        std::filesystem::path(options.corpusDir) / (propertyName + "-" + std::string(hash, 8) + ".jsonl");
+    // An outside resolver's failure carries its command and its answer beside the exact one; the
+    // picture shows what it did, or the exact frames when it gave no answer.
+    const resolvers::Answer<T> answer = resolvers::resolveOne<T>(cache, smallest.scene);
+    std::string extra;
+    std::vector<FrameResult<T>> pictured = answer.frames;
+    if (cache.outside()) {
+        nlohmann::ordered_json fields;
+        fields["resolver_cmd"] = cache.name();
+        const std::string text = !answer.text.empty() ? answer.text
+                                 : answer.answered()  ? formatFrames(answer.frames)
+                                                      : "(no answer: " + answer.failure + ")";
+        const nlohmann::ordered_json parsedAnswer = nlohmann::ordered_json::parse(text, nullptr, false);
+        fields["resolver_answer"] = parsedAnswer.is_discarded() ? nlohmann::ordered_json(text) : parsedAnswer;
+        const std::vector<FrameResult<T>> exact = oracle::resolveSceneExactRounded(smallest.scene);
+        fields["exact_answer"] = nlohmann::ordered_json::parse(formatFrames(exact));
+        extra = fields.dump();
+        if (!answer.answered()) pictured = exact;
+    } else if (!answer.answered()) {
+        pictured = runScene(smallest.scene);
+    }
+    writeAtomically(file, corpusLine(outcome.sceneLine, propertyName, options.seed, detail::scalarName<T>(),
+                                     message, extra) +
+                              "\n");
+    outcome.corpusFile = file.string();
+    std::filesystem::path picture = file;
+    picture.replace_extension(".svg");
+    writeAtomically(picture, renderSceneSvg(smallest.scene, pictured));
+    outcome.pictureFile = picture.string();
     return outcome;
 }
 
@@ -229,6 +269,10 @@ template <class T>
 PropertyOutcome runClaim(const std::string& propertyName, const Claim<T>& claim, Family family,
                          const std::vector<CoverageFloor>& floors, const RunOptions& options) {
     const auto started = std::chrono::steady_clock::now();
+    std::string error;
+    const std::unique_ptr<SceneResolver> core =
+        options.resolver == nullptr ? resolvers::makeResolver("core", error) : nullptr;
+    AnswerCache cache(options.resolver != nullptr ? *options.resolver : *core);
     const long long cap =
         options.maxCases > 0 ? options.maxCases : std::max(8LL * options.cases, kDefaultCoverageCases);
     PropertyOutcome outcome;
@@ -238,7 +282,7 @@ PropertyOutcome runClaim(const std::string& propertyName, const Claim<T>& claim,
             round.seed = coverageRoundSeed(options.seed, r);
             round.cases = static_cast<int>(std::min<long long>(outcome.cases, cap - outcome.cases));
         }
-        PropertyOutcome part = runClaimOnce<T>(propertyName, claim, family, round);
+        PropertyOutcome part = runClaimOnce<T>(propertyName, claim, family, round, cache);
         const int casesBefore = outcome.cases;
         outcome.cases += part.cases;
         for (const auto& [tag, count] : part.tagCounts) outcome.tagCounts[tag] += count;
@@ -263,157 +307,30 @@ PropertyOutcome runClaim(const std::string& propertyName, const Claim<T>& claim,
     return outcome;
 }
 
+/// The property of `claim` over `property`'s family and floors, in T.
 template <class T>
-void addClaim(std::vector<Property>& out, const std::string& propertyName, const std::string& claimName,
-              Family family, std::vector<CoverageFloor> floors) {
-    const Claim<T>* claim = findClaim<T>(claimName);
-    const std::string name = propertyName + "_" + detail::scalarName<T>();
-    out.push_back({name, claimName, claim->scope, detail::scalarName<T>(), floors,
-                   [name, claim, family, floors](const RunOptions& o) {
-                       return runClaim<T>(name, *claim, family, floors, o);
-                   }});
+Property propertyOf(const Claim<T>& claim, const std::string& name, Family family,
+                    std::vector<CoverageFloor> floors) {
+    const std::string scalar = detail::scalarName<T>();
+    const std::string fullName = name + "_" + scalar;
+    const Claim<T>* held = &claim;
+    std::vector<CoverageFloor> judged = floors;
+    return {fullName,
+            claim.name,
+            claim.scope,
+            scalar,
+            std::move(floors),
+            [fullName, held, family, judged](const RunOptions& o) {
+                return runClaim<T>(fullName, *held, family, judged, o);
+            }};
 }
 
+/// Every property of every claim, in T, in the order the claims are gathered (scene_checks.cpp).
 template <class T>
 void addAll(std::vector<Property>& out) {
-    // The floors say what a run must have seen for its pass to mean something.
-    addClaim<T>(out, "matchesExactReferenceBitForBit", "matchesExactReferenceBitForBit", Family::Mixed,
-                {{"hit", 0.2},
-                 {"miss", 0.1},
-                 {"tie", 0.03},
-                 {"touch-at-0", 0.03},
-                 {"two-step", 0.005},
-                 {"family:corner-pass", 0.05},
-                 {"seam", 0.02},
-                 {"far-origin", 0.03}});
-    // The corner, tie and far-origin families must reach the band where the resolver's fast path
-    // cannot decide alone ("fallback": a filtered refinement or the exact lattice).
-    addClaim<T>(out, "decidesCornerPassesExactly", "matchesExactReferenceBitForBit", Family::CornerPass,
-                {{"hit", 0.1}, {"miss", 0.1}, {"fallback", 0.05}});
-    addClaim<T>(out, "settlesCornerTiesByExposedFace", "matchesExactReferenceBitForBit", Family::CornerTie,
-                {{"tie", 0.3}, {"fallback", 0.05}});
-    addClaim<T>(
-        out, "broadphaseOffersEveryBlockingTile", "matchesExactReferenceBitForBit", Family::Random,
-        {{"hit", 0.10}, {"two-step", 0.02}});  // about 18.6% on average, 14.4% in the worst of 4,700 rounds
-    addClaim<T>(out, "neverEndsInsideATileItDidNotStartIn", "neverEndsInsideATileItDidNotStartIn",
-                Family::Mixed, {{"hit", 0.2}, {"rounded-down", 0.002}});
-    addClaim<T>(out, "stopsJustTouching", "stopsJustTouching", Family::Mixed, {{"hit", 0.2}});
-    addClaim<T>(out, "obeysTheSafetyRules", "obeysTheSafetyRules", Family::Mixed, {{"hit", 0.2}});
-    // The rounding rule's family: the exception must change the result in a good share of it.
-    addClaim<T>(out, "roundsFarEdgesByTheAmendedRule", "matchesExactReferenceBitForBit", Family::FarEdge,
-                {{"rounded-down", 0.05}, {"hit", 0.2}});
-    addClaim<T>(out, "neverGetsIntoAWall", "neverGetsIntoAWall", Family::FarEdge, {{"rounded-down", 0.05}});
-    // Events the other families do not aim at: each has its floor.
-    // In double, exact ties whose filter error lies in the band's upper half (filter_band_family.h):
-    // what a halved bound decides wrongly.
-    addClaim<T>(out, "decidesTiesInsideTheFilterBand", "matchesExactReferenceBitForBit", Family::FilterBand,
-                std::is_same<T, double>::value
-                    ? std::vector<CoverageFloor>{{"tie", 0.5}, {"fallback", 0.5}, {"filter-upper-half", 0.5}}
-                    : std::vector<CoverageFloor>{{"tie", 0.5}, {"fallback", 0.5}});
-    // In double, the code only double frames reach (productError's aLow * bLow term, the remainder
-    // test of roundTimeToDouble) on purpose: refinements on inputs of full precision (35%).
-    std::vector<CoverageFloor> fineBits = {
-        {"time-tie", 0.05}, {"reaches-at-end", 0.05}, {"lattice-wide", 0.05}, {"lattice-192", 0.03}};
-    if (std::is_same<T, double>::value) fineBits.push_back({"full-precision-refined", 0.15});
-    addClaim<T>(out, "decidesFineBitsExactly", "matchesExactReferenceBitForBit", Family::FineBits, fineBits);
-    // Float far edges all take the fast path, whose range test has no slack: the float range
-    // test's edge has its own family and floor (decidesRangeEdgeScenesExactly).
-    addClaim<T>(out, "farEdgesNeverEndInsideATile", "neverEndsInsideATileItDidNotStartIn", Family::FarEdge,
-                std::is_same<T, double>::value
-                    ? std::vector<CoverageFloor>{{"rounded-down", 0.05}, {"fallback", 0.05}}
-                    : std::vector<CoverageFloor>{{"rounded-down", 0.05}});
-    addClaim<T>(out, "farEdgesObeyTheSafetyRules", "obeysTheSafetyRules", Family::FarEdge,
-                {{"rounded-down", 0.05}});
-    addClaim<T>(out, "substepOracleFindsNoMissedContact", "substepOracleFindsNoMissedContact", Family::Mixed,
-                {{"hit", 0.2}});
-    // Contact positions: the one new number (a step-1 hit the box slides on from, after t = 0, at a
-    // coordinate T cannot hold) must be reached: about 45%, 36% and 17% at 2,000 cases.
-    addClaim<T>(out, "placesContactsLikeTheExactReference", "placesContactsLikeTheExactReference",
-                Family::Mixed,
-                {{"hit", 0.2},
-                 {"hit-then-slide", 0.2},
-                 {"late-hit-then-slide", 0.15},
-                 {"hit-then-slide-rounded", 0.05}});
-    addClaim<T>(out, "exactReferenceAgreesWithSubsteps", "exactReferenceAgreesWithSubsteps", Family::Mixed,
-                {{"hit", 0.2}, {"touch-at-0", 0.03}});
-    addClaim<T>(out, "zeroMoveChangesNothing", "zeroMoveChangesNothing", Family::Mixed, {});
-    // Bad input, sweepBox, empty maps, huge moves: inputs the other families seldom make.
-    addClaim<T>(out, "badInputIsRejected", "badInputIsRejected", Family::Mixed, {});
-    addClaim<T>(out, "sweepBoxMatchesTheReference", "sweepBoxMatchesTheReference", Family::Mixed,
-                {{"hit", 0.2}, {"tie", 0.03}});
-    addClaim<T>(out, "handlesEmptyMapsAndHugeMovesExactly", "matchesExactReferenceBitForBit", Family::Extreme,
-                {{"empty-map", 0.2}, {"huge-move", 0.3}});
-    addClaim<T>(out, "extremeScenesObeyTheSafetyRules", "obeysTheSafetyRules", Family::Extreme,
-                {{"empty-map", 0.2}, {"huge-move", 0.3}});
-    addClaim<T>(out, "scalingByPowerOfTwoScalesTheResult", "scalingByPowerOfTwoScalesTheResult",
-                Family::Mixed, {{"hit", 0.2}, {"tie", 0.02}});
-    addClaim<T>(out, "mirroringXMirrorsTheResult", "mirroringXMirrorsTheResult", Family::Mixed,
-                {{"hit", 0.2}});
-    addClaim<T>(out, "mirroringYMirrorsTheResult", "mirroringYMirrorsTheResult", Family::Mixed,
-                {{"hit", 0.2}});
-    addClaim<T>(out, "translatingByWholeTilesKeepsDecisions", "translatingByWholeTilesKeepsDecisions",
-                Family::Mixed, {{"hit", 0.2}});
-    addClaim<T>(out, "roundingNearFarCornersStaysOutOfHitTiles", "neverEndsInsideATileItDidNotStartIn",
-                Family::FarSubUlp, {{"far-origin", 0.9}, {"fallback", 0.05}});
-    addClaim<T>(out, "neverTunnelsAtHighSpeed", "matchesExactReferenceBitForBit", Family::HighSpeed,
-                {{"hit", 0.5}});
-    addClaim<T>(out, "restingContactIsStable", "restingContactIsStable", Family::Resting,
-                {{"touch-at-0", 0.3}});
-    addClaim<T>(out, "slidingAlongFloorNeverSnags", "slidingAlongFloorNeverSnags", Family::SeamLanding,
-                {{"seam", 0.1}, {"touch-at-0", 0.2}});
-    // Four classes of inputs random scenes reach rarely, each with a family aimed at it (double
-    // near-ties, the tiny end of the range, capacity boundaries, error codes). Corner entries one
-    // ulp off a tie, whose products differ by less than the filter's bound: the refinement
-    // decides a nonzero sign.
-    // (Float frames hold every product exactly in double: no refinement there, the same claim.)
-    const bool isDouble = std::is_same<T, double>::value;
-    addClaim<T>(out, "decidesNearTiesInsideTheFilterBand", "matchesExactReferenceBitForBit", Family::NearTie,
-                isDouble ? std::vector<CoverageFloor>{{"near-tie-refined", 0.1},
-                                                      {"full-precision-refined", 0.1},
-                                                      {"hit", 0.5}}
-                         : std::vector<CoverageFloor>{{"hit", 0.5}});
-    // The tiny end of the range: scenes scaled by powers of two near the least normal value.
-    addClaim<T>(out, "decidesTinyScenesExactly", "matchesExactReferenceBitForBit", Family::TinyScale,
-                {{"tiny", 0.5}, {"hit", 0.1}});
-    // Capacity boundaries: buffers of exactly the count and the bound, the inline limit, the wide
-    // path at its bound; and the same on every kind of scene.
-    addClaim<T>(out, "storesContactsAtExactCapacity", "storesContactsAtExactCapacity", Family::Capacity,
-                {{"bound-inline-limit", 0.15}, {"bound-wide", 0.15}, {"many-contacts", 0.3}});
-    addClaim<T>(out, "storesEveryFramesContactsAtExactCapacity", "storesContactsAtExactCapacity",
-                Family::Mixed, {{"hit", 0.2}, {"two-step", 0.005}});
-    // The edge of the float range test (range-edge): spans 52 to 57 (range_edge_family.h), bit for
-    // bit; the scenes four binades past it catch a test that much too generous.
-    addClaim<T>(out, "decidesRangeEdgeScenesExactly", "matchesExactReferenceBitForBit", Family::RangeEdge,
-                isDouble ? std::vector<CoverageFloor>{{"hit", 0.9}}
-                         : std::vector<CoverageFloor>{{"range-boundary", 0.6}, {"hit", 0.9}});
-    // One-way platforms (platform_family.h): landing on them at every speed and on exact
-    // corners, jumping up through them, walking along them across seams, and platforms among
-    // solid tiles; bit for bit, and by the rules a platformer relies on.
-    addClaim<T>(out, "landsOnPlatformsExactly", "matchesExactReferenceBitForBit", Family::PlatformLanding,
-                {{"one-way-hit", 0.3},
-                 {"one-way-tie", 0.03},
-                 {"one-way-fast", 0.1},
-                 {"in-one-way", 0.1},
-                 {"far-origin", 0.1}});
-    addClaim<T>(out, "jumpsThroughPlatformsExactly", "matchesExactReferenceBitForBit", Family::PlatformJump,
-                {{"in-one-way", 0.3}, {"one-way-hit", 0.15}, {"starts-in-one-way", 0.1}});
-    addClaim<T>(out, "walksAlongPlatformsExactly", "matchesExactReferenceBitForBit", Family::PlatformWalk,
-                {{"on-platform", 0.75}, {"one-way-seam", 0.1}});
-    addClaim<T>(out, "decidesPlatformsAmongSolidTilesExactly", "matchesExactReferenceBitForBit",
-                Family::Platforms, {{"one-way-hit", 0.05}, {"starts-in-one-way", 0.05}});
-    addClaim<T>(out, "neverFallsThroughAPlatformItStoodOn", "neverFallsThroughAPlatformItStoodOn",
-                Family::PlatformWalk, {{"on-platform", 0.75}});
-    addClaim<T>(out, "neverBlockedByAPlatformFromBelow", "neverBlockedByAPlatformFromBelow",
-                Family::PlatformJump, {{"in-one-way", 0.3}, {"one-way-hit", 0.15}});
-    addClaim<T>(out, "neverSnagsOnAPlatformSeam", "slidingAlongFloorNeverSnags", Family::PlatformWalk,
-                {{"on-platform", 0.75}, {"one-way-seam", 0.1}});
-    addClaim<T>(out, "platformScenesObeyTheSafetyRules", "obeysTheSafetyRules", Family::Platforms,
-                {{"one-way-hit", 0.05}, {"starts-in-one-way", 0.05}});
-    addClaim<T>(out, "substepOracleSeesEveryPlatformLanding", "substepOracleFindsNoMissedContact",
-                Family::PlatformLanding, {{"one-way-hit", 0.3}});
-    // Every C error code from its own cause, through C.
-    addClaim<T>(out, "reportsEachCErrorByItsCause", "reportsEachCErrorByItsCause", Family::Mixed,
-                {{"edge-causes-built", 0.9}});
+    for (const Claim<T>& claim : allClaims<T>())
+        for (const PropertyOf& p : claim.properties)
+            out.push_back(propertyOf(claim, p.name, p.family, p.floors));
 }
 
 }  // namespace
@@ -442,13 +359,10 @@ Property makeProperty(const std::string& name, const std::string& claimName, con
     const bool isFloat = scalar == "float";
     if (isFloat ? findClaim<float>(claimName) == nullptr : findClaim<double>(claimName) == nullptr)
         throw std::invalid_argument("no claim '" + claimName + "'");
-    std::vector<Property> made;
-    if (isFloat)
-        addClaim<float>(made, name, claimName, chosen, std::move(floors));
-    else
-        addClaim<double>(made, name, claimName, chosen, std::move(floors));
-    made.front().name = name;
-    return made.front();
+    Property made = isFloat ? propertyOf(*findClaim<float>(claimName), name, chosen, std::move(floors))
+                            : propertyOf(*findClaim<double>(claimName), name, chosen, std::move(floors));
+    made.name = name;
+    return made;
 }
 
 RunOptions optionsFromEnvironment() {

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-// The property suite: every claim of scene_checks.h paired with the scene family that exercises
-// it, the coverage it must reach, and a runner. The GoogleTest suite (properties_test.cpp) and
-// `tilesweep check` both run these; a failure shrinks (RapidCheck) and the minimal scene is
-// written to the regression corpus with the property and seed that found it.
+// The property suite: one property for each (claim, family, floors) a claim declares (claim.h),
+// in float and in double, with a runner. The GoogleTest suite (properties_test.cpp) and
+// `tilesweep check` both run these; a failure shrinks along RapidCheck's shrinks, and the minimal
+// scene is written to the regression corpus with the property and seed that found it.
 
 #include "scene_checks.h"
 
@@ -20,8 +20,10 @@ namespace tilesweep::properties {
 /// How to run a property.
 struct RunOptions {
     std::uint64_t seed = 20261122;  ///< RapidCheck seed; the same seed gives the same cases
-    int cases = 1000;               ///< successful cases before the property passes
-    std::string corpusDir;          ///< where a shrunk counterexample is written; empty: nowhere
+    /// The resolver the claims are held against; nullptr: tilesweep's own (the registry's core).
+    SceneResolver* resolver = nullptr;
+    int cases = 1000;       ///< successful cases before the property passes
+    std::string corpusDir;  ///< where a shrunk counterexample is written; empty: nowhere
     /// Most cases a run may draw, in all, to settle its coverage floors (coverage_judgement.h);
     /// 0: the larger of 8 x cases and kDefaultCoverageCases.
     long long maxCases = 0;
@@ -58,13 +60,6 @@ struct PropertyOutcome {
     std::string sceneLine;    ///< the minimal failing scene (hexfloats), if any
     std::string failure;      ///< the claim's message on it, if any
     double seconds = 0;
-};
-
-/// A coverage floor: at least `fraction` of the cases must carry `tag`, judged statistically
-/// (coverage_judgement.h): a run draws more cases until the share is certainly above or below.
-struct CoverageFloor {
-    std::string tag;
-    double fraction;
 };
 
 /// One property: a claim, in one scalar type, over one scene family.

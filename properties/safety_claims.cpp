@@ -15,8 +15,8 @@ using namespace claim_support;
 /// At the end of every frame, the box overlaps no solid tile it did not overlap at the frame's
 /// start: docs/contract.md's promise, with no allowance (the amended rounding rule keeps it).
 template <class T>
-std::string neverEndsInsideATileItDidNotStartIn(const Scene<T>& scene) {
-    const CheckedFrames<T> c = checkedFrames(scene);
+std::string neverEndsInsideATileItDidNotStartIn(const Scene<T>& scene, SceneResolver& resolver) {
+    const CheckedFrames<T> c = checkedFrames(scene, resolver);
     checks::SafetyScratch scratch;
     for (std::size_t f = 0; f < c.frames.size(); ++f)
         if (const auto cell =
@@ -30,8 +30,8 @@ std::string neverEndsInsideATileItDidNotStartIn(const Scene<T>& scene) {
 /// Over a run of frames, every solid tile the box overlaps at the start of a frame is one it
 /// overlapped at the start of the first frame: the box never gets into a wall.
 template <class T>
-std::string neverGetsIntoAWall(const Scene<T>& scene) {
-    const CheckedFrames<T> c = checkedFrames(scene);
+std::string neverGetsIntoAWall(const Scene<T>& scene, SceneResolver& resolver) {
+    const CheckedFrames<T> c = checkedFrames(scene, resolver);
     std::vector<Cell> first;
     std::vector<Cell> now;
     checks::listOverlaps(scene.map.view(), c.edges, scene.box.pos, scene.box.size, first);
@@ -47,8 +47,8 @@ std::string neverGetsIntoAWall(const Scene<T>& scene) {
 
 /// After a hit on a face, the box ends touching it or short of it by less than one ulp.
 template <class T>
-std::string stopsJustTouching(const Scene<T>& scene) {
-    const CheckedFrames<T> c = checkedFrames(scene);
+std::string stopsJustTouching(const Scene<T>& scene, SceneResolver& resolver) {
+    const CheckedFrames<T> c = checkedFrames(scene, resolver);
     for (std::size_t f = 0; f < c.frames.size(); ++f)
         if (std::string why = checks::checkHitTilesLeftTouching(recordOf(scene, c, f), c.edges); !why.empty())
             return "frame " + std::to_string(f) + ": " + why;
@@ -59,8 +59,8 @@ std::string stopsJustTouching(const Scene<T>& scene) {
 /// overlaps, no new overlap at the end, hit tiles left touching, and the position between the
 /// start and the exact end, or one ulp below it exactly where the rounding rule says.
 template <class T>
-std::string obeysTheSafetyRules(const Scene<T>& scene) {
-    const CheckedFrames<T> c = checkedFrames(scene);
+std::string obeysTheSafetyRules(const Scene<T>& scene, SceneResolver& resolver) {
+    const CheckedFrames<T> c = checkedFrames(scene, resolver);
     checks::SafetyScratch scratch;
     for (std::size_t f = 0; f < c.frames.size(); ++f)
         if (const checks::SafetyViolation v =
@@ -72,8 +72,8 @@ std::string obeysTheSafetyRules(const Scene<T>& scene) {
 /// Whenever the exact 64-substep oracle sees an overlap at substep k, the resolver hit something
 /// no later than k/64 in that frame.
 template <class T>
-std::string substepOracleFindsNoMissedContact(const Scene<T>& scene) {
-    return missedContactSeenBySubsteps(scene, resolveUnderTest(scene));
+std::string substepOracleFindsNoMissedContact(const Scene<T>& scene, SceneResolver& resolver) {
+    return missedContactSeenBySubsteps(scene, framesFrom(resolver, scene));
 }
 
 /// Every value that is bad input somewhere: NaN and both infinities anywhere, zero and -1 as a size.
@@ -145,17 +145,75 @@ std::string badInputIsRejected(const Scene<T>& scene) {
     return {};
 }
 
-template std::string neverEndsInsideATileItDidNotStartIn<float>(const Scene<float>&);
-template std::string neverEndsInsideATileItDidNotStartIn<double>(const Scene<double>&);
-template std::string neverGetsIntoAWall<float>(const Scene<float>&);
-template std::string neverGetsIntoAWall<double>(const Scene<double>&);
-template std::string stopsJustTouching<float>(const Scene<float>&);
-template std::string stopsJustTouching<double>(const Scene<double>&);
-template std::string obeysTheSafetyRules<float>(const Scene<float>&);
-template std::string obeysTheSafetyRules<double>(const Scene<double>&);
-template std::string substepOracleFindsNoMissedContact<float>(const Scene<float>&);
-template std::string substepOracleFindsNoMissedContact<double>(const Scene<double>&);
+template std::string neverEndsInsideATileItDidNotStartIn<float>(const Scene<float>&, SceneResolver&);
+template std::string neverEndsInsideATileItDidNotStartIn<double>(const Scene<double>&, SceneResolver&);
+template std::string neverGetsIntoAWall<float>(const Scene<float>&, SceneResolver&);
+template std::string neverGetsIntoAWall<double>(const Scene<double>&, SceneResolver&);
+template std::string stopsJustTouching<float>(const Scene<float>&, SceneResolver&);
+template std::string stopsJustTouching<double>(const Scene<double>&, SceneResolver&);
+template std::string obeysTheSafetyRules<float>(const Scene<float>&, SceneResolver&);
+template std::string obeysTheSafetyRules<double>(const Scene<double>&, SceneResolver&);
+template std::string substepOracleFindsNoMissedContact<float>(const Scene<float>&, SceneResolver&);
+template std::string substepOracleFindsNoMissedContact<double>(const Scene<double>&, SceneResolver&);
 template std::string badInputIsRejected<float>(const Scene<float>&);
 template std::string badInputIsRejected<double>(const Scene<double>&);
+
+// ---- The claims of this file, with their properties (claim.h) ----------------------------------
+
+template <class T>
+std::vector<Claim<T>> safetyClaims() {
+    using S = ClaimScope;
+    const bool isDouble = std::is_same_v<T, double>;
+    return {
+        {"neverEndsInsideATileItDidNotStartIn",
+         &neverEndsInsideATileItDidNotStartIn<T>,
+         S::Safety,
+         nullptr,
+         {{"neverEndsInsideATileItDidNotStartIn", Family::Mixed, {{"hit", 0.2}, {"rounded-down", 0.002}}},
+          // Float far edges all take the fast path, whose range test has no slack: the float
+          // range test's edge has its own family and floor (decidesRangeEdgeScenesExactly).
+          {"farEdgesNeverEndInsideATile", Family::FarEdge,
+           isDouble ? std::vector<CoverageFloor>{{"rounded-down", 0.05}, {"fallback", 0.05}}
+                    : std::vector<CoverageFloor>{{"rounded-down", 0.05}}},
+          {"roundingNearFarCornersStaysOutOfHitTiles",
+           Family::FarSubUlp,
+           {{"far-origin", 0.9}, {"fallback", 0.05}}}}},
+        {"stopsJustTouching",
+         &stopsJustTouching<T>,
+         S::Safety,
+         nullptr,
+         {{"stopsJustTouching", Family::Mixed, {{"hit", 0.2}}}}},
+        {"obeysTheSafetyRules",
+         &obeysTheSafetyRules<T>,
+         S::Safety,
+         nullptr,
+         {{"obeysTheSafetyRules", Family::Mixed, {{"hit", 0.2}}},
+          {"farEdgesObeyTheSafetyRules", Family::FarEdge, {{"rounded-down", 0.05}}},
+          {"extremeScenesObeyTheSafetyRules", Family::Extreme, {{"empty-map", 0.2}, {"huge-move", 0.3}}},
+          {"platformScenesObeyTheSafetyRules",
+           Family::Platforms,
+           {{"one-way-hit", 0.05}, {"starts-in-one-way", 0.05}}}}},
+        {"neverGetsIntoAWall",
+         &neverGetsIntoAWall<T>,
+         S::Safety,
+         nullptr,
+         {{"neverGetsIntoAWall", Family::FarEdge, {{"rounded-down", 0.05}}}}},
+        {"substepOracleFindsNoMissedContact",
+         &substepOracleFindsNoMissedContact<T>,
+         S::Safety,
+         nullptr,
+         {{"substepOracleFindsNoMissedContact", Family::Mixed, {{"hit", 0.2}}},
+          {"substepOracleSeesEveryPlatformLanding", Family::PlatformLanding, {{"one-way-hit", 0.3}}}}},
+        // Bad input: inputs the other families seldom make.
+        {"badInputIsRejected",
+         &aboutTilesweep<T, &badInputIsRejected<T>>,
+         S::Internal,
+         nullptr,
+         {{"badInputIsRejected", Family::Mixed, {}}}},
+    };
+}
+
+template std::vector<Claim<float>> safetyClaims<float>();
+template std::vector<Claim<double>> safetyClaims<double>();
 
 }  // namespace tilesweep::properties

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-// The claims the property suite makes about the production resolver, each a plain function of
-// one scene: it returns an empty string when the claim holds, otherwise what went wrong. The
-// RapidCheck properties, the regression corpus replay and `tilesweep check` all call these, so a
+// The claims the property suite makes, each a function of one scene and the resolver under test
+// (resolver_under_test.h): it returns an empty string when the claim holds, otherwise what went
+// wrong. The properties, the regression corpus replay and `tilesweep check` all call these, so a
 // shrunk counterexample is replayed against every claim, for ever.
+
+#include "claim.h"
 
 #include "tilesweep/scene/scene.h"
 
@@ -14,34 +16,10 @@
 
 namespace tilesweep::properties {
 
-/// What a claim is about, which says whether an outside resolver is held to it
-/// (`tilesweep check --resolver-cmd`, scene_runner.h).
-enum class ClaimScope : std::uint8_t {
-    Safety,     ///< about results, under no particular rounding: any sound resolver holds it
-    BitForBit,  ///< about results, bit for bit against the exact reference and the contract's rounding
-    Internal,   ///< about tilesweep's internals, its C++ API or the oracles: built-in only
-};
-
-/// One claim, for scenes in T. The claims about results run the scene through
-/// resolveUnderTest (scene_runner.h): tilesweep's resolver, or the outside one installed.
+/// The claim's verdict on a scene against `resolver`: empty when it holds; otherwise what went
+/// wrong, including "resolver failed: ..." when the resolver could not answer. Never throws.
 template <class T>
-struct Claim {
-    const char* name;                       ///< the claim, camelCase (the property's name)
-    std::string (*check)(const Scene<T>&);  ///< empty when it holds
-    ClaimScope scope = ClaimScope::Internal;
-};
-
-/// Whether a claim applies to an outside resolver: every claim about results, or, with
-/// `safetyOnly`, those that do not ask for the contract's rounding bit for bit.
-[[nodiscard]] inline bool appliesToOutside(ClaimScope scope, bool safetyOnly) noexcept {
-    return scope == ClaimScope::Safety || (scope == ClaimScope::BitForBit && !safetyOnly);
-}
-
-/// The claim's verdict on a scene: empty when it holds; otherwise what went wrong, including
-/// "resolver failed: ..." when the resolver under test could not answer (ResolverFailure).
-/// Never throws.
-template <class T>
-[[nodiscard]] std::string checkClaim(const Claim<T>& claim, const Scene<T>& scene);
+[[nodiscard]] std::string checkClaim(const Claim<T>& claim, const Scene<T>& scene, SceneResolver& resolver);
 
 /// Every claim, in the order `tilesweep check` lists them.
 template <class T>
@@ -69,8 +47,8 @@ extern template const std::vector<Claim<float>>& allClaims<float>();
 extern template const std::vector<Claim<double>>& allClaims<double>();
 extern template const Claim<float>* findClaim<float>(const std::string&);
 extern template const Claim<double>* findClaim<double>(const std::string&);
-extern template std::string checkClaim<float>(const Claim<float>&, const Scene<float>&);
-extern template std::string checkClaim<double>(const Claim<double>&, const Scene<double>&);
+extern template std::string checkClaim<float>(const Claim<float>&, const Scene<float>&, SceneResolver&);
+extern template std::string checkClaim<double>(const Claim<double>&, const Scene<double>&, SceneResolver&);
 extern template std::vector<std::string> classifyScene<float>(const Scene<float>&);
 extern template std::vector<std::string> classifyScene<double>(const Scene<double>&);
 

@@ -59,8 +59,8 @@ trap 'rm -rf "$scratch"' EXIT
     echo "$(lscpu 2>/dev/null | sed -n 's/^Model name: *//p' | head -1)); each run is"
     echo "\`tilesweep check --resolver-cmd CMD --scalar S --cases $cases --seconds $seconds --keep-going --no-shrink\`,"
     echo "S being what adapters/ENGINE/scalar says (double for the engines that compute in doubles), else float."
-    echo "Cases judged per second count every case, passed or failed; rounds rehearse on tilesweep"
-    echo "and send each property round to the engine in one batch."
+    echo "Cases judged per second count every case, passed or failed; each property round draws its"
+    echo "cases and sends every scene they ask for to the engine in one batch."
     echo
     echo "| engine | what | cases judged | passed | failed | cases/s | properties failed | load before, after |"
     echo "|---|---|---:|---:|---:|---:|---:|---|"

@@ -110,14 +110,9 @@ struct Implementation {
 /// Every implementation of the audit, in report order.
 [[nodiscard]] std::vector<Implementation> auditImplementations();
 
-/// A scene's frames through one implementation, each frame from the last one's position.
-template <class T>
-[[nodiscard]] std::vector<FrameResult<T>> runImplementation(const Implementation& impl,
-                                                            const Scene<T>& scene);
-extern template std::vector<FrameResult<float>> runImplementation<float>(const Implementation&,
-                                                                         const Scene<float>&);
-extern template std::vector<FrameResult<double>> runImplementation<double>(const Implementation&,
-                                                                           const Scene<double>&);
+/// The name of an implementation's resolver in the registry (resolvers/resolver_registry.h):
+/// "core", "seed", "substep-float:N", "twin" or "grid".
+[[nodiscard]] std::string resolverName(const Implementation& impl);
 
 /// The worst scene of a cell for one metric: the case with the largest score (the position
 /// error in ulps for most metrics), the lowest case index on a tie.

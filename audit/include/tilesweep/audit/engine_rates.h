@@ -23,6 +23,7 @@
 #include "tilesweep/audit/audit.h"
 #include "tilesweep/audit/scene_families.h"
 #include "tilesweep/audit/wilson_interval.h"
+#include "tilesweep/resolvers/scene_resolver.h"
 #include "tilesweep/scene/scene.h"
 
 #include <array>
@@ -34,34 +35,11 @@
 
 namespace tilesweep::audit {
 
-/// One scene's answer from a resolver in scalar T: its frames, or why there are none.
-template <class T>
-struct EngineAnswerOf {
-    std::vector<FrameResult<T>> frames;
-    std::string failure;  ///< non-empty: no usable answer (crash, hang, garbage, an error line)
-};
-using EngineAnswer = EngineAnswerOf<float>;
-
-/// A resolver whose rates are measured, answering a batch of scenes at once. Each worker thread
-/// makes its own.
-class BatchResolver {
-public:
-    virtual ~BatchResolver() = default;
-    /// One answer per scene, in order. Never throws for the resolver's misbehaviour.
-    [[nodiscard]] virtual std::vector<EngineAnswer> resolve(const std::vector<Scene<float>>& scenes) = 0;
-    /// The same in double (a rates run with RatesConfig::scalar "double"). By default every scene
-    /// fails: a resolver that answers float scenes only.
-    [[nodiscard]] virtual std::vector<EngineAnswerOf<double>> resolveDouble(
-        const std::vector<Scene<double>>& scenes) {
-        return std::vector<EngineAnswerOf<double>>(scenes.size(),
-                                                   {{}, "this resolver answers float scenes only"});
-    }
-};
-
 /// A resolver to measure.
 struct EngineSpec {
-    std::string name;                                      ///< "godot", "rapier", "tilesweep", ...
-    std::function<std::unique_ptr<BatchResolver>()> make;  ///< called once per worker thread
+    std::string name;  ///< "godot", "rapier", "tilesweep", ...
+    /// Makes the resolver (resolvers/scene_resolver.h); called once per worker thread.
+    std::function<std::unique_ptr<resolvers::SceneResolver>()> make;
     double documentedTolerance = 0;  ///< the engine's own tolerance, in pixels (0: none stated)
     std::string toleranceNote;       ///< what that tolerance is ("safe margin 0.08 px")
 };
@@ -176,10 +154,5 @@ struct RatesResult {
 /// The Markdown section: per engine the rate table (families by metrics, share and interval)
 /// and the tolerance table (distance by claim), with the first failing scene of each metric.
 [[nodiscard]] std::string ratesMarkdown(const RatesResult& result);
-
-/// `tilesweep audit`'s engine implementations as batch resolvers (tilesweep, twin, grid), in
-/// process: the same scene population, for comparison. It answers scenes of its own scalar type
-/// (Implementation::isDouble) and fails the others.
-[[nodiscard]] std::unique_ptr<BatchResolver> makeInProcessResolver(const Implementation& impl);
 
 }  // namespace tilesweep::audit

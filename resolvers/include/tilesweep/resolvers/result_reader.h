@@ -20,7 +20,7 @@
 #include <string_view>
 #include <vector>
 
-namespace tilesweep::properties {
+namespace tilesweep::resolvers {
 
 /// A result line read: the frames, or why the line is not a valid answer.
 template <class T>
@@ -39,4 +39,4 @@ template <class T>
 extern template ResultParse<float> parseResultLine<float>(std::string_view, std::size_t);
 extern template ResultParse<double> parseResultLine<double>(std::string_view, std::size_t);
 
-}  // namespace tilesweep::properties
+}  // namespace tilesweep::resolvers

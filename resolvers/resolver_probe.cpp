@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: MIT
-#include "resolver_probe.h"
+#include "tilesweep/resolvers/resolver_probe.h"
 
-#include "resolver_process.h"
-#include "result_reader.h"
-
+#include "tilesweep/resolvers/resolver_process.h"
+#include "tilesweep/resolvers/result_reader.h"
 #include "tilesweep/scene/scene.h"
 
 #include <vector>
 
-namespace tilesweep::properties {
+namespace tilesweep::resolvers {
 namespace {
 
 /// The known scene: a 12 px box 4 px down falls 40 px onto the floor of a 6 x 4 map of 16 px
@@ -53,4 +52,4 @@ std::string probeResolver(const std::string& command, double timeoutSeconds, boo
     return {};
 }
 
-}  // namespace tilesweep::properties
+}  // namespace tilesweep::resolvers

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "library_resolver.h"
+#include "tilesweep/resolvers/library_resolver.h"
 
 #include "tilesweep/resolver_lib.h"
 
@@ -9,7 +9,7 @@
 #include <type_traits>
 #include <vector>
 
-namespace tilesweep::cli {
+namespace tilesweep::resolvers {
 namespace {
 
 /// The C API's types for T.
@@ -144,4 +144,4 @@ LibraryLoad<T> loadLibraryResolver(const std::string& path) {
 template LibraryLoad<float> loadLibraryResolver<float>(const std::string&);
 template LibraryLoad<double> loadLibraryResolver<double>(const std::string&);
 
-}  // namespace tilesweep::cli
+}  // namespace tilesweep::resolvers

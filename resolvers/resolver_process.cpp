@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "resolver_process.h"
+#include "tilesweep/resolvers/resolver_process.h"
 
 #include <atomic>
 #include <cerrno>
@@ -16,10 +16,9 @@
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
-#include <unordered_set>
 #include <utility>
 
-namespace tilesweep::properties {
+namespace tilesweep::resolvers {
 namespace {
 
 /// How much of the process's standard error a failure message quotes (its tail), in bytes.
@@ -327,32 +326,7 @@ std::string ResolverProcess::errorTail() const {
 }
 
 std::vector<ResolverReply> ResolverProcess::exchange(const std::vector<std::string>& lines) {
-    std::vector<ResolverReply> replies(lines.size());
-    std::vector<std::string> missing;
-    std::vector<std::size_t> where;
-    for (std::size_t k = 0; k < lines.size(); ++k) {
-        const auto kept = kept_.find(lines[k]);
-        if (kept != kept_.end()) {
-            replies[k] = kept->second;
-        } else {
-            missing.push_back(lines[k]);
-            where.push_back(k);
-        }
-    }
-    if (missing.empty()) return replies;
-    std::vector<ResolverReply> sent = send(missing);
-    for (std::size_t k = 0; k < where.size(); ++k) replies[where[k]] = std::move(sent[k]);
-    return replies;
-}
-
-void ResolverProcess::prefetch(const std::vector<std::string>& lines) {
-    std::vector<std::string> missing;
-    std::unordered_set<std::string> queued;
-    for (const std::string& line : lines)
-        if (kept_.find(line) == kept_.end() && queued.insert(line).second) missing.push_back(line);
-    if (missing.empty()) return;
-    std::vector<ResolverReply> sent = send(missing);
-    for (std::size_t k = 0; k < missing.size(); ++k) kept_[missing[k]] = std::move(sent[k]);
+    return send(lines);
 }
 
 std::vector<ResolverReply> ResolverProcess::send(const std::vector<std::string>& lines) {
@@ -595,4 +569,4 @@ std::size_t ResolverProcess::runFileBatch(const std::vector<std::string>& lines,
     return failed;
 }
 
-}  // namespace tilesweep::properties
+}  // namespace tilesweep::resolvers

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "result_reader.h"
+#include "tilesweep/resolvers/result_reader.h"
 
 #include "tilesweep/scene/scalar_text.h"  // exact number text, shared with the scene reader
 
@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <utility>
 
-namespace tilesweep::properties {
+namespace tilesweep::resolvers {
 namespace {
 
 // nlohmann-json's DOM keeps a number only as a double, which would round a float's text twice;
@@ -209,4 +209,4 @@ ResultParse<T> parseResultLine(std::string_view line, std::size_t frameCount) {
 template ResultParse<float> parseResultLine<float>(std::string_view, std::size_t);
 template ResultParse<double> parseResultLine<double>(std::string_view, std::size_t);
 
-}  // namespace tilesweep::properties
+}  // namespace tilesweep::resolvers

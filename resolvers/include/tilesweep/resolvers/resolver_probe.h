@@ -13,7 +13,7 @@
 
 #include <string>
 
-namespace tilesweep::properties {
+namespace tilesweep::resolvers {
 
 /// The known scene's line (every number a hexfloat, so the same scene in float and in double).
 [[nodiscard]] std::string knownSceneLine();
@@ -23,4 +23,4 @@ namespace tilesweep::properties {
 [[nodiscard]] std::string probeResolver(const std::string& command, double timeoutSeconds, bool inFloat,
                                         bool inDouble);
 
-}  // namespace tilesweep::properties
+}  // namespace tilesweep::resolvers

@@ -17,10 +17,8 @@
 // timeout fails every scene of the batch not yet answered (a fresh process would most likely
 // hang again, one timeout per scene), and the next batch gets a fresh process.
 //
-// Batches: `prefetch` sends many scenes at once and keeps their answers; a later `exchange` of a
-// kept line is answered from memory. `tilesweep check` prefetches every scene a property round
-// will ask for (properties/scene_runner.h, RecordingSceneRunner), so an engine sees one batch
-// per round instead of one request per case.
+// A batch is one exchange: `tilesweep check` sends every scene a property round asks for in one
+// (properties/answer_cache.h), so an engine sees one batch per round, not one request per case.
 //
 //     ResolverProcess process("build/plain/cli/tilesweep resolve --scalar float", 10.0);
 //     auto replies = process.exchange({sceneLine1, sceneLine2});
@@ -32,10 +30,9 @@
 #include <functional>
 #include <string>
 #include <sys/types.h>
-#include <unordered_map>
 #include <vector>
 
-namespace tilesweep::properties {
+namespace tilesweep::resolvers {
 
 /// One scene's answer from the process.
 struct ResolverReply {
@@ -64,11 +61,6 @@ public:
     /// on full pipes. Never throws for the process's misbehaviour: that is in the replies.
     [[nodiscard]] std::vector<ResolverReply> exchange(const std::vector<std::string>& lines);
 
-    /// Sends the lines not already kept in one batch and keeps every answer (or failure), so
-    /// that exchanging them later costs nothing. Duplicates are sent once.
-    void prefetch(const std::vector<std::string>& lines);
-    /// Forgets the kept answers.
-    void clearKept() noexcept { kept_.clear(); }
     /// Scenes sent to the resolver so far, and batches they went in.
     [[nodiscard]] std::uint64_t scenesSent() const noexcept { return scenesSent_; }
     [[nodiscard]] std::uint64_t batchesSent() const noexcept { return batchesSent_; }
@@ -91,8 +83,8 @@ public:
     void onFailure(std::function<void(const std::string&)> observer) { observer_ = std::move(observer); }
 
 private:
-    /// Sends the lines to the resolver (no kept answers), one reply per line; in pipe mode with a
-    /// barrier, between two barriers.
+    /// Sends the lines to the resolver, one reply per line; in pipe mode with a barrier, between
+    /// two barriers.
     std::vector<ResolverReply> send(const std::vector<std::string>& lines);
     /// Sends the lines as they are.
     std::vector<ResolverReply> sendPlain(const std::vector<std::string>& lines);
@@ -126,7 +118,6 @@ private:
     int starts_ = 0;
     bool fileMode_ = false;
     std::string directory_;  ///< file mode: a private temporary directory for the two files
-    std::unordered_map<std::string, ResolverReply> kept_;
     std::uint64_t scenesSent_ = 0;
     std::uint64_t batchesSent_ = 0;
     std::function<void(const std::string&)> observer_;
@@ -134,4 +125,4 @@ private:
     std::string barrier_;  ///< pipe mode: the scene sent around every batch; empty: none
 };
 
-}  // namespace tilesweep::properties
+}  // namespace tilesweep::resolvers
