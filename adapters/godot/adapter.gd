@@ -28,7 +28,7 @@ const SAFE_MARGIN = 0.08
 # Godot's 2D broad phase (BroadPhase2DHashGrid, physics/2d/cell_size 128) walks every cell of a
 # query's bounds, after turning them into int32 cell numbers. A move that would make it walk more
 # cells than this, or whose bounds leave the int32 range of cells (2^38 pixels: undefined in
-# Godot, 4 to 10 s a scene here; the issue's move of (-1.8e17, -6.4e37) never returned), is
+# Godot, 4 to 10 s a scene here; a move of (-1.8e17, -6.4e37) never returned), is
 # refused with an error line, as a game would refuse such a speed, instead of stalling the
 # batch; so is a map that reaches past that range. 2^30 cells took 2 to 4.5 s, and a batch of a
 # thousand scenes near 2^22 cells each took minutes; 2^16 cells is a straight move of 2^23
