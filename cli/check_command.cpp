@@ -210,13 +210,16 @@ CLI::App* addCheckCommand(CLI::App& app, CheckOptions& options) {
                      "Check an outside resolver: a shell command that reads scene lines on stdin and writes\n"
                      "one result line per scene, as `tilesweep resolve` does")
         ->type_name("CMD");
-    command
-        ->add_option("--resolver-lib", options.resolverLib,
-                     "Check your resolver in a shared library exporting ts_user_resolve_f (and _d for\n"
-                     "--scalar double; include/tilesweep/resolver_lib.h), run in a child process")
-        ->type_name("PATH.so")
-        ->check(CLI::ExistingFile)
-        ->excludes("--resolver-cmd");
+    CLI::Option* library =
+        command
+            ->add_option("--resolver-lib", options.resolverLib,
+                         "Check your resolver in a shared library exporting ts_user_resolve_f (and _d for\n"
+                         "--scalar double; include/tilesweep/resolver_lib.h), run in a child process")
+            ->type_name("PATH.so")
+            ->check(CLI::ExistingFile)
+            ->excludes("--resolver-cmd");
+    addResolverOption(command, options.resolver);
+    command->get_option("--resolver")->excludes("--resolver-cmd")->excludes(library);
     addResolverTimeoutOption(command, options.resolverTimeout);
     addClaimsOption(command, options.claims);
     command
@@ -268,6 +271,10 @@ CheckRun runChecks(const CheckOptions& options) {
     if (!parseShard(options.shard, shard, shardError)) throw std::invalid_argument(shardError);
     const std::vector<const Property*> work = selectProperties(options);
     if (work.empty()) throw std::invalid_argument("no property matches '" + options.property + "'");
+    // A corpus that cannot be a directory would end each worker at its first failure.
+    if (const std::string corpus = corpusDirOf(options);
+        std::filesystem::exists(corpus) && !std::filesystem::is_directory(corpus))
+        throw std::invalid_argument("--corpus: '" + corpus + "' exists and is not a directory");
     int jobs = options.jobs > 0 ? options.jobs : static_cast<int>(std::thread::hardware_concurrency());
     if (jobs < 1) jobs = 1;
     if (jobs > static_cast<int>(work.size())) jobs = static_cast<int>(work.size());
@@ -462,7 +469,7 @@ CheckRun runChecks(const CheckOptions& options) {
     return run;
 }
 
-std::string libraryCommand(const std::string& library, const std::string& scalar) {
+std::string resolveCommand(const std::string& resolver, const std::string& scalar) {
     const auto quoted = [](const std::string& text) {
         std::string q = "'";
         for (const char c : text) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -471,14 +478,31 @@ std::string libraryCommand(const std::string& library, const std::string& scalar
     std::error_code ignored;
     const std::string self = std::filesystem::read_symlink("/proc/self/exe", ignored).string();
     return "exec " + quoted(self.empty() ? std::string("tilesweep") : self) + " resolve --resolver " +
-           quoted("lib:" + std::filesystem::absolute(library).string()) + " --scalar " + scalar;
+           quoted(resolver) + " --scalar " + scalar;
+}
+
+std::string libraryCommand(const std::string& library, const std::string& scalar) {
+    return resolveCommand(resolvers::kLibraryPrefix + std::filesystem::absolute(library).string(), scalar);
 }
 
 int runCheckCommand(const CheckOptions& given) {
     CheckOptions options = given;
-    if (!options.resolverLib.empty())
+    // Every resolver but tilesweep's own runs in a child process (a crash costs a scene, not the
+    // run): a library or a registry name as this executable's `resolve --resolver NAME`.
+    const std::string forced = resolvers::scalarForcedBy(options.resolver);
+    if (!forced.empty() && options.scalar.empty()) options.scalar = forced;
+    const std::string scalar = options.scalar.empty() ? "float" : options.scalar;
+    const std::string& resolver = options.resolver;
+    if (!options.resolverLib.empty()) {
+        options.resolverCmd = libraryCommand(options.resolverLib, scalar);
+    } else if (resolver.rfind(resolvers::kCommandPrefix, 0) == 0) {
+        options.resolverCmd = resolver.substr(std::string(resolvers::kCommandPrefix).size());
+    } else if (resolver.rfind(resolvers::kLibraryPrefix, 0) == 0) {
         options.resolverCmd =
-            libraryCommand(options.resolverLib, options.scalar.empty() ? "float" : options.scalar);
+            libraryCommand(resolver.substr(std::string(resolvers::kLibraryPrefix).size()), scalar);
+    } else if (!isTilesweepItself(resolver)) {
+        options.resolverCmd = resolveCommand(resolver, scalar);
+    }
     CheckRun run;
     try {
         run = runChecks(options);

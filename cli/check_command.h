@@ -24,6 +24,7 @@ struct CheckOptions {
     int jobs = 0;                   ///< worker processes; 0: all cores
     std::string corpusDir;          ///< where failing cases are written; empty: the default
                                     ///< (properties/corpus, or resolver-corpus for an outside resolver)
+    std::string resolver = "core";  ///< the resolver under test by registry name (resolver_registry.h)
     std::string resolverCmd;        ///< outside resolver (sh -c); empty: tilesweep's own
     std::string resolverLib;        ///< a user's resolver library: run as the command libraryCommand gives
     double resolverTimeout = 10;    ///< seconds without an answer before the process counts as hung
@@ -99,6 +100,11 @@ int runCheckCommand(const CheckOptions& options);
 /// `resolve --resolver lib:PATH --scalar SCALAR` (exec: a signal that kills it is seen as
 /// such), every word quoted for sh.
 [[nodiscard]] std::string libraryCommand(const std::string& library, const std::string& scalar);
+
+/// This executable's `resolve --resolver RESOLVER --scalar SCALAR` as an outside resolver command
+/// (exec, every word quoted for sh): how `check --resolver NAME` holds any resolver of the
+/// registry other than tilesweep's own, in a child process.
+[[nodiscard]] std::string resolveCommand(const std::string& resolver, const std::string& scalar);
 
 /// A check run as JSON (`tilesweep check --json`), and back; readCheckJson throws
 /// std::runtime_error on a malformed file.
