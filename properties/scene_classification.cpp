@@ -17,6 +17,7 @@
 #include <limits>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace tilesweep::properties {
@@ -45,16 +46,51 @@ bool halfwayBetweenValues(const Rational& t) {
     return below != above && (oracle::toRational(below) + oracle::toRational(above)) / 2 == t;
 }
 
+/// The cells [first, last] of a map's axis that a closed interval [low, high] of coordinates
+/// meets or touches, clamped to the map: a cell whose edge equals an end of the interval counts.
+/// Exact: floor of exact quotients.
+std::pair<std::int64_t, std::int64_t> cellsMeeting(const oracle::Rational& low, const oracle::Rational& high,
+                                                   const oracle::Rational& origin,
+                                                   const oracle::Rational& tile, std::int32_t count) {
+    const auto floorOf = [](const oracle::Rational& q) {
+        const oracle::Integer n = boost::multiprecision::numerator(q);
+        const oracle::Integer d = boost::multiprecision::denominator(q);
+        oracle::Integer f = n / d;  // truncates toward zero; d > 0
+        if (n < 0 && f * d != n) f -= 1;
+        return f;
+    };
+    const auto clamp = [count](const oracle::Integer& k) {
+        if (k < 0) return std::int64_t{0};
+        if (k >= count) return static_cast<std::int64_t>(count) - 1;
+        return static_cast<std::int64_t>(k);
+    };
+    // The cell left of the one holding `low` ends exactly at `low` when `low` is on a grid line.
+    const oracle::Integer first = floorOf((low - origin) / tile) - 1;
+    const oracle::Integer last = floorOf((high - origin) / tile);
+    if (last < 0 || first >= count) return {0, -1};
+    return {clamp(first), clamp(last)};
+}
+
 /// Whether, in the first step of some frame with both axes moving, a solid tile is first
-/// reached at exactly t = 1 (which the contract does not count as a hit).
+/// reached at exactly t = 1 (which the contract does not count as a hit). Such a tile touches the
+/// step's closed swept bounds, so only the cells those bounds meet are swept.
 template <class T>
 bool reachesATileAtTheEnd(const Scene<T>& scene, const std::vector<oracle::ExactFrame>& frames) {
     const oracle::ExactTileMap map = oracle::toExact(scene.map);
     for (std::size_t f = 0; f < frames.size(); ++f) {
         const oracle::ExactVec2 d = oracle::toExact(scene.moves[f]);
         if (d.x == 0 || d.y == 0) continue;
-        for (std::int32_t j = 0; j < map.rows; ++j)
-            for (std::int32_t i = 0; i < map.columns; ++i) {
+        const oracle::ExactVec2& p = frames[f].start;
+        const oracle::ExactVec2& size = frames[f].size;
+        const oracle::ExactVec2 end{p.x + d.x, p.y + d.y};
+        const auto [i0, i1] =
+            cellsMeeting(d.x < 0 ? end.x : p.x, oracle::Rational((d.x < 0 ? p.x : end.x) + size.x),
+                         map.origin.x, map.tileSize.x, map.columns);
+        const auto [j0, j1] =
+            cellsMeeting(d.y < 0 ? end.y : p.y, oracle::Rational((d.y < 0 ? p.y : end.y) + size.y),
+                         map.origin.y, map.tileSize.y, map.rows);
+        for (std::int64_t j = j0; j <= j1; ++j)
+            for (std::int64_t i = i0; i <= i1; ++i) {
                 if (!map.isSolid(i, j)) continue;
                 const oracle::ExactSweepOutput sweep =
                     oracle::sweepTileExact({{frames[f].start, frames[f].size}, d, map.tileRect(i, j)});
