@@ -4,7 +4,8 @@
 # README's test command on it (ctest over the unit and property tests, two seeds, CASES property
 # cases a property) and writes which tests caught it, with the smallest shrunk counterexample.
 #
-#   bash scripts/fault-table.sh [CASES]            every fault; writes docs/fault-table.md (CASES: 4000)
+#   bash scripts/fault-table.sh [CASES]            every fault; writes build/fault-table.md (CASES: 4000)
+#   bash scripts/fault-table.sh --out docs [CASES] the same into docs/fault-table.md, the committed page
 #   TILESWEEP_FAULTS="NAME ..." bash scripts/fault-table.sh [CASES]
 #                                                  only those; prints the rows, writes no file
 #   TILESWEEP_MUTANTS=1 bash scripts/fault-table.sh [CASES]
@@ -19,6 +20,13 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 source "$root/scripts/setup.sh"
 tilesweep_setup_base
+out_dir=$root/build
+if [ "${1:-}" = --out ]; then
+    out_dir=${2:?--out needs a directory}
+    shift 2
+fi
+case $out_dir in /*) ;; *) out_dir=$PWD/$out_dir ;; esac
+mkdir -p "$out_dir"
 cases=${1:-4000}
 listed=$(sed -n 's|^//   \([A-Z][A-Z0-9_]*\) .*|\1|p' "$root/src/fault_injection.h")
 faults=(${TILESWEEP_FAULTS:-$listed})
@@ -104,7 +112,7 @@ if [ -z "${TILESWEEP_FAULTS:-}" ] && [ -z "$mutants" ]; then
     {
         echo "# Fault table"
         echo
-        echo "Written by \`bash scripts/fault-table.sh $cases\` (do not edit by hand): the library built with"
+        echo "Written by \`bash scripts/fault-table.sh --out docs $cases\` (do not edit by hand): the library built with"
         echo "each deliberate fault of src/fault_injection.h in turn, then the README's test command on it"
         echo "(ctest over the unit and property tests, two seeds, $cases property cases a property). A fault"
         echo "is caught when some test fails; the smallest counterexample is the smallest shrunk scene any"
@@ -118,6 +126,6 @@ if [ -z "${TILESWEEP_FAULTS:-}" ] && [ -z "$mutants" ]; then
         echo "(\`TILESWEEP_MUTANTS=1 bash scripts/fault-table.sh\`)."
         echo
         cat "$table"
-    } >"$root/docs/fault-table.md"
-    echo "wrote docs/fault-table.md"
+    } >"$out_dir/fault-table.md"
+    echo "wrote $out_dir/fault-table.md"
 fi
