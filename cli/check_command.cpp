@@ -4,13 +4,14 @@
 // cases, failures, cases per second, coverage of each class, time. On a failure the shrunk
 // scene is written to the regression corpus with its picture, and the exit status is 1.
 //
-// With --resolver-cmd the claims about results run against an outside process instead
+// With --resolver-cmd (or --resolver-lib, or --resolver NAME for any other resolver of the
+// registry) the claims about results run against an outside process instead
 // (tilesweep/resolvers/outside_resolver.h): each worker starts the command once and keeps it; a
 // round draws its cases, sends every scene they ask for in one batch, judges them, and shrinks a
 // failure live, asking the process for each step's candidates; a crash or a hang fails the scene
-// it was given and the process is restarted. Before any worker starts, the
-// command is sent one known scene (tilesweep/resolvers/resolver_probe.h): a resolver that cannot answer
-// it ends the run at once with status 2. The workers are stopped at --seconds plus one
+// it was given and the process is restarted. Before any worker starts, the command is sent one
+// known scene (tilesweep/resolvers/resolver_probe.h): a resolver that cannot answer it ends the
+// run at once with status 2. The workers are stopped at --seconds plus one
 // --resolver-timeout whatever the resolver does, and every failure of the resolver itself is
 // shown as it happens.
 //
