@@ -9,6 +9,7 @@
 #
 #   bash scripts/bench_adapters.sh                  # 20 s each, 1000 cases a property per round
 #   bash scripts/bench_adapters.sh --seconds 60 --cases 2000 --out /tmp/adapters.md
+#   bash scripts/bench_adapters.sh --engines "godot rapier"   # only those rows
 #
 # Needs the dev build (bash scripts/test.sh builds it) and, for the engines, their runtimes
 # (bash scripts/setup.sh --engines; adapters/README.md).
@@ -17,12 +18,14 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 seconds=20
 cases=1000
 out=$root/build/bench/adapters.md
+only=""
 while [ $# -gt 0 ]; do
     case $1 in
         --seconds) seconds=$2; shift 2 ;;
         --cases) cases=$2; shift 2 ;;
         --out) out=$2; shift 2 ;;
-        *) echo "bench_adapters: unknown option $1 (--seconds S, --cases N, --out FILE)" >&2; exit 2 ;;
+        --engines) only=" $2 "; shift 2 ;;
+        *) echo "bench_adapters: unknown option $1 (--seconds S, --cases N, --out FILE, --engines \"NAME...\")" >&2; exit 2 ;;
     esac
 done
 build=${TILESWEEP_BUILD_DIR:-$root/build/plain}
@@ -34,10 +37,12 @@ fi
 
 # name | command | what it is
 engines=(
+    "tilesweep (built in)|$tool|the main job: tilesweep in this process, every float property, no outside resolver"
     "tilesweep|$tool resolve --scalar float|tilesweep itself through a pipe: the suite's own cost"
     "tilesweep (file mode)|$tool resolve --scalar float {in} > {out}|the same, one process run per batch"
     "twin|$build/adapters/tilesweep_twin_adapter|the inexact game-style twin (C++)"
     "box2d|$build/adapters/tilesweep_box2d_adapter|Box2D 2.4 b2TimeOfImpact per tile (C++)"
+    "game-style library|$tool resolve --resolver lib:$build/examples/libtilesweep_example_game_style.so --scalar float|examples/resolver_lib/game_style.c through --resolver-lib (C, in a child process)"
     "godot|${TILESWEEP_ADAPTERS:-$root/adapters}/godot/run.sh {in} {out}|Godot 3 body_test_motion (GDScript, file mode)"
     "rapier|${TILESWEEP_ADAPTERS:-$root/adapters}/rapier/run.sh|Rapier KinematicCharacterController (node, pipe)"
     "planck|${TILESWEEP_ADAPTERS:-$root/adapters}/planck/run.sh|planck (Box2D 2.x in JS doubles) dynamic body and world.step (node, pipe)"
@@ -67,6 +72,8 @@ trap 'rm -rf "$scratch"' EXIT
 } > "$scratch/report.md"
 for entry in "${engines[@]}"; do
     IFS='|' read -r name command what <<<"$entry"
+    # --engines names rows by their first word ("tilesweep" is the three tilesweep rows).
+    if [ -n "$only" ] && [[ $only != *" ${name%% *} "* ]]; then continue; fi
     first=${command%% *}
     if [ ! -x "$first" ]; then
         echo "bench_adapters: $name skipped: $first is not built or not here" >&2
@@ -79,7 +86,9 @@ for entry in "${engines[@]}"; do
     if [ -f "$scalar_file" ]; then scalar=$(tr -d '[:space:]' < "$scalar_file"); fi
     load_before=$(cut -d' ' -f1 /proc/loadavg)
     echo "bench_adapters: $name for $seconds s" >&2
-    "$tool" check --resolver-cmd "$command" --scalar "$scalar" --cases "$cases" --seconds "$seconds" --keep-going --no-shrink \
+    resolver=(--resolver-cmd "$command")
+    [ "$command" = "$tool" ] && resolver=()  # the built-in resolver: no outside process
+    "$tool" check "${resolver[@]}" --scalar "$scalar" --cases "$cases" --seconds "$seconds" --keep-going --no-shrink \
         --corpus "$scratch/corpus" --json "$scratch/$name.json" > "$scratch/$name.out" 2>&1 || true
     load_after=$(cut -d' ' -f1 /proc/loadavg)
     summary=$(grep -E '^[0-9]+ cases in ' "$scratch/$name.out" | tail -1)
