@@ -5,8 +5,8 @@
 // claim fails, so a team's CI keeps its counterexamples fixed.
 #include "replay_command.h"
 
+#include "all_claims.h"
 #include "outside_resolver_options.h"
-#include "scene_checks.h"
 
 #include "tilesweep/resolvers/resolver_registry.h"
 

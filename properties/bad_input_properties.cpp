@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Bad input is rejected with an error, never a result: tile sizes whose multiples are not
 // representable. (NaN, infinities and sizes that are not > 0 in every field are the suite's claim
-// badInputIsRejected, scene_checks.cpp, which `tilesweep check` runs too.)
+// badInputIsRejected, all_claims.cpp, which `tilesweep check` runs too.)
 #include "generators.h"
 
 #include "tilesweep/resolve.h"

@@ -4,14 +4,14 @@
 // What a claim is: a check of one scene against the resolver under test, with everything the
 // suite needs to know about it, declared once beside its definition (the group functions at the
 // end of safety_claims.cpp, exact_reference_claims.cpp, metamorphic_claims.cpp,
-// game_feel_claims.cpp and boundary_checks.cpp):
+// game_feel_claims.cpp and boundary_claims.cpp):
 //
 //     {"stopsJustTouching", &stopsJustTouching<T>, ClaimScope::Safety, nullptr,
 //      {{"stopsJustTouching", Family::Mixed, {{"hit", 0.2}}}}},
 //
 // its name, its check, its scope (which resolvers it holds), the scenes it asks the resolver for,
 // and its properties: each a family of generated scenes with the coverage floors a run of it must
-// reach (the tags are classifyScene's, scene_checks.h). scene_checks.cpp gathers the groups; the
+// reach (the tags are classifyScene's, all_claims.h). all_claims.cpp gathers the groups; the
 // property suite (property_suite.h) makes one property per entry and scalar type.
 
 #include "generators.h"

@@ -2,8 +2,8 @@
 #pragma once
 
 // The claims about results and about the library, one function each, grouped by kind in the
-// files named below; scene_checks.cpp lists them (allClaims) with the boundary claims of
-// boundary_checks.h. Each returns an empty string when the claim holds on the scene, otherwise
+// files named below; all_claims.cpp lists them (allClaims) with the boundary claims of
+// boundary_claims.h. Each returns an empty string when the claim holds on the scene, otherwise
 // what went wrong. Internal to the property suite.
 
 #include "claim.h"
@@ -16,7 +16,7 @@
 
 namespace tilesweep::properties {
 
-/// The claims of each file below, each with its scope and properties (claim.h); scene_checks.cpp
+/// The claims of each file below, each with its scope and properties (claim.h); all_claims.cpp
 /// gathers them.
 template <class T>
 [[nodiscard]] std::vector<Claim<T>> safetyClaims();
@@ -92,7 +92,7 @@ template <class T, Axis kAxis>
 
 /// The scenes each metamorphic claim asks the resolver for (the scene and its transformed twin;
 /// none when the claim makes no claim on the scene), so that a round can ask for its cases' scenes
-/// in one batch before judging them (scene_checks.h, Claim::asks).
+/// in one batch before judging them (all_claims.h, Claim::asks).
 template <class T>
 [[nodiscard]] std::vector<Scene<T>> zeroMoveAsks(const Scene<T>& scene);
 template <class T>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Replays every regression scene in properties/corpus/ against every claim, for ever: each file
 // is a named test case. A file is a scene line with the property, seed and scalar that found it.
-#include "scene_checks.h"
+#include "all_claims.h"
 
 #include "tilesweep/resolvers/resolver_registry.h"
 

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "property_suite.h"
 
+#include "all_claims.h"
 #include "answer_cache.h"
 #include "coverage_judgement.h"
 #include "generators.h"
-#include "scene_checks.h"
 
 #include "tilesweep/oracle/exact/exact_resolve.h"
 #include "tilesweep/resolvers/resolver_registry.h"
@@ -325,7 +325,7 @@ Property propertyOf(const Claim<T>& claim, const std::string& name, Family famil
             }};
 }
 
-/// Every property of every claim, in T, in the order the claims are gathered (scene_checks.cpp).
+/// Every property of every claim, in T, in the order the claims are gathered (all_claims.cpp).
 template <class T>
 void addAll(std::vector<Property>& out) {
     for (const Claim<T>& claim : allClaims<T>())

@@ -6,7 +6,7 @@
 // `tilesweep check` both run these; a failure shrinks along RapidCheck's shrinks, and the minimal
 // scene is written to the regression corpus with the property and seed that found it.
 
-#include "scene_checks.h"
+#include "all_claims.h"
 
 #include <cstdint>
 #include <functional>
@@ -65,7 +65,7 @@ struct PropertyOutcome {
 /// One property: a claim, in one scalar type, over one scene family.
 struct Property {
     std::string name;   ///< claim name and scalar, e.g. "matchesExactReferenceBitForBit_float"
-    std::string claim;  ///< the claim it checks (scene_checks.h), e.g. "matchesExactReferenceBitForBit"
+    std::string claim;  ///< the claim it checks (all_claims.h), e.g. "matchesExactReferenceBitForBit"
     ClaimScope scope = ClaimScope::Internal;  ///< the claim's scope: which resolvers it applies to
     std::string scalar;                       ///< "float" or "double"
     std::vector<CoverageFloor> floors;
@@ -75,7 +75,7 @@ struct Property {
 /// Every property of the suite.
 [[nodiscard]] const std::vector<Property>& allProperties();
 
-/// A property outside the suite's table, as addClaim builds them: `claimName` (scene_checks.h) in
+/// A property outside the suite's table, as addClaim builds them: `claimName` (all_claims.h) in
 /// `scalar` ("float" or "double") over the family named `family` (familyName), with `floors`.
 /// Throws std::invalid_argument for an unknown claim, scalar or family.
 [[nodiscard]] Property makeProperty(const std::string& name, const std::string& claimName,

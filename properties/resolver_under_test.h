@@ -8,7 +8,7 @@
 //     std::string why = obeysTheSafetyRules(scene, resolver);   // "" when the claim holds
 //
 // Inside a claim, framesFrom asks the resolver and throws ResolverFailure when it gives no
-// answer; checkClaim (scene_checks.h) turns that into the claim's failure on that scene, so a
+// answer; checkClaim (all_claims.h) turns that into the claim's failure on that scene, so a
 // crash or a hang of the resolver is a counterexample like any other.
 
 #include "tilesweep/resolvers/scene_resolver.h"

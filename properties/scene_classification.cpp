@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The coverage tags of a scene (scene_checks.h, classifyScene): what its exact resolution and the
+// The coverage tags of a scene (all_claims.h, classifyScene): what its exact resolution and the
 // resolver's decision path say it reaches, for RC_CLASSIFY and the coverage floors.
-#include "scene_checks.h"
+#include "all_claims.h"
 
 #include "tilesweep/mover.h"
 #include "tilesweep/oracle/exact/exact_geometry.h"
@@ -238,7 +238,7 @@ inline bool overlapsExactly(const oracle::ExactVec2& pos, const oracle::ExactVec
     return pos.x < t.max.x && t.min.x < pos.x + size.x && pos.y < t.max.y && t.min.y < pos.y + size.y;
 }
 
-/// The one-way tags (scene_checks.h), from the exact frames and the scene's map:
+/// The one-way tags (all_claims.h), from the exact frames and the scene's map:
 ///   one-way-hit     a hit on a one-way tile;  one-way-tie: such a hit on an exact corner tie;
 ///   one-way-fast    a one-way hit in a frame moving four tiles or more down;
 ///   one-way-seam    two one-way tiles hit at once (a landing across a platform's seam);

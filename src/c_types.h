@@ -3,7 +3,7 @@
 
 // The C API's types by scalar type (include/tilesweep/tilesweep.h): the C names of a float or a
 // double map, map description, vector, mover, result and contact, for C++ written once for both.
-// The C API itself (c_api.cpp) and the property suite's claims about it (boundary_checks.cpp)
+// The C API itself (c_api.cpp) and the property suite's claims about it (boundary_claims.cpp)
 // read them from here. Internal: not installed.
 
 #include "tilesweep/tilesweep.h"

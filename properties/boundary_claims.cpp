@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "boundary_checks.h"
+#include "boundary_claims.h"
 
 #include "c_types.h"
 

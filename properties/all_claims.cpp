@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-// The claims, gathered (scene_checks.h): each is declared with its kind, beside its definition, in
+// The claims, gathered (all_claims.h): each is declared with its kind, beside its definition, in
 // exact_reference_claims.cpp, safety_claims.cpp, metamorphic_claims.cpp, game_feel_claims.cpp or
-// boundary_checks.cpp (claim.h); the coverage tags are in scene_classification.cpp.
-#include "scene_checks.h"
+// boundary_claims.cpp (claim.h); the coverage tags are in scene_classification.cpp.
+#include "all_claims.h"
 
-#include "boundary_checks.h"
+#include "boundary_claims.h"
 #include "claims.h"
 
 #include <exception>

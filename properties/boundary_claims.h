@@ -4,7 +4,7 @@
 // Claims about the boundaries of the game-loop API and the C API: buffers of exactly
 // the size needed, the inline contact limit and the wide path at exactly their bounds, and every
 // C error code from a cause built to give exactly it. They concern tilesweep's own library
-// (ClaimScope::Internal), and scene_checks.cpp gathers them with the other claims.
+// (ClaimScope::Internal), and all_claims.cpp gathers them with the other claims.
 
 #include "claim.h"
 
