@@ -5,14 +5,18 @@
 // answer cache a round asks through: a scene it holds is never asked for again.
 #include "claims.h"
 
+#include "all_claims.h"
 #include "answer_cache.h"
+#include "property_suite.h"
 
 #include "tilesweep/resolvers/in_process_resolver.h"
+#include "tilesweep/scene/scalar_text.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <functional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -113,6 +117,28 @@ TEST(MetamorphicClaims, zeroMoveFailsWithAStartOverlapMissingTwiceOrWrong) {
         });
         EXPECT_NE(why.find("start overlaps differ"), std::string::npos) << why;
     }
+}
+
+/// Every claim is held somewhere, and the properties it declares make a suite whose names are
+/// unique (a regression file is named after its property) in both scalar types.
+template <class T>
+void everyClaimDeclaresUniqueProperties() {
+    std::set<std::string> names;
+    std::set<std::string> claims;
+    for (const Claim<T>& claim : allClaims<T>()) {
+        EXPECT_TRUE(claims.insert(claim.name).second) << "claim declared twice: " << claim.name;
+        EXPECT_FALSE(claim.properties.empty()) << claim.name << " has no property";
+        for (const PropertyOf& p : claim.properties) EXPECT_TRUE(names.insert(p.name).second) << p.name;
+        EXPECT_EQ(findClaim<T>(claim.name), &claim);
+    }
+    std::size_t listed = 0;
+    for (const Property& p : allProperties()) listed += p.scalar == detail::scalarName<T>() ? 1 : 0;
+    EXPECT_EQ(listed, names.size());
+}
+
+TEST(ClaimDeclarations, everyClaimDeclaresUniqueProperties) {
+    everyClaimDeclaresUniqueProperties<float>();
+    everyClaimDeclaresUniqueProperties<double>();
 }
 
 TEST(AnswerCache, aSceneHeldIsNotAskedForAgain) {
