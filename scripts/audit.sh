@@ -25,14 +25,15 @@ export TILESWEEP_EXTRA_PACKAGES=python3-matplotlib
 bash "$root/scripts/setup.sh"
 TILESWEEP_TARGETS=tilesweep_cli bash "$root/scripts/build.sh" >/dev/null
 cd "$root"
+# The stamp describes the sources the audit runs on, so it is taken before docs/audit is replaced.
+commit=$(git -C "$root" rev-parse --short HEAD)
+dirty=$(git -C "$root" status --porcelain --untracked-files=no | grep -q . && echo " (with uncommitted changes)" || true)
 "${TILESWEEP_BUILD_DIR:-$root/build/$TILESWEEP_PRESET}/cli/tilesweep" audit --out "$out" "${args[@]}" || status=$?
 /usr/bin/python3 "$root/scripts/plots.py" audit "$out"
 if ((docs)) && [ "${status:-0}" -le 1 ]; then
     rm -rf "$root/docs/audit"
     mkdir -p "$root/docs/audit"
     cp "$out/error_vs_magnitude.svg" "$out/failures_per_family.svg" "$root/docs/audit/"
-    commit=$(git -C "$root" rev-parse --short HEAD)
-    dirty=$(git -C "$root" status --porcelain --untracked-files=no | grep -q . && echo " (with uncommitted changes)" || true)
     stamp="Made on $(date -u '+%Y-%m-%d %H:%M UTC') on commit $commit$dirty by \`bash scripts/audit.sh --docs${args[*]:+ ${args[*]}}\`; regenerate it whole that way, never by hand."
     awk -v stamp="$stamp" 'NR == 1 { print; print ""; print stamp; next } { print }' "$out/report.md" > "$root/docs/audit/report.md"
     echo "audit: docs/audit replaced (report.md and the charts; every figure in $out/report.json)"
