@@ -24,6 +24,8 @@
 #if TILESWEEP_HAVE_CHECK
 #include "check_command.h"
 #include "replay_command.h"
+
+#include "tilesweep/oracle/exact/gmp_allocation.h"
 #endif
 #if TILESWEEP_HAVE_AUDIT
 #include "audit_command.h"
@@ -284,6 +286,10 @@ int runRenderCommand(const RenderOptions& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
+#if TILESWEEP_HAVE_CHECK
+    // Before any exact number exists: the judge's rationals then reuse freed blocks.
+    tilesweep::oracle::useCachedGmpAllocation();
+#endif
     std::ios::sync_with_stdio(false);
     CLI::App app{
         "tilesweep: exact swept-AABB collision of a box moving through a 2D tile map.\n"
