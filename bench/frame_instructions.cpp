@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Instructions per frame, counted rather than timed: every side-by-side scenario of the
 // benchmarks (tilesweep/scenarios/frames.h: kSideBySideScenarios) through tilesweep (on its
-// prepared map, and on the bare view), the lean twin and the lean grid, in float and double. Run under
-// callgrind, the program zeroes the counters before each scenario's frames and dumps them after, named
+// prepared map, and on the bare view), the lean twin, the lean grid and the dividing twin, in float and
+// double. Run under callgrind, the program zeroes the counters before each scenario's frames and dumps them
+// after, named
 // "<impl> <scenario><T>[/speed] <frames>"; scripts/instructions.sh divides each dump's instruction count by
 // its frames. An instruction count does not depend on the machine's load, so it is the measure to compare on
 // a shared machine, and the one that says where a ratio of run times comes from.
@@ -42,6 +43,8 @@ const char* nameOf(Impl impl) {
             return "Twin";
         case Impl::Grid:
             return "Grid";
+        case Impl::TwinDividing:
+            return "TwinDividing";
         case Impl::TwinLibm:
             return "TwinLibm";
     }
@@ -88,6 +91,7 @@ void countScenario(FrameKind kind, int speedArg, const char* scalar, std::size_t
     count<T, Impl::TilesweepView>(s, label, frames);
     count<T, Impl::Twin>(s, label, frames);
     count<T, Impl::Grid>(s, label, frames);
+    count<T, Impl::TwinDividing>(s, label, frames);
 }
 
 }  // namespace

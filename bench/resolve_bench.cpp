@@ -268,15 +268,18 @@ BENCHMARK(BM_Box2D_TimeOfImpact_Pairs);
 // would pick instead, on the same pre-generated frames (frame_scenarios.h, 65,536 per
 // scenario), each with what it keeps per map (side_by_side.h): tilesweep on its PreparedMap
 // (and TilesweepView, on the bare view, redoing the map's checks each frame); the lean inexact twin
-// (baselines/: tilesweep/baselines/twin_resolve.h, plain T arithmetic, the same path-order walk, no libm call
-// and the tile reciprocal computed once per map) and the lean swept-bounds grid resolver (grid_resolve.h
-// there); and TwinLibm, the first twin, whose cell indices are std::floor/std::ceil of a quotient per cell,
-// kept so that the cost of those calls stays visible. Named BM_<Impl>_<Scenario><T>[/speed], registered
-// scenario by scenario so that the implementations run next to each other.
-// Why each scenario: Random30 and FloorAndWalls are the common cases at four speeds; resting
-// on a floor is what a platformer does most frames (a hit at t = 0 and a slide, every frame);
-// free flight is the cheapest useful frame (no hit: the walk's cost alone); far from the origin
-// tilesweep's lattice needs wider integers; a zero move measures the fixed cost per call.
+// (baselines/: tilesweep/baselines/twin_resolve.h, plain T arithmetic, the same path-order walk, no libm
+// call, the tile reciprocal computed once per map and the displacement's inverse once per step) and the lean
+// swept-bounds grid resolver (grid_resolve.h there); TwinDividing, the twin that divides by the displacement
+// in every tile test; and TwinLibm, which also takes its cell indices as std::floor/std::ceil of a quotient
+// per cell. The last two are kept so that what each trick saves stays visible. Named
+// BM_<Impl>_<Scenario><T>[/speed], registered scenario by scenario so that the implementations run next to
+// each other.
+// Why each scenario: Random30 and FloorAndWalls are the common cases at five speeds, up to the fast movers
+// a sweep exists for; a box wider than a tile meets several cells in each column it crosses; resting on a
+// floor is what a platformer does most frames (a hit at t = 0 and a slide, every frame); free flight is the
+// cheapest useful frame (no hit: the walk's cost alone); far from the origin tilesweep's lattice needs wider
+// integers; a zero move measures the fixed cost per call.
 
 using tilesweep::bench::Impl;
 
@@ -327,6 +330,7 @@ void registerFrameBenchmarks(const char* scalar, tilesweep::bench::FrameKind kin
     registerFrameBenchmark<T, Impl::TilesweepView>("TilesweepView", scalar, kind, speedArg);
     registerFrameBenchmark<T, Impl::Twin>("Twin", scalar, kind, speedArg);
     registerFrameBenchmark<T, Impl::Grid>("Grid", scalar, kind, speedArg);
+    registerFrameBenchmark<T, Impl::TwinDividing>("TwinDividing", scalar, kind, speedArg);
     registerFrameBenchmark<T, Impl::TwinLibm>("TwinLibm", scalar, kind, speedArg);
 }
 

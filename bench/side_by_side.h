@@ -2,7 +2,7 @@
 #pragma once
 
 // The resolvers the side-by-side comparisons run on the same frames: tilesweep, the lean twin,
-// the lean grid and the libm twin (baselines/), behind one call, so that the timed benchmarks
+// the lean grid, and the dividing and libm twins (baselines/), behind one call, so that the timed benchmarks
 // (resolve_bench.cpp) and the instruction counts (frame_instructions.cpp) run the same code.
 // Each gets what it keeps per map, made once as a game keeps it beside its map: tilesweep its
 // PreparedMap (prepareMap), the baselines the tile size's reciprocal. TilesweepView is tilesweep
@@ -15,7 +15,7 @@
 
 namespace tilesweep::bench {
 
-enum class Impl { Tilesweep, TilesweepView, Twin, Grid, TwinLibm };
+enum class Impl { Tilesweep, TilesweepView, Twin, Grid, TwinDividing, TwinLibm };
 
 /// What each resolver keeps per map (see the top of this file).
 template <class T>
@@ -39,6 +39,8 @@ template <class T, Impl I>
         return baselines::resolveMoveTwin<T>(in, out, perMap.reciprocal);
     } else if constexpr (I == Impl::Grid) {
         return baselines::resolveMoveGrid<T>(in, out, perMap.reciprocal);
+    } else if constexpr (I == Impl::TwinDividing) {
+        return baselines::resolveMoveTwinDividing<T>(in, out, perMap.reciprocal);
     } else {
         return baselines::resolveMoveTwinLibm<T>(in, out);
     }

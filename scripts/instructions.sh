@@ -42,12 +42,12 @@ for path in glob.glob(os.path.join(sys.argv[1], "out.*")):
         counts = dict(zip(events, totals))  # trailing zero counts are left out of the file
         rows.setdefault(scenario, {})[impl] = counts["Ir"] / int(frames)
         missed.setdefault(scenario, {})[impl] = counts.get("Bcm", 0) / int(frames)
-print("| scenario | tilesweep | tilesweep (view) | lean twin | lean grid | tilesweep / fewer |")
-print("|---|---:|---:|---:|---:|---:|")
+print("| scenario | tilesweep | tilesweep (view) | lean twin | lean grid | dividing twin | tilesweep / fewer lean |")
+print("|---|---:|---:|---:|---:|---:|---:|")
 for scenario in sorted(rows):
     r = rows[scenario]
     best = min(r.get("Twin", float("inf")), r.get("Grid", float("inf")))
-    print(f"| {scenario} | {r.get('Tilesweep', 0):.0f} | {r.get('TilesweepView', 0):.0f} | {r.get('Twin', 0):.0f} | {r.get('Grid', 0):.0f} | {r.get('Tilesweep', 0) / best:.2f} |")
+    print(f"| {scenario} | {r.get('Tilesweep', 0):.0f} | {r.get('TilesweepView', 0):.0f} | {r.get('Twin', 0):.0f} | {r.get('Grid', 0):.0f} | {r.get('TwinDividing', 0):.0f} | {r.get('Tilesweep', 0) / best:.2f} |")
 print()
 print("Conditional branches mispredicted a frame (callgrind's simulated predictor):")
 print()

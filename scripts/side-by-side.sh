@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The side-by-side table: tilesweep against the lean twin and the lean grid (and
-# tilesweep on the bare view, and the libm twin, for reference) on every scenario of
+# tilesweep on the bare view, and the dividing and libm twins, for reference) on every scenario of
 # bench/resolve_bench.cpp, in float and double, as medians of repeated runs in random interleaved
 # order within one binary, in several processes of it: a process runs as a whole faster or
 # slower on this VM (by up to 1.4x, every benchmark alike), so each timing is the median of the
@@ -34,7 +34,7 @@ for ((p = 1; p <= processes; ++p)); do
     mkdir "$out/run$p"
     link="$out/run$p/bench$(printf '%*s' $((7 * p)) '' | tr ' ' _)"
     ln -s "$build/bench/tilesweep_bench" "$link"
-    "$link" --benchmark_filter="^BM_(Tilesweep|TilesweepView|Twin|Grid|TwinLibm)_.*${filter}" \
+    "$link" --benchmark_filter="^BM_(Tilesweep|TilesweepView|Twin|Grid|TwinDividing|TwinLibm)_.*${filter}" \
         --benchmark_repetitions="$repetitions" --benchmark_min_time="$min_time" \
         --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true \
         --benchmark_format=json --benchmark_out="$out/$p.json" --benchmark_out_format=json >/dev/null
@@ -49,7 +49,7 @@ for path in sorted(glob.glob(os.path.join(folder, "*.json"))):
     for b in json.load(open(path))["benchmarks"]:
         if b.get("aggregate_name") != "median":
             continue
-        m = re.match(r"BM_(Tilesweep|TilesweepView|Twin|Grid|TwinLibm)_(\w+)<(float|double)>(/\d+)?_median$", b["name"])
+        m = re.match(r"BM_(Tilesweep|TilesweepView|Twin|Grid|TwinDividing|TwinLibm)_(\w+)<(float|double)>(/\d+)?_median$", b["name"])
         if not m:
             continue
         impl, scenario, scalar, speed = m.groups()
@@ -64,9 +64,9 @@ def ns(v):
 print(f"Medians over {processes} processes of the medians of {reps} interleaved repetitions, CPU ns per frame "
       f"(the ratio: the median of each process's ratio); {started}, load {before} before, {after} after.")
 print()
-print("| scenario | T | tilesweep | ts (view) | lean twin | lean grid | libm twin | ts / faster lean |")
-print("|---|---|---:|---:|---:|---:|---:|---:|")
-order = ["Random30", "FloorAndWalls", "RestingOnFloor", "FreeFlight", "FarRandom30", "ZeroMove"]
+print("| scenario | T | tilesweep | ts (view) | lean twin | lean grid | dividing twin | libm twin | ts / faster lean |")
+print("|---|---|---:|---:|---:|---:|---:|---:|---:|")
+order = ["Random30", "FloorAndWalls", "WideBox", "RestingOnFloor", "FreeFlight", "FarRandom30", "ZeroMove"]
 def row_key(key):
     scenario, speed = key
     return (order.index(scenario) if scenario in order else len(order), scenario, int(speed[1:] or 0))
@@ -85,7 +85,8 @@ for (scenario, speed), by_scalar in sorted(times.items(), key=lambda item: row_k
         tiles = f", {int(speed[1:]) / 2:g} tiles/frame" if speed else ""
         mark = "" if ratio <= 1.0 else " (over)"
         print(f"| {scenario}{tiles} | {scalar} | {ns(r['Tilesweep'])} | {ns(r.get('TilesweepView', 0))} | "
-              f"{ns(r.get('Twin', 0))} | {ns(r.get('Grid', 0))} | {ns(r.get('TwinLibm', 0))} | {ratio:.2f}x{mark} |")
+              f"{ns(r.get('Twin', 0))} | {ns(r.get('Grid', 0))} | {ns(r.get('TwinDividing', 0))} | {ns(r.get('TwinLibm', 0))} | "
+              f"{ratio:.2f}x{mark} |")
 print()
 if ratios:
     print(f"tilesweep / faster lean baseline: {min(ratios):.2f}x to {max(ratios):.2f}x, median "

@@ -18,8 +18,8 @@ namespace detail {
 
 /// Every solid cell of the step's swept bounds, row by row.
 struct FindHitsInSweptBounds {
-    template <class T, CellIndexing I>
-    void operator()(const TileMapView<T>& map, const StepFrame<T, I>& f, StepHits<T>& hits) const noexcept {
+    template <class T, Arithmetic A>
+    void operator()(const TileMapView<T>& map, const StepFrame<T, A>& f, StepHits<T>& hits) const noexcept {
         std::int64_t first[2];
         std::int64_t last[2];
         for (int a = 0; a < 2; ++a) {
@@ -42,8 +42,8 @@ template <class T>
 [[nodiscard]] inline ResolveResult<T> resolveMoveGrid(const ResolveInput<T>& input,
                                                       const ResolveOutput<T>& output,
                                                       TileReciprocal<T> reciprocal) noexcept {
-    return detail::resolveFrame<T, detail::CellIndexing::Lean>(input, output, reciprocal,
-                                                               detail::FindHitsInSweptBounds{});
+    return detail::resolveFrame<T, detail::Arithmetic::Lean>(input, output, reciprocal,
+                                                             detail::FindHitsInSweptBounds{});
 }
 
 /// As above, the reciprocal computed for this frame (resolveMove's signature shape).

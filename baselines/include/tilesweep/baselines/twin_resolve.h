@@ -18,8 +18,8 @@
 //   - at most two steps; each finds the earliest time of impact over the cells the step's path
 //     covers, takes every tile hit at exactly that time (T equality), snaps the box to the face
 //     on each contact axis, zeroes that axis of the remaining motion and slides on;
-//   - per tile, the slab method with divisions by the displacement (Ericson, RTCD 5.3.3): an
-//     axis that does not move overlaps at all times or at none; touching is not overlapping
+//   - per tile, the slab method (Ericson, RTCD 5.3.3) with the inverse of the step's displacement:
+//     an axis that does not move overlaps at all times or at none; touching is not overlapping
 //     (open intervals, entry == exit misses); a tile the box overlaps at the step's start never
 //     blocks; the later entry is the contact axis, and an exact tie takes y unless only the x
 //     face is exposed;
@@ -31,14 +31,22 @@
 // next frame then lets it walk out. No validation: the input is assumed valid (tilesweep's
 // resolveMove checks it every frame; a NaN here just propagates). No allocation.
 //
-// Lean, as a careful game developer writes it, so that the comparison is honest: a coordinate
-// becomes a cell index with one multiplication by the tile size's reciprocal, computed once per
-// map (TileReciprocal; the two-argument overload computes it once per frame), and a floor or
-// ceiling by truncation and a one-step correction, with no libm call. The reciprocal rounds, so
-// where the tile size is not a power of two a coordinate within an ulp or so of a tile edge may
-// land in the neighbouring cell's index; the ranges keep the touching cells at both ends, and
-// the slab test decides. resolveMoveTwinLibm keeps the first twin (std::floor and std::ceil of a
-// quotient per cell) for one benchmark row, so that what the libm calls cost stays visible.
+// Lean, as a careful game developer writes it, so that the comparison is honest:
+//   - a time is a distance times the inverse of the step's displacement, 1 / r per moving axis,
+//     computed once per step (the ray/box slab trick): no division per tile or per walked cell;
+//   - a coordinate becomes a cell index with one multiplication by the tile size's reciprocal,
+//     computed once per map (TileReciprocal; the two-argument overload computes it once per
+//     frame), and a floor or ceiling by truncation and a one-step correction, with no libm call.
+// Both reciprocals round. Where the tile size is not a power of two a coordinate within an ulp or
+// so of a tile edge may land in the neighbouring cell's index; the ranges keep the touching cells
+// at both ends, and the slab test decides. A time from the rounded inverse can differ from the
+// rounded quotient by an ulp, so the lean twin decides a near tie now and then otherwise than the
+// dividing one; neither is exact.
+//
+// Two heavier twins are kept for one benchmark row each, so that what each trick saves stays
+// visible: resolveMoveTwinDividing divides every distance by the displacement (four divisions
+// per tile tested, one or two per walked cell), and resolveMoveTwinLibm does that and takes each
+// cell index as std::floor or std::ceil of a quotient by the tile size.
 //
 // The frame loop and the tile test are shared with grid_resolve.h (the swept-bounds
 // variant); only the broadphase differs.
@@ -60,9 +68,12 @@ template <class T>
 
 namespace detail {
 
-/// How a coordinate becomes a cell index: the lean way (a multiplication by the reciprocal and
-/// a floor by truncation), or the first twin's (std::floor and std::ceil of a quotient).
-enum class CellIndexing { Lean, Libm };
+/// How the twin turns numbers into cells and times (see the header comment):
+///   Lean      cell index: (v - origin) * (1 / tile), truncated; time: distance * (1 / r), the
+///             inverse taken once per step;
+///   Dividing  cell index as Lean; time: distance / r at every use;
+///   Libm      cell index: std::floor or std::ceil of (v - origin) / tile; time as Dividing.
+enum class Arithmetic { Lean, Dividing, Libm };
 
 /// The times at which a box's projection on one axis overlaps a tile's: the open interval
 /// (entry, exit); all times when `ever` and the axis does not move; none when !ever.
@@ -73,29 +84,44 @@ struct Slab {
     T exit;
 };
 
-/// Slab of [lo, hi] moving by d against [tileLo, tileHi], in T, with divisions by d.
-template <class T>
-[[nodiscard]] inline Slab<T> slabOf(T lo, T hi, T d, T tileLo, T tileHi) noexcept {
-    constexpr T inf = std::numeric_limits<T>::infinity();
-    if (d == T(0)) return {lo < tileHi && hi > tileLo, -inf, inf};
-    if (d > T(0)) return {true, (tileLo - hi) / d, (tileHi - lo) / d};
-    return {true, (tileHi - lo) / d, (tileLo - hi) / d};
-}
-
 /// One step's geometry, per axis (0 = x, 1 = y), computed once per step.
-template <class T, CellIndexing I = CellIndexing::Lean>
+template <class T, Arithmetic A = Arithmetic::Lean>
 struct StepFrame {
-    T lo[2];                ///< box min edge at the step's start
-    T hi[2];                ///< box max edge at the step's start (lo + size, rounded)
-    T r[2];                 ///< the step's motion
-    T origin[2];            ///< map origin
-    T tile[2];              ///< tile size
-    std::int64_t cells[2];  ///< columns, rows
-    T inverseTile[2];       ///< 1 / tile, rounded (the lean indexing's)
+    T lo[2];                       ///< box min edge at the step's start
+    T hi[2];                       ///< box max edge at the step's start (lo + size, rounded)
+    T r[2];                        ///< the step's motion
+    T origin[2];                   ///< map origin
+    T tile[2];                     ///< tile size
+    std::int64_t cells[2];         ///< columns, rows
+    T inverseTile[2];              ///< 1 / tile, rounded (the cell indexing's, but Libm's)
+    T inverseR[2] = {T(0), T(0)};  ///< 1 / r, rounded, on a moving axis (Lean's times); see startStep
+
+    /// Takes the inverse of the step's motion, once per step (Lean; the others divide).
+    void startStep() noexcept {
+        if constexpr (A == Arithmetic::Lean)
+            for (int a = 0; a < 2; ++a) inverseR[a] = r[a] != T(0) ? T(1) / r[a] : T(0);
+    }
+
+    /// The time at which the box has moved `distance` on axis a (r[a] != 0), in T.
+    [[nodiscard]] T timeOf(int a, T distance) const noexcept {
+        if constexpr (A == Arithmetic::Lean) {
+            return distance * inverseR[a];
+        } else {
+            return distance / r[a];
+        }
+    }
+
+    /// The times at which the box's span on axis a overlaps [tileLo, tileHi] (the slab).
+    [[nodiscard]] Slab<T> slab(int a, T tileLo, T tileHi) const noexcept {
+        constexpr T inf = std::numeric_limits<T>::infinity();
+        if (r[a] == T(0)) return {lo[a] < tileHi && hi[a] > tileLo, -inf, inf};
+        if (r[a] > T(0)) return {true, timeOf(a, tileLo - hi[a]), timeOf(a, tileHi - lo[a])};
+        return {true, timeOf(a, tileHi - lo[a]), timeOf(a, tileLo - hi[a])};
+    }
 
     /// floor((v - origin) / tile), clamped to [-1, cells]: the cell holding v on axis a.
     [[nodiscard]] std::int64_t cellOf(int a, T v) const noexcept {
-        if constexpr (I == CellIndexing::Libm) {
+        if constexpr (A == Arithmetic::Libm) {
             const T q = std::floor((v - origin[a]) / tile[a]);
             if (!(q > T(-1))) return -1;
             if (q >= static_cast<T>(cells[a])) return cells[a];
@@ -115,7 +141,7 @@ struct StepFrame {
     /// rounding can land such a bound on a tile edge (edges are representable) but not carry it
     /// over, so a range that keeps the touching cells at both ends loses no tile to it.
     [[nodiscard]] std::int64_t cellBefore(int a, T v) const noexcept {
-        if constexpr (I == CellIndexing::Libm) {
+        if constexpr (A == Arithmetic::Libm) {
             const T q = std::ceil((v - origin[a]) / tile[a]) - T(1);
             if (!(q > T(-1))) return -1;
             if (q >= static_cast<T>(cells[a])) return cells[a];
@@ -164,16 +190,16 @@ struct StepHits {
 };
 
 /// Tests solid tile (i, j) against the step and records a hit. The slab method; see the header.
-template <class T, CellIndexing I>
-inline void testTile(const TileMapView<T>& map, const StepFrame<T, I>& f, std::int64_t i, std::int64_t j,
+template <class T, Arithmetic A>
+inline void testTile(const TileMapView<T>& map, const StepFrame<T, A>& f, std::int64_t i, std::int64_t j,
                      StepHits<T>& hits) noexcept {
     const T x0 = f.edge(0, i), x1 = f.edge(0, i + 1);
     const T y0 = f.edge(1, j), y1 = f.edge(1, j + 1);
     // A tile the box overlaps at the step's start never blocks.
     if (f.lo[0] < x1 && f.hi[0] > x0 && f.lo[1] < y1 && f.hi[1] > y0) return;
-    const Slab<T> sx = slabOf(f.lo[0], f.hi[0], f.r[0], x0, x1);
+    const Slab<T> sx = f.slab(0, x0, x1);
     if (!sx.ever) return;
-    const Slab<T> sy = slabOf(f.lo[1], f.hi[1], f.r[1], y0, y1);
+    const Slab<T> sy = f.slab(1, y0, y1);
     if (!sy.ever) return;
     const T entry = std::max(sx.entry, sy.entry);
     const T exit = std::min(sx.exit, sy.exit);
@@ -200,8 +226,8 @@ inline void testTile(const TileMapView<T>& map, const StepFrame<T, I>& f, std::i
 }
 
 /// Solid cells the box overlaps (open) at the frame's start, by row then column.
-template <class T, CellIndexing I>
-inline std::int32_t listStartOverlaps(const TileMapView<T>& map, const StepFrame<T, I>& f, Cell* store,
+template <class T, Arithmetic A>
+inline std::int32_t listStartOverlaps(const TileMapView<T>& map, const StepFrame<T, A>& f, Cell* store,
                                       std::int32_t capacity) noexcept {
     const std::int64_t i0 = std::max<std::int64_t>(f.cellOf(0, f.lo[0]), 0);
     const std::int64_t i1 = std::min<std::int64_t>(f.cellOf(0, f.hi[0]), f.cells[0] - 1);
@@ -221,11 +247,11 @@ inline std::int32_t listStartOverlaps(const TileMapView<T>& map, const StepFrame
 }
 
 /// The frame loop (at most two steps), with the broadphase `findHits(map, frame, hits)`.
-template <class T, CellIndexing I, class FindHits>
+template <class T, Arithmetic A, class FindHits>
 [[nodiscard]] inline ResolveResult<T> resolveFrame(const ResolveInput<T>& in, const ResolveOutput<T>& out,
                                                    TileReciprocal<T> reciprocal, FindHits findHits) noexcept {
     const TileMapView<T>& map = in.map;
-    StepFrame<T, I> f{{in.box.pos.x, in.box.pos.y},
+    StepFrame<T, A> f{{in.box.pos.x, in.box.pos.y},
                       {in.box.pos.x + in.box.size.x, in.box.pos.y + in.box.size.y},
                       {in.displacement.x, in.displacement.y},
                       {map.origin.x, map.origin.y},
@@ -242,6 +268,7 @@ template <class T, CellIndexing I, class FindHits>
     for (int step = 0; step < 2; ++step) {
         if (f.r[0] == T(0) && f.r[1] == T(0)) break;
         StepHits<T> hits{out.contacts + used, std::max<std::int32_t>(out.contactCapacity - used, 0)};
+        f.startStep();
         findHits(map, f, hits);
         if (!hits.any) {
             f.lo[0] += f.r[0];
@@ -283,8 +310,8 @@ template <class T, CellIndexing I, class FindHits>
 
 /// The twin's broadphase: cells in path order along the primary axis, with the early exit.
 struct FindHitsInPathOrder {
-    template <class T, CellIndexing I>
-    void operator()(const TileMapView<T>& map, const StepFrame<T, I>& f, StepHits<T>& hits) const noexcept {
+    template <class T, Arithmetic A>
+    void operator()(const TileMapView<T>& map, const StepFrame<T, A>& f, StepHits<T>& hits) const noexcept {
         // Primary: the axis whose motion crosses more cells, |r_x| / tile_x >= |r_y| / tile_y.
         const int p = std::abs(f.r[0]) * f.tile[1] >= std::abs(f.r[1]) * f.tile[0] ? 0 : 1;
         const int s = 1 - p;
@@ -305,8 +332,8 @@ struct FindHitsInPathOrder {
             const T lo = f.edge(p, k);
             const T hi = f.edge(p, k + 1);
             // The box is inside this primary cell for t in (enter, leave), clamped to [0, 1].
-            T enter = forward ? (lo - f.hi[p]) / rp : (hi - f.lo[p]) / rp;
-            T leave = forward ? (hi - f.lo[p]) / rp : (lo - f.hi[p]) / rp;
+            T enter = f.timeOf(p, forward ? lo - f.hi[p] : hi - f.lo[p]);
+            T leave = f.timeOf(p, forward ? hi - f.lo[p] : lo - f.hi[p]);
             enter = std::max(enter, T(0));
             leave = std::min(leave, T(1));
             if (enter >= T(1)) break;
@@ -335,8 +362,8 @@ template <class T>
 [[nodiscard]] inline ResolveResult<T> resolveMoveTwin(const ResolveInput<T>& input,
                                                       const ResolveOutput<T>& output,
                                                       TileReciprocal<T> reciprocal) noexcept {
-    return detail::resolveFrame<T, detail::CellIndexing::Lean>(input, output, reciprocal,
-                                                               detail::FindHitsInPathOrder{});
+    return detail::resolveFrame<T, detail::Arithmetic::Lean>(input, output, reciprocal,
+                                                             detail::FindHitsInPathOrder{});
 }
 
 /// As above, the reciprocal computed for this frame: the same signature shape as
@@ -347,15 +374,25 @@ template <class T>
     return resolveMoveTwin(input, output, reciprocalOf(input.map));
 }
 
-/// The first twin, kept for one benchmark row (BM_TwinLibm_*): the same frame, with every cell
-/// index a std::floor or std::ceil of a quotient by the tile size (a division and a libm call
-/// per cell on the x86-64 baseline). It decides as resolveMoveTwin does wherever the tile size
-/// is a power of two.
+/// The twin that divides by the displacement wherever it needs a time (four divisions per tile
+/// tested), kept for one benchmark row (BM_TwinDividing_*); otherwise as resolveMoveTwin.
+template <class T>
+[[nodiscard]] inline ResolveResult<T> resolveMoveTwinDividing(const ResolveInput<T>& input,
+                                                              const ResolveOutput<T>& output,
+                                                              TileReciprocal<T> reciprocal) noexcept {
+    return detail::resolveFrame<T, detail::Arithmetic::Dividing>(input, output, reciprocal,
+                                                                 detail::FindHitsInPathOrder{});
+}
+
+/// The first twin, kept for one benchmark row (BM_TwinLibm_*): as resolveMoveTwinDividing, with
+/// every cell index a std::floor or std::ceil of a quotient by the tile size (a division and a
+/// libm call per cell on the x86-64 baseline). It decides as resolveMoveTwinDividing does
+/// wherever the tile size is a power of two.
 template <class T>
 [[nodiscard]] inline ResolveResult<T> resolveMoveTwinLibm(const ResolveInput<T>& input,
                                                           const ResolveOutput<T>& output) noexcept {
-    return detail::resolveFrame<T, detail::CellIndexing::Libm>(input, output, TileReciprocal<T>{T(0), T(0)},
-                                                               detail::FindHitsInPathOrder{});
+    return detail::resolveFrame<T, detail::Arithmetic::Libm>(input, output, TileReciprocal<T>{T(0), T(0)},
+                                                             detail::FindHitsInPathOrder{});
 }
 
 }  // namespace tilesweep::baselines

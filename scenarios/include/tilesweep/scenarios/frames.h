@@ -25,7 +25,7 @@ inline constexpr int kFrameMapSize = 256;
 inline constexpr int kFrameTile = 16;
 
 /// Which frames; see makeFrameScenario for what each one is and why it matters.
-enum class FrameKind { Random30, FloorAndWalls, RestingOnFloor, FreeFlight, FarRandom30, ZeroMove };
+enum class FrameKind { Random30, FloorAndWalls, RestingOnFloor, FreeFlight, FarRandom30, ZeroMove, WideBox };
 
 /// The name used in benchmark names, BM_<Impl>_<name>.
 inline const char* nameOf(FrameKind kind) noexcept {
@@ -42,12 +42,14 @@ inline const char* nameOf(FrameKind kind) noexcept {
             return "FarRandom30";
         case FrameKind::ZeroMove:
             return "ZeroMove";
+        case FrameKind::WideBox:
+            return "WideBox";
     }
     return "?";
 }
 
 /// One side-by-side scenario: the frames of `kind` at `speedArg`, twice the speed in tiles a frame
-/// (1 -> 0.5, 4 -> 2, 16 -> 8, 64 -> 32; 0 for the kinds without a speed).
+/// (1 -> 0.5, 4 -> 2, 16 -> 8, 64 -> 32, 128 -> 64; 0 for the kinds without a speed).
 struct SideBySideScenario {
     FrameKind kind;
     int speedArg;
@@ -56,11 +58,12 @@ struct SideBySideScenario {
 /// The scenarios the benchmarks time tilesweep and the baselines on side by side
 /// (BM_<Impl>_<Scenario>) and the twin agreement tool counts their disagreements on, in order.
 inline constexpr SideBySideScenario kSideBySideScenarios[] = {
-    {FrameKind::Random30, 1},       {FrameKind::Random30, 4},       {FrameKind::Random30, 16},
-    {FrameKind::Random30, 64},      {FrameKind::FloorAndWalls, 1},  {FrameKind::FloorAndWalls, 4},
-    {FrameKind::FloorAndWalls, 16}, {FrameKind::FloorAndWalls, 64}, {FrameKind::RestingOnFloor, 0},
-    {FrameKind::FreeFlight, 4},     {FrameKind::FarRandom30, 1},    {FrameKind::FarRandom30, 4},
-    {FrameKind::FarRandom30, 16},   {FrameKind::FarRandom30, 64},   {FrameKind::ZeroMove, 0},
+    {FrameKind::Random30, 1},        {FrameKind::Random30, 4},       {FrameKind::Random30, 16},
+    {FrameKind::Random30, 64},       {FrameKind::Random30, 128},     {FrameKind::FloorAndWalls, 1},
+    {FrameKind::FloorAndWalls, 4},   {FrameKind::FloorAndWalls, 16}, {FrameKind::FloorAndWalls, 64},
+    {FrameKind::FloorAndWalls, 128}, {FrameKind::WideBox, 16},       {FrameKind::RestingOnFloor, 0},
+    {FrameKind::FreeFlight, 4},      {FrameKind::FarRandom30, 1},    {FrameKind::FarRandom30, 4},
+    {FrameKind::FarRandom30, 16},    {FrameKind::FarRandom30, 64},   {FrameKind::ZeroMove, 0},
 };
 
 /// A map and kFrameCount frames on it.
@@ -91,8 +94,8 @@ FrameScenario<T> makeFrameScenario(FrameKind kind, double tilesPerFrame) {
     const auto at = [](int i, int j) {
         return static_cast<std::size_t>(j) * n + static_cast<std::size_t>(i);
     };
-    const bool random30 =
-        kind == FrameKind::Random30 || kind == FrameKind::FarRandom30 || kind == FrameKind::ZeroMove;
+    const bool random30 = kind == FrameKind::Random30 || kind == FrameKind::FarRandom30 ||
+                          kind == FrameKind::ZeroMove || kind == FrameKind::WideBox;
     const bool floors = kind == FrameKind::FloorAndWalls || kind == FrameKind::RestingOnFloor;
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
@@ -102,7 +105,9 @@ FrameScenario<T> makeFrameScenario(FrameKind kind, double tilesPerFrame) {
             if (floors) solid = (j % 12 == 11 && i % 9 != 4) || (i % 20 == 19 && j % 12 < 8);
             s.map.solid[at(i, j)] = solid ? 1 : 0;
         }
-    // Boxes start in a 64x64-cell window in the middle, 12x12 px, inside an empty cell.
+    // Boxes start in a 64x64-cell window in the middle, 12x12 px, inside an empty cell; WideBox's
+    // are 40x40 px (2.5 tiles), inside a 3x3 block of empty cells.
+    const double side = kind == FrameKind::WideBox ? 40.0 : 12.0;
     std::uniform_int_distribution<int> cell(n / 2 - 30, n / 2 + 29);
     s.boxes.reserve(kFrameCount);
     s.moves.reserve(kFrameCount);
@@ -120,11 +125,17 @@ FrameScenario<T> makeFrameScenario(FrameKind kind, double tilesPerFrame) {
             continue;
         }
         if (s.map.solid[at(i, j)] != 0) continue;
+        if (kind == FrameKind::WideBox) {
+            bool clear = true;
+            for (int dj = 0; dj < 3; ++dj)
+                for (int di = 0; di < 3; ++di) clear = clear && s.map.solid[at(i + di, j + dj)] == 0;
+            if (!clear) continue;
+        }
         const double angle = unit(rng) * 6.283185307179586;
         const double speed = kind == FrameKind::ZeroMove ? 0.0 : tilesPerFrame * kFrameTile;
         s.boxes.push_back({{static_cast<T>(origin + i * kFrameTile + 2 + unit(rng)),
                             static_cast<T>(origin + j * kFrameTile + 2 + unit(rng))},
-                           {T(12), T(12)}});
+                           {static_cast<T>(side), static_cast<T>(side)}});
         s.moves.push_back({static_cast<T>(speed * std::cos(angle)), static_cast<T>(speed * std::sin(angle))});
     }
     return s;
