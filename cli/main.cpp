@@ -313,11 +313,11 @@ int main(int argc, char** argv) {
 #if TILESWEEP_HAVE_AUDIT
     tilesweep::cli::AuditOptions auditOptions;
     CLI::App* auditCommand = tilesweep::cli::addAuditCommand(app, auditOptions);
-    for (int k = 0; k < argc; ++k) {  // as typed, an argument with a space quoted
+    for (int k = 0; k < argc; ++k) {  // as typed, an argument that is empty or has a space quoted
         const std::string arg = argv[k];
-        auditOptions.commandLine += k == 0                               ? std::string("tilesweep")
-                                    : arg.find(' ') != std::string::npos ? " \"" + arg + "\""
-                                                                         : " " + arg;
+        auditOptions.commandLine += k == 0 ? std::string("tilesweep")
+                                    : arg.empty() || arg.find(' ') != std::string::npos ? " \"" + arg + "\""
+                                                                                        : " " + arg;
     }
 #endif
 #if TILESWEEP_HAVE_AUDIT && TILESWEEP_HAVE_CHECK

@@ -39,8 +39,13 @@ export TILESWEEP_EXTRA_PACKAGES=python3-matplotlib
 bash "$root/scripts/setup.sh"
 TILESWEEP_TARGETS="tilesweep_cli tilesweep_twin_adapter tilesweep_box2d_adapter" bash "$root/scripts/build.sh" >/dev/null
 build=${TILESWEEP_BUILD_DIR:-$root/build/$TILESWEEP_PRESET}
-tool=$build/cli/tilesweep
 cd "$root"
+# Paths inside the checkout are written relative to it (the commands run from its root), so that
+# the report quotes the command any clone can run, not this machine's directories.
+relative() { if [[ $1 == "$root"/* ]]; then echo "${1#"$root"/}"; else echo "$1"; fi; }
+build=$(relative "$build")
+out=$(relative "$out")
+tool=$build/cli/tilesweep
 
 version_of() {  # version_of COMMAND...: the first line it prints, or "?" (godot exits non-zero after --version)
     local line
@@ -112,7 +117,7 @@ for scalar in float double; do
     rm -rf "$out/conformance/$scalar" "$out/conformance-$scalar.md"
     echo "conformance: the $scalar engines (${names[*]}): checks of ${seconds} s each, $rates_cases scenes a family" >&2
     status=0
-    rates=$root/build/conformance-rates/$scalar/rates.json
+    rates=build/conformance-rates/$scalar/rates.json
     rm -rf "$(dirname "$rates")"
     "$tool" audit "${args[@]}" --scalar "$scalar" --compare "" --seconds "$seconds" --rates-cases "$rates_cases" \
         --report "$out/conformance-$scalar.md" --pictures "$out/conformance/$scalar" --rates-json "$rates" >&2 ||
@@ -133,7 +138,7 @@ report=$out/conformance.md
     echo "# Conformance: engines held to the contract"
     echo
     echo "Made on $date on commit $commit$dirty, on a machine of $(nproc) cores, by"
-    echo '`bash scripts/conformance.sh'"$( [ "$out" = "$root/docs" ] && echo ' --out docs')"' --seconds '"$seconds"' --rates-cases '"$rates_cases"'`.'
+    echo '`bash scripts/conformance.sh'"$( [ "$out" = docs ] && echo ' --out docs')"' --seconds '"$seconds"' --rates-cases '"$rates_cases"'`.'
     echo "Regenerate it whole with that command; never edit it by hand. The contract is"
     echo "[contract.md](contract.md); how each engine is driven, and where it deviates by design, is in"
     echo "[adapters/README.md](../adapters/README.md)."
