@@ -2,13 +2,12 @@
 #include "tilesweep/batch.h"
 
 #include "batch_run.h"
+#include "move_range.h"
 
 #include <atomic>
 #include <condition_variable>
 #include <mutex>
-#include <new>
 #include <thread>
-#include <type_traits>
 #include <vector>
 
 // A small pool over std::thread rather than TBB: a batch is one parallel loop over independent
@@ -217,11 +216,7 @@ struct BatchJob {
 template <class T>
 void runRange(void* context, std::size_t begin, std::size_t end) {
     const auto& job = *static_cast<const BatchJob<T>*>(context);
-    // Each result is made in its slot (a placement new of the returned prvalue: no temporary and
-    // no copy of it, which an assignment would make); MoveResult is trivially destructible.
-    static_assert(std::is_trivially_destructible<MoveResult<T>>::value, "the slot is reused as is");
-    for (std::size_t k = begin; k < end; ++k)
-        ::new (&job.results[k]) MoveResult<T>(moveAndSlide(*job.map, job.inputs[k]));
+    detail::moveAndSlideRange(*job.map, job.inputs, job.results, begin, end);
 }
 
 template <class T>

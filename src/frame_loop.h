@@ -198,9 +198,11 @@ private:
     }
 
     /// Sorts a step's stored hits by row, then column, and writes its frame time (the same for
-    /// every hit of the step); false when the time's rounding is undecided.
+    /// every hit of the step); false when the time's rounding is undecided. A step that stores
+    /// no hit writes no time, and a result carries none, so its time is not rounded.
     bool finishStep(Hits& hits) noexcept {
         const std::int32_t stored = std::min(hits.count, hits.capacity);
+        if (stored == 0) return true;
         T time = 0;
         if (!m_.roundTime(hits.time, time)) return false;
         for (std::int32_t k = 0; k < stored; ++k) hits.store[k].time = time;
@@ -538,13 +540,15 @@ private:
     /// Lists the solid cells of the frame's swept bounds, row by row, when those bounds hold at
     /// most kNearArea cells, or are sparse (at most kSparseArea cells, kSparseAcross across, and
     /// kSparseSolids solid: the tuning knobs of proof_constants.h), and at most `contactCapacity`
-    /// of them are solid; false otherwise (the walk then runs). Every tile that can block either step, or
-    /// that the box overlaps at the start, lies in them: on each axis the box covers [min(low, low + disp),
-    /// max(high, high + disp)] over the frame, and step 2 stays inside that (its held axis is at a touch
-    /// position between the start and the end, its free axis on the rest of its own motion).
-    /// The arithmetic's sweptCells is a superset of that; extra cells are tested exactly and
+    /// of them are solid (any number when it is 0); false otherwise (the walk then runs). Every tile that can
+    /// block either step, or that the box overlaps at the start, lies in them: on each axis the box covers
+    /// [min(low, low + disp), max(high, high + disp)] over the frame, and step 2 stays inside that (its held
+    /// axis is at a touch position between the start and the end, its free axis on the rest of its own
+    /// motion). The arithmetic's sweptCells is a superset of that; extra cells are tested exactly and
     /// rejected. With every tile tested, the earliest hits are the same set as the walk's, and
-    /// none is cut short (solid cells <= capacity), so the stored contacts match too.
+    /// none is cut short (solid cells <= capacity), so the stored contacts match too. A frame
+    /// with no contact buffer (capacity 0) stores none, so it lists its cells whatever their
+    /// count: its counts and flags come from the same set of hits.
     bool collectNear(std::int32_t contactCapacity) noexcept {
         CellRange range[2];
         m_.sweptCellsOfBoth(range);
@@ -567,7 +571,11 @@ private:
             if (count > kSparseSolids) return false;  // dense: the walk costs less
         }
         nearCount_ = static_cast<std::int32_t>(count);
-        return count <= contactCapacity;
+#if defined(TILESWEEP_FAULT_NEAR_CAPACITY_IGNORED)
+        return true;  // deliberate fault: a buffer's capacity no longer bounds the listing
+#else
+        return contactCapacity == 0 || count <= contactCapacity;
+#endif
     }
 
     /// Lists the cells of `range` into near_, and returns how many are solid, or one-way too when

@@ -4,7 +4,8 @@
 // A moving frame, solved (solveMovingFrame): on the fast path (solveFastOn) when the range test
 // admits it, else on the exact lattice (solveOnLatticeAs). Compiled twice: for frames that may
 // meet a blocking one-way cell (kOneWayDown, oneWayCellsMayBlock in frame_solve.h), instantiated
-// in frame_solve_one_way.cpp, and for the others, in frame_solve.cpp. resolveFrame
+// in frame_solve_one_way.cpp, and for the others, in frame_solve.cpp (and inlined once more into
+// the batch's loop over its movers, move_range.cpp). resolveFrame
 // (frame_solve.h) chooses before anything else, so the others pay for one-way cells with that
 // one test alone; and each copy sits in a unit of its own, so that neither takes the
 // other's share of the compiler's inlining budget (in one unit the fast path inlines less, and

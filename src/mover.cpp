@@ -2,6 +2,7 @@
 #include "tilesweep/mover.h"
 
 #include "frame_solve.h"
+#include "move_result.h"
 #include "range_admission.h"
 #include "validity.h"
 
@@ -13,6 +14,8 @@
 namespace tilesweep {
 using detail::isFinite;
 using detail::isPositive;
+using detail::moveResultOf;
+using detail::refusedMove;
 
 namespace {
 
@@ -57,16 +60,9 @@ std::int32_t maxContactsOf(Vec2<T> box, Vec2<T> tile) noexcept {
                                                         : static_cast<std::int32_t>(n);
 }
 
-template <class T>
-MoveResult<T> refuse(const MoveInput<T>& input, MoveStatus status) noexcept {
-    MoveResult<T> r;
-    r.position = input.box.pos;
-    r.status = status;
-    return r;
-}
-
 /// Inlined into each moveAndSlide overload (gnu::always_inline): a call of its own would cost
-/// every frame of a batch the saved registers and a copy of the result.
+/// every frame the saved registers and a copy of the result. (A batch does not come here: its
+/// loop solves its frames inline, move_range.cpp.)
 template <class T>
 [[gnu::always_inline]] inline MoveResult<T> moveAndSlideOf(const PreparedMap<T>& map,
                                                            const MoveInput<T>& input, Contact<T>* contacts,
@@ -76,36 +72,24 @@ template <class T>
     // fast path finds a move whose swept cells are empty after the frame's set-up (free_move.h),
     // where a test here, before the set-up, would cost a move that is not free more than it
     // saves a free one.
-    if (!map.isValid()) return refuse(input, MoveStatus::InvalidInput);
-    MoveResult<T> r;
-    // A buffer of maxContacts takes the contacts directly; otherwise they go to the stack, so that
-    // the resolver keeps its short-move path (its capacity bounds the cells it lists), and are
-    // copied out when they fit. The flags never depend on either: they come from the steps.
-    // (The bound takes two divisions and two floors: only a caller with a buffer pays for them.)
-    const bool direct = contacts != nullptr && capacity >= maxContactsOf(input.box.size, map.view().tileSize);
+    if (!map.isValid()) return refusedMove(input, MoveStatus::InvalidInput);
+    // A caller without a buffer gets no contacts, so the resolver stores none (capacity 0, which
+    // lists a short move's cells whatever their count). A buffer of maxContacts takes the
+    // contacts directly; a smaller one has them go to the stack, so that the resolver keeps its
+    // short-move path (a capacity above 0 bounds the cells it lists), and copied out when they
+    // fit. The flags never depend on either: they come from the steps. (The bound takes two
+    // divisions and two floors: only a caller with a buffer pays for them.)
+    const bool wanted = contacts != nullptr && capacity > 0;
+    const bool direct = wanted && capacity >= maxContactsOf(input.box.size, map.view().tileSize);
     Contact<T> local[kInlineContacts];
-    Contact<T>* buffer = direct ? contacts : local;
-    const std::int32_t bufferCapacity = direct ? capacity : kInlineContacts;
+    Contact<T>* buffer = !wanted ? nullptr : direct ? contacts : local;
+    const std::int32_t bufferCapacity = !wanted ? 0 : direct ? capacity : kInlineContacts;
     // The contacts' positions only when the caller may receive the contacts.
-    const bool wanted = direct || (contacts != nullptr && capacity > 0);
     const ResolveResult<T> s = detail::resolveFrame(
         map.view(), input, ResolveOutput<T>{buffer, bufferCapacity},
         wanted ? detail::ContactPositions::Placed : detail::ContactPositions::Skipped, &map.mapRange());
-    if (s.status == ResolveStatus::InvalidInput) return refuse(input, MoveStatus::InvalidInput);
-    r.position = s.position;
-    r.status = s.status == ResolveStatus::Blocked ? MoveStatus::Blocked : MoveStatus::Moved;
-    r.contactCount = s.contactCount;
-    r.startOverlapCount = s.startOverlapCount;
-    // Every contact of an axis has the normal against that axis's motion (a frame moves one way
-    // on each axis), so the blocked axes and the motion's signs give every flag.
-    const Vec2<T> d = input.displacement;
-    r.blockedX = s.blockedX;
-    r.blockedY = s.blockedY;
-    r.onWall = s.blockedX;
-    r.wallNormalX = static_cast<std::int8_t>(s.blockedX ? (d.x > 0 ? -1 : 1) : 0);
-    r.onGround = s.blockedY && d.y > 0;
-    r.onCeiling = s.blockedY && d.y < 0;
-    r.clippedDisplacement = {s.blockedX ? T(0) : d.x, s.blockedY ? T(0) : d.y};
+    if (s.status == ResolveStatus::InvalidInput) return refusedMove(input, MoveStatus::InvalidInput);
+    MoveResult<T> r = moveResultOf(s, input.displacement);
     if (direct) {
         r.contactsStored = s.contactCount <= capacity;  // always: maxContacts proves it
 #if defined(TILESWEEP_FAULT_INLINE_LIMIT_EXCLUSIVE)     // deliberate fault: exactly the inline limit is not

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Many movers at once (tilesweep/batch.h): a batch on 1, 2 and 3 threads, and on a game's own
 // job system through TaskSystem, gives every mover exactly what moveAndSlide and resolveMove
-// give it alone, bit for bit, over random maps and movers (tilesweep/scenarios/mover_scenes.h).
+// give it alone, bit for bit, over random maps and movers (tilesweep/scenarios/mover_scenes.h),
+// half of the maps with one-way cells too.
 // TILESWEEP_PROPERTY_CASES sets the number of maps (default 300, 500 movers each).
 #include "tilesweep/batch.h"
 
@@ -13,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <condition_variable>
+#include <cstdint>
 #include <cstring>
 #include <deque>
 #include <functional>
@@ -55,9 +57,19 @@ TYPED_TEST(Batch, givesEveryMoverWhatResolveMoveGivesItAlone) {
     std::vector<MoveResult<T>> alone(kMovers), byOne(kMovers), byTwo(kMovers), byThree(kMovers),
         inline_(kMovers);
     std::vector<Contact<T>> contacts(4096);
+    std::uint64_t stoppedByOneWay = 0;  // frames whose contacts a one-way cell changed
     for (std::uint64_t m = 0; m < maps && !::testing::Test::HasFailure(); ++m) {
         const scenarios::RandomScene<T> level = scenarios::randomScene<T>(rng);
-        const PreparedMap<T> map = prepareMap(level.view());
+        // Every other map has one-way cells: a third of its bytes (a solid flag wins), so that
+        // frames moving down meet them and every other frame passes them by.
+        std::vector<std::uint8_t> oneWay;
+        TileMapView<T> view = level.view();
+        if (m % 2 == 1) {
+            oneWay.resize(level.cells.size());
+            for (auto& b : oneWay) b = rng() % 3 == 0 ? 1 : 0;
+            view.oneWay = oneWay.data();
+        }
+        const PreparedMap<T> map = prepareMap(view);
         ASSERT_TRUE(map.isValid());
         for (auto& in : inputs) scenarios::randomMover(rng, level, in.box, in.displacement);
         for (std::size_t k = 0; k < kMovers; ++k) alone[k] = moveAndSlide(map, inputs[k]);
@@ -70,14 +82,22 @@ TYPED_TEST(Batch, givesEveryMoverWhatResolveMoveGivesItAlone) {
                         sameResult(alone[k], byThree[k]) && sameResult(alone[k], inline_[k]))
                 << "map " << m << " mover " << k;
             // And the core resolver, with a buffer large enough for any of these frames.
-            const ResolveResult<T> s = resolveMove<T>({level.view(), inputs[k].box, inputs[k].displacement},
+            const ResolveResult<T> s = resolveMove<T>({view, inputs[k].box, inputs[k].displacement},
                                                       {contacts.data(), 4096, nullptr, 0});
             ASSERT_EQ(std::memcmp(&s.position, &byTwo[k].position, sizeof s.position), 0)
                 << "map " << m << " mover " << k;
             ASSERT_EQ(s.contactCount, byTwo[k].contactCount);
             ASSERT_EQ(s.startOverlapCount, byTwo[k].startOverlapCount);
+            if (view.oneWay != nullptr) {
+                const ResolveResult<T> through = resolveMove<T>(
+                    {view.withoutOneWay(), inputs[k].box, inputs[k].displacement}, {nullptr, 0, nullptr, 0});
+                stoppedByOneWay += through.contactCount != s.contactCount ? 1 : 0;
+            }
         }
     }
+    // The one-way cells decided frames: the batch was held to them, not only to solid ones.
+    EXPECT_GT(stoppedByOneWay, maps * kMovers / 400)
+        << "one-way cells changed too few frames: " << stoppedByOneWay;
 }
 
 TEST(Batch, emptyAndNullBatchesDoNothing) {
