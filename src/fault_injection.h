@@ -60,9 +60,6 @@
 //                      one of the listed cells, not all of them (frame_loop.h)
 //   ONE_WAY_SIDE_BLOCKS  a one-way tile entered through a side blocks on x (frame_loop.h)
 //   ONE_WAY_TIE_ON_X   an exact corner landing on a one-way tile blocks on x, not y (frame_loop.h)
-//   NEAR_CAPACITY_IGNORED  a short move lists its cells whatever its contact buffer's capacity,
-//                      not only without a buffer, so a buffer too small for its hits keeps the
-//                      listing's, not the walk's (frame_loop.h)
 //   BATCH_ONE_WAY_IGNORED  the batch solves a frame moving down on a map with one-way cells on
 //                      the loop compiled without their test (move_range.cpp)
 // Four classes of inputs that random scenes reach rarely, one fault standing for each:
@@ -94,6 +91,6 @@
     defined(TILESWEEP_FAULT_SOLID_BLOCK_LAST_COLUMN_MASKED) ||                                            \
     defined(TILESWEEP_FAULT_POSITION_FROM_FLOAT_TIME) || defined(TILESWEEP_FAULT_SLIDE_SKIP_ONE_SHORT) || \
     defined(TILESWEEP_FAULT_ONE_WAY_SIDE_BLOCKS) || defined(TILESWEEP_FAULT_ONE_WAY_TIE_ON_X) ||          \
-    defined(TILESWEEP_FAULT_NEAR_CAPACITY_IGNORED) || defined(TILESWEEP_FAULT_BATCH_ONE_WAY_IGNORED)
+    defined(TILESWEEP_FAULT_BATCH_ONE_WAY_IGNORED)
 #define TILESWEEP_FAULT_INJECTED 1
 #endif

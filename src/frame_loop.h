@@ -88,7 +88,7 @@ public:
     bool run(const ResolveOutput<T>& out, ResolveResult<T>& result, bool placeContactPositions) noexcept {
         // A short move: the solid cells of the swept bounds, listed once, serve the start
         // overlaps and both steps (collectNear); otherwise the walk.
-        const bool nearOnly = collectNear(std::max<std::int32_t>(out.contactCapacity, 0));
+        const bool nearOnly = collectNear();
         const bool bothMove = m_.axis(0).dir != 0 && m_.axis(1).dir != 0;
         Hits first{out.contacts, std::max<std::int32_t>(out.contactCapacity, 0)};
         if (nearOnly && bothMove) {
@@ -539,17 +539,16 @@ private:
 
     /// Lists the solid cells of the frame's swept bounds, row by row, when those bounds hold at
     /// most kNearArea cells, or are sparse (at most kSparseArea cells, kSparseAcross across, and
-    /// kSparseSolids solid: the tuning knobs of proof_constants.h), and at most `contactCapacity`
-    /// of them are solid (any number when it is 0); false otherwise (the walk then runs). Every tile that can
-    /// block either step, or that the box overlaps at the start, lies in them: on each axis the box covers
-    /// [min(low, low + disp), max(high, high + disp)] over the frame, and step 2 stays inside that (its held
-    /// axis is at a touch position between the start and the end, its free axis on the rest of its own
-    /// motion). The arithmetic's sweptCells is a superset of that; extra cells are tested exactly and
-    /// rejected. With every tile tested, the earliest hits are the same set as the walk's, and
-    /// none is cut short (solid cells <= capacity), so the stored contacts match too. A frame
-    /// with no contact buffer (capacity 0) stores none, so it lists its cells whatever their
-    /// count: its counts and flags come from the same set of hits.
-    bool collectNear(std::int32_t contactCapacity) noexcept {
+    /// kSparseSolids solid: the tuning knobs of proof_constants.h); false otherwise (the walk then
+    /// runs). Every tile that can block either step, or that the box overlaps at the start, lies
+    /// in them: on each axis the box covers [min(low, low + disp), max(high, high + disp)] over
+    /// the frame, and step 2 stays inside that (its held axis is at a touch position between the
+    /// start and the end, its free axis on the rest of its own motion). The arithmetic's
+    /// sweptCells is a superset of that; extra cells are tested exactly and rejected. With every
+    /// tile tested, the earliest hits are the same set as the walk's, and so are the counts and
+    /// flags; where a step has more hits than the contact buffer holds, which of them are stored
+    /// is unspecified (docs/library.md), and the listing's order keeps others than the walk's.
+    bool collectNear() noexcept {
         CellRange range[2];
         m_.sweptCellsOfBoth(range);
         for (int a = 0; a < 2; ++a) {
@@ -571,11 +570,7 @@ private:
             if (count > kSparseSolids) return false;  // dense: the walk costs less
         }
         nearCount_ = static_cast<std::int32_t>(count);
-#if defined(TILESWEEP_FAULT_NEAR_CAPACITY_IGNORED)
-        return true;  // deliberate fault: a buffer's capacity no longer bounds the listing
-#else
-        return contactCapacity == 0 || count <= contactCapacity;
-#endif
+        return true;
     }
 
     /// Lists the cells of `range` into near_, and returns how many are solid, or one-way too when

@@ -73,11 +73,10 @@ template <class T>
     // where a test here, before the set-up, would cost a move that is not free more than it
     // saves a free one.
     if (!map.isValid()) return refusedMove(input, MoveStatus::InvalidInput);
-    // A caller without a buffer gets no contacts, so the resolver stores none (capacity 0, which
-    // lists a short move's cells whatever their count). A buffer of maxContacts takes the
-    // contacts directly; a smaller one has them go to the stack, so that the resolver keeps its
-    // short-move path (a capacity above 0 bounds the cells it lists), and copied out when they
-    // fit. The flags never depend on either: they come from the steps. (The bound takes two
+    // A caller without a buffer gets no contacts, so the resolver stores none (capacity 0). A
+    // buffer of maxContacts takes the contacts directly; a smaller one has them go to the stack,
+    // copied out when they all fit, so that the caller's buffer holds all of them or is left as
+    // it was. The flags never depend on either: they come from the steps. (The bound takes two
     // divisions and two floors: only a caller with a buffer pays for them.)
     const bool wanted = contacts != nullptr && capacity > 0;
     const bool direct = wanted && capacity >= maxContactsOf(input.box.size, map.view().tileSize);

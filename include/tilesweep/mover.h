@@ -151,7 +151,7 @@ template <class T>
 }
 
 /// The contacts the game-loop calls resolve into on the stack when the caller's buffer is
-/// smaller than maxContacts, to keep the resolver on its short-move path. A frame with more
+/// smaller than maxContacts, so that they store all of a frame's contacts or none. A frame with more
 /// contacts than this (a box over 30 tiles on a side) and no buffer of maxContacts entries is
 /// still resolved, flags and all; only its contacts are not stored.
 inline constexpr std::int32_t kInlineContacts = 64;
