@@ -199,10 +199,10 @@ private:
 
     /// Sorts a step's stored hits by row, then column, and writes its frame time (the same for
     /// every hit of the step); false when the time's rounding is undecided. A step that stores
-    /// no hit writes no time, and a result carries none, so its time is not rounded.
+    /// no hit rounds its time too: a test to skip it makes a walk's frame run about 25 more
+    /// instructions (scripts/instructions.sh) and saves a batch's frame about 3.
     bool finishStep(Hits& hits) noexcept {
         const std::int32_t stored = std::min(hits.count, hits.capacity);
-        if (stored == 0) return true;
         T time = 0;
         if (!m_.roundTime(hits.time, time)) return false;
         for (std::int32_t k = 0; k < stored; ++k) hits.store[k].time = time;
