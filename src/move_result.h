@@ -24,7 +24,7 @@ template <class T>
 /// The MoveResult of frame `s` of a move by `d`, which resolved (not InvalidInput); contactsStored
 /// is left to the caller, which knows where the contacts went. Every contact of an axis has the
 /// normal against that axis's motion (a frame moves one way on each axis), so the blocked axes
-/// and the motion's signs give every flag, without a branch on either (they are a game's data).
+/// and the motion's signs give every flag.
 template <class T>
 [[nodiscard, gnu::always_inline]] inline MoveResult<T> moveResultOf(const ResolveResult<T>& s,
                                                                     Vec2<T> d) noexcept {
