@@ -199,8 +199,8 @@ private:
 
     /// Sorts a step's stored hits by row, then column, and writes its frame time (the same for
     /// every hit of the step); false when the time's rounding is undecided. A step that stores
-    /// no hit rounds its time too: a test to skip it makes a walk's frame run about 25 more
-    /// instructions (scripts/instructions.sh) and saves a batch's frame about 3.
+    /// no hit rounds its time too: a test to skip the rounding costs a walk's frames more
+    /// instructions than it saves a batch's (scripts/instructions.sh).
     bool finishStep(Hits& hits) noexcept {
         const std::int32_t stored = std::min(hits.count, hits.capacity);
         T time = 0;
