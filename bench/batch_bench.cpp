@@ -12,12 +12,16 @@
 //   walking  on a floor, 1.5 px a frame sideways plus gravity
 //   falling  in open air, 5 px a frame down (the cheap exit: no solid cell in the swept bounds)
 //   fast     dashing 30 px a frame along a floor toward the walls
+// MixShuffled is the float mix in random order, as a game's list of movers holds its kinds: Mix
+// takes them in turn, a pattern the branch predictor learns; in random order a branch that goes
+// one way for a kind mispredicts for the next mover of another kind.
 // MixAfterIdle runs the float mix once a millisecond, as a game's one batch a frame: the other
 // rows run batches back to back, and find the pool's worker awake.
 #include "tilesweep/batch.h"
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <random>
@@ -36,7 +40,7 @@ template <class T>
 struct World {
     std::vector<std::uint8_t> cells;
     tilesweep::PreparedMap<T> map;
-    std::vector<MoveInput<T>> resting, walking, falling, fast, mix;
+    std::vector<MoveInput<T>> resting, walking, falling, fast, mix, shuffled;
 
     static bool isFloor(int j) { return j % 16 == 15; }
 
@@ -77,6 +81,8 @@ struct World {
             mix.push_back(falling[static_cast<std::size_t>(k)]);
             mix.push_back(fast[static_cast<std::size_t>(k)]);
         }
+        shuffled = mix;
+        std::shuffle(shuffled.begin(), shuffled.end(), rng);
     }
 };
 
@@ -114,6 +120,9 @@ void runBatch(benchmark::State& state, const std::vector<MoveInput<T>>& movers,
 
 // The target: the game's mix (a quarter each), float and double, on 1 and 2 threads.
 void BM_MoveAndSlideBatch_Mix(benchmark::State& state) { runBatch<float>(state, world<float>().mix); }
+void BM_MoveAndSlideBatch_MixShuffled(benchmark::State& state) {
+    runBatch<float>(state, world<float>().shuffled);
+}
 void BM_MoveAndSlideBatch_MixDouble(benchmark::State& state) { runBatch<double>(state, world<double>().mix); }
 // The float mix as a game's one batch a frame: the worker woken for it.
 void BM_MoveAndSlideBatch_MixAfterIdle(benchmark::State& state) {
@@ -126,6 +135,7 @@ void BM_MoveAndSlideBatch_Falling(benchmark::State& state) { runBatch<float>(sta
 void BM_MoveAndSlideBatch_Fast(benchmark::State& state) { runBatch<float>(state, world<float>().fast); }
 
 BENCHMARK(BM_MoveAndSlideBatch_Mix)->ArgName("threads")->Arg(1)->Arg(2)->UseRealTime();
+BENCHMARK(BM_MoveAndSlideBatch_MixShuffled)->ArgName("threads")->Arg(1)->Arg(2)->UseRealTime();
 BENCHMARK(BM_MoveAndSlideBatch_MixDouble)->ArgName("threads")->Arg(1)->Arg(2)->UseRealTime();
 BENCHMARK(BM_MoveAndSlideBatch_MixAfterIdle)->ArgName("threads")->Arg(1)->Arg(2)->UseManualTime();
 BENCHMARK(BM_MoveAndSlideBatch_Resting)->ArgName("threads")->Arg(1)->UseRealTime();
