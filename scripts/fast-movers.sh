@@ -5,7 +5,7 @@
 # move's instructions go, phase by phase (scripts/phases.sh). Writes one Markdown page stamped with
 # the commit, the date, the machine and its load before and after the whole run; the page is
 # written to a scratch file first and moved into place at the end, so an interrupted run leaves
-# the old page as it was. Progress goes to stderr. About 10 minutes on 2 cores, most of it the
+# the old page as it was. Progress goes to stderr. About 11 minutes on 2 cores, most of it the
 # side-by-side table; run nothing else meanwhile, the timings are the machine's.
 #
 #   bash scripts/fast-movers.sh                                  # writes build/bench/fast-movers.md
@@ -39,7 +39,11 @@ target_float=60e6
 target_double=45e6
 target_scaling=1.8
 side_args=(5 0.1 '' 3)
-batch_args=(--benchmark_repetitions=5 --benchmark_min_time=0.3 --benchmark_report_aggregates_only=true)
+# Repetitions interleaved at random across the rows, so that a slow spell of a shared machine
+# falls on every row alike rather than on one row's repetitions (the one-thread and two-thread rows,
+# whose ratio is the scaling, most of all).
+batch_args=(--benchmark_repetitions=9 --benchmark_enable_random_interleaving=true --benchmark_min_time=0.3
+    --benchmark_report_aggregates_only=true)
 
 scratch=$(mktemp -d)
 partial=$out.partial.$$
@@ -70,7 +74,7 @@ echo "fast-movers: building the batch benchmark..." >&2
 echo "fast-movers: side by side (about 6 minutes)..." >&2
 bash "$root/scripts/side-by-side.sh" "${side_args[@]}" > "$scratch/side-by-side.md"
 
-echo "fast-movers: batch benchmark (about 1 minute)..." >&2
+echo "fast-movers: batch benchmark (about 2 minutes)..." >&2
 "$root/build/release/bench/tilesweep_batch_bench" "${batch_args[@]}" --benchmark_format=json \
     --benchmark_out="$scratch/batch.json" --benchmark_out_format=json >/dev/null
 
@@ -91,7 +95,7 @@ fi
     echo "The evidence for fast movers: exact tilesweep against the lean baselines (the lean twin and"
     echo "the lean grid) at long moves, the throughput of a batch of movers, and where a long move's"
     echo "instructions go. The page is regenerated whole by one command, never edited by hand:"
-    echo "\`$command_line\` (about 10 minutes; run nothing else meanwhile). Each section gives the"
+    echo "\`$command_line\` (about 11 minutes; run nothing else meanwhile). Each section gives the"
     echo "command that made it."
     echo
     echo "- Commit: $commit"
@@ -121,7 +125,8 @@ fi
     echo "Walking, Falling and Fast run one quarter alone, one kind."
     echo "MixAfterIdle runs the float mix once a millisecond, as a game's one batch a frame, so the pool's"
     echo "worker is woken for each batch (only the batch is timed). Times are real time, since a batch"
-    echo "spans threads; each figure is the median of 5 repetitions."
+    echo "spans threads; each figure is the median of 9 repetitions, interleaved at random with the other"
+    echo "rows' so that a slow spell of the machine falls on every row alike."
     echo
     python3 - "$scratch/batch.json" "$target_float" "$target_double" "$target_scaling" <<'PY'
 import json, re, sys
