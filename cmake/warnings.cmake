@@ -30,10 +30,9 @@ endif()
 
 # Every function starts on a 64-byte boundary (a cache line), so that the layout of a hot loop
 # inside it, and with it the speed of the loop, stays the same when code elsewhere in the binary
-# grows or shrinks. Left to the linker's packing, the same batch code measured 0.81x to 1.0x its
-# own speed, changed only by an edit to another file (tilesweep_batch_bench, Mix on one thread,
-# AMD EPYC). On every target: the library and the baselines it is measured against (bench/)
-# alike.
+# grows or shrinks: left to the linker's packing, unchanged code runs at another speed after an
+# edit to another file (scripts/compare-commits.sh shows it). On every target: the library and the
+# baselines it is measured against (bench/) alike.
 set(tilesweep_code_alignment $<$<NOT:$<CXX_COMPILER_ID:MSVC>>:-falign-functions=64>)
 
 add_library(tilesweep_warnings INTERFACE)
