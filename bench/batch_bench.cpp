@@ -17,7 +17,12 @@
 // one way for a kind mispredicts for the next mover of another kind.
 // MixAfterIdle runs the float mix once a millisecond, as a game's one batch a frame: the other
 // rows run batches back to back, and find the pool's worker awake.
+// MixC is the float mix through the C API (ts_move_and_slide_batch_f, tilesweep.h), on its own
+// map and pool: what a game that loads libtilesweep_c gets against the C++ call.
 #include "tilesweep/batch.h"
+#if defined(TILESWEEP_BENCH_C_API)
+#include "tilesweep/tilesweep.h"
+#endif
 
 #include <benchmark/benchmark.h>
 
@@ -134,6 +139,36 @@ void BM_MoveAndSlideBatch_Walking(benchmark::State& state) { runBatch<float>(sta
 void BM_MoveAndSlideBatch_Falling(benchmark::State& state) { runBatch<float>(state, world<float>().falling); }
 void BM_MoveAndSlideBatch_Fast(benchmark::State& state) { runBatch<float>(state, world<float>().fast); }
 
+#if defined(TILESWEEP_BENCH_C_API)
+/// The float mix through the C API: the world's cells in a ts_map_f, its movers as ts_mover_fs.
+void BM_MoveAndSlideBatch_MixC(benchmark::State& state) {
+    const World<float>& w = world<float>();
+    const ts_map_desc_f desc = {{0, 0}, {16, 16}, kSize, kSize, w.cells.data(), nullptr};
+    ts_map_f* map = nullptr;
+    ts_pool* pool = nullptr;
+    if (ts_map_create_f(&desc, &map) != TS_OK ||
+        ts_pool_create(static_cast<std::int32_t>(state.range(0)), &pool) != TS_OK) {
+        state.SkipWithError("the C map or pool could not be made");
+        ts_map_destroy_f(map);
+        return;
+    }
+    std::vector<ts_mover_f> movers;
+    for (const MoveInput<float>& m : w.mix)
+        movers.push_back({{{m.box.pos.x, m.box.pos.y}, {m.box.size.x, m.box.size.y}},
+                          {m.displacement.x, m.displacement.y}});
+    std::vector<ts_result_f> results(movers.size());
+    for (auto _ : state) {
+        ts_move_and_slide_batch_f(map, movers.data(), results.data(), movers.size(), pool);
+        benchmark::DoNotOptimize(results.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(movers.size()));
+    state.counters["threads"] = static_cast<double>(state.range(0));
+    ts_pool_destroy(pool);
+    ts_map_destroy_f(map);
+}
+#endif
+
 BENCHMARK(BM_MoveAndSlideBatch_Mix)->ArgName("threads")->Arg(1)->Arg(2)->UseRealTime();
 BENCHMARK(BM_MoveAndSlideBatch_MixShuffled)->ArgName("threads")->Arg(1)->Arg(2)->UseRealTime();
 BENCHMARK(BM_MoveAndSlideBatch_MixDouble)->ArgName("threads")->Arg(1)->Arg(2)->UseRealTime();
@@ -142,5 +177,8 @@ BENCHMARK(BM_MoveAndSlideBatch_Resting)->ArgName("threads")->Arg(1)->UseRealTime
 BENCHMARK(BM_MoveAndSlideBatch_Walking)->ArgName("threads")->Arg(1)->UseRealTime();
 BENCHMARK(BM_MoveAndSlideBatch_Falling)->ArgName("threads")->Arg(1)->UseRealTime();
 BENCHMARK(BM_MoveAndSlideBatch_Fast)->ArgName("threads")->Arg(1)->UseRealTime();
+#if defined(TILESWEEP_BENCH_C_API)
+BENCHMARK(BM_MoveAndSlideBatch_MixC)->ArgName("threads")->Arg(1)->Arg(2)->UseRealTime();
+#endif
 
 }  // namespace
