@@ -4,6 +4,7 @@
 // (malloc by default), never from operator new, and no C++ object is made in a caller's buffer.
 #include "batch_run.h"
 #include "c_types.h"
+#include "move_range.h"
 
 #include "tilesweep/batch.h"
 #include "tilesweep/mover.h"
@@ -286,11 +287,24 @@ struct CBatch {
     typename Types<T>::Result* results;
 };
 
+/// Movers a batch range converts at a time: a chunk's inputs and results in the C++ types live
+/// on the stack (6 KiB in double).
+constexpr std::size_t kBatchChunk = 64;
+
+/// One range of a C batch: the C++ batch's loop (moveAndSlideRange, move_range.h), which solves
+/// each frame inline, on chunks of movers converted to its types and back. Each result is
+/// moveAndSlide's for its mover (batch.h), as a C caller's single move would give it.
 template <class T>
 void runCBatch(void* context, std::size_t begin, std::size_t end) {
     const auto& job = *static_cast<const CBatch<T>*>(context);
-    for (std::size_t k = begin; k < end; ++k)
-        toResult(tilesweep::moveAndSlide(*job.map, toInput<T>(job.movers[k])), job.results[k]);
+    tilesweep::MoveInput<T> inputs[kBatchChunk];
+    tilesweep::MoveResult<T> results[kBatchChunk];
+    for (std::size_t first = begin; first < end; first += kBatchChunk) {
+        const std::size_t count = end - first < kBatchChunk ? end - first : kBatchChunk;
+        for (std::size_t k = 0; k < count; ++k) inputs[k] = toInput<T>(job.movers[first + k]);
+        tilesweep::detail::moveAndSlideRange(*job.map, inputs, results, 0, count);
+        for (std::size_t k = 0; k < count; ++k) toResult(results[k], job.results[first + k]);
+    }
 }
 
 template <class T>
