@@ -123,6 +123,7 @@ fi
     echo "float (MixDouble in double); MixShuffled is the float mix in random order, as a game's list of"
     echo "movers holds its kinds (Mix takes them in turn, which the branch predictor learns); Resting,"
     echo "Walking, Falling and Fast run one quarter alone, one kind."
+    echo "MixC is the float mix through the C API's batch call (ts_move_and_slide_batch_f, tilesweep.h)."
     echo "MixAfterIdle runs the float mix once a millisecond, as a game's one batch a frame, so the pool's"
     echo "worker is woken for each batch (only the batch is timed). Times are real time, since a batch"
     echo "spans threads; each figure is the median of 9 repetitions, interleaved at random with the other"
@@ -138,7 +139,7 @@ for b in json.load(open(path))["benchmarks"]:
     m = re.match(r"BM_MoveAndSlideBatch_(\w+)/threads:(\d+)/(?:real|manual)_time_median$", b["name"])
     if m:
         rows[(m[1], int(m[2]))] = (b["items_per_second"], b["real_time"] * scale[b["time_unit"]])
-order = [(k, t) for k in ("Mix", "MixShuffled", "MixDouble", "MixAfterIdle") for t in (1, 2)]
+order = [(k, t) for k in ("Mix", "MixShuffled", "MixDouble", "MixAfterIdle", "MixC") for t in (1, 2)]
 order += [(k, 1) for k in ("Resting", "Walking", "Falling", "Fast")]
 print("| benchmark | threads | mover-frames/s (millions) | ns a batch |")
 print("|---|---:|---:|---:|")
