@@ -89,6 +89,9 @@ def describe(name):
         return f"production resolve, {scalar}, 256² map 30% solid, {speed_of(args[0])} tiles/frame"
     if base.startswith("BM_ResolveMove_FloorAndWalls"):
         return f"production resolve, {scalar}, 256² floors and walls, {speed_of(args[0])} tiles/frame"
+    if base.startswith("BM_ResolveMove_Platforms"):
+        return (f"production resolve, {scalar}, floors and walls with one-way platforms, "
+                f"{speed_of(args[0])} tiles/frame")
     if base.startswith("BM_ResolveMove_MapSize"):
         return f"production resolve, float, {args[0]}² map 30% solid, 8 tiles/frame"
     if base.startswith("BM_BruteForce_EveryTile"):
@@ -104,7 +107,9 @@ def describe(name):
     if base.startswith("BM_Box2D_TimeOfImpact_Pairs"):
         return "Box2D b2TimeOfImpact, float, the same pairs, per pair"
     # Side by side on 65,536 pre-generated frames per scenario (bench/frame_scenarios.h).
-    impls = {"BM_Tilesweep_": "tilesweep", "BM_Twin_": "inexact twin", "BM_Grid_": "swept-bounds grid"}
+    impls = {"BM_Tilesweep_": "tilesweep", "BM_TilesweepView_": "tilesweep on the bare map view",
+             "BM_Twin_": "inexact twin", "BM_TwinDividing_": "inexact twin dividing in its tile test",
+             "BM_TwinLibm_": "inexact twin with libm calls", "BM_Grid_": "swept-bounds grid"}
     for prefix, impl in impls.items():
         if base.startswith(prefix):
             scenario = base[len(prefix):].split("<")[0]
