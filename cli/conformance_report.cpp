@@ -43,6 +43,14 @@ std::string failureRate(const CheckRow& r) {
     return fixed(100.0 * rate, rate < 0.001 ? 3 : 1) + "% (1 in " + fixed(1.0 / rate, 0) + ")";
 }
 
+/// A property's verdict: it failed, it never ran (the budget ended before its first run, so it
+/// says nothing of the resolver), or it held over every case it ran.
+const char* verdictOf(const CheckRow& r) {
+    if (r.failures > 0) return "**fails**";
+    if (r.runs == 0) return "not run (the budget ended first)";
+    return r.coverageShortfalls > 0 ? "holds (insufficient coverage)" : "holds";
+}
+
 std::string firstLine(const std::string& text) { return text.substr(0, text.find('\n')); }
 
 /// Markdown table cells must not hold a '|' or a newline.
@@ -73,16 +81,16 @@ void writeConformanceReport(const std::vector<ConformanceEntry>& entries, const 
           "every step; the first counterexample's time is that of the first failing run, shrinking "
           "included. Each round's scenes go to the resolver in one batch; shrinking asks for each "
           "step's candidates in batches of 16.\n\n";
-    md << "| resolver | properties held | properties failed | cases run | cases/s "
-          "|\n|---|---:|---:|---:|---:|\n";
+    md << "| resolver | properties held | properties failed | properties not run | cases run | cases/s "
+          "|\n|---|---:|---:|---:|---:|---:|\n";
     for (const ConformanceEntry& e : entries) {
-        int held = 0, failed = 0, cases = 0;
+        int held = 0, failed = 0, notRun = 0, cases = 0;
         for (const CheckRow& r : e.run.rows) {
-            (r.failures == 0 ? held : failed) += 1;
+            (r.failures > 0 ? failed : (r.runs == 0 ? notRun : held)) += 1;
             cases += r.cases + r.failures;
         }
-        md << "| " << e.label << " | " << held << " | " << failed << " | " << cases << " | "
-           << fixed(e.run.wallSeconds > 0 ? cases / e.run.wallSeconds : 0.0, 0) << " |\n";
+        md << "| " << e.label << " | " << held << " | " << failed << " | " << notRun << " | " << cases
+           << " | " << fixed(e.run.wallSeconds > 0 ? cases / e.run.wallSeconds : 0.0, 0) << " |\n";
     }
     if (!rates.empty()) md << "\n## Rates and tolerances\n\n" << rates;
     for (const ConformanceEntry& e : entries) {
@@ -98,10 +106,8 @@ void writeConformanceReport(const std::vector<ConformanceEntry>& entries, const 
               "counterexample after |\n"
               "|---|---|---|---:|---:|---|---:|---:|---:|\n";
         for (const CheckRow& r : e.run.rows)
-            md << "| " << r.property << " | " << r.claim << " | "
-               << (r.failures > 0 ? "**fails**"
-                                  : (r.coverageShortfalls > 0 ? "holds (insufficient coverage)" : "holds"))
-               << " | " << r.cases + r.failures << " | " << r.failures << " | " << failureRate(r) << " | "
+            md << "| " << r.property << " | " << r.claim << " | " << verdictOf(r) << " | "
+               << r.cases + r.failures << " | " << r.failures << " | " << failureRate(r) << " | "
                << fixed(r.seconds > 0 ? r.cases / r.seconds : 0.0, 0) << " | " << fixed(r.seconds, 1) << " | "
                << (r.failures == 0 ? std::string("") : fixed(r.secondsToFirstFailure, 1) + " s") << " |\n";
         bool anyFailure = false;
