@@ -249,11 +249,10 @@ public:
         const double yhi = my.edge(j + 1);
         if constexpr (std::is_same<Coord, ExactPair>::value) {
             TileVerdict verdict = TileVerdict::Misses;
-            if (mx.dir != 0 && my.dir != 0 && screenTile(mx, my, xlo, xhi, ylo, yhi, verdict)) {
-                if (verdict == TileVerdict::BlocksOnX)
-                    return {verdict, {mx.entryDistance(xlo, xhi), mx.speed}};
-                if (verdict == TileVerdict::BlocksOnY)
-                    return {verdict, {my.entryDistance(ylo, yhi), my.speed}};
+            ExactPair entry{};
+            if (mx.dir != 0 && my.dir != 0 && screenTile(mx, my, xlo, xhi, ylo, yhi, verdict, entry)) {
+                if (verdict == TileVerdict::BlocksOnX) return {verdict, {entry, mx.speed}};
+                if (verdict == TileVerdict::BlocksOnY) return {verdict, {entry, my.speed}};
                 return {verdict, {}};
             }
             return detail::testTile(mx, my, xlo, xhi, ylo, yhi, refined_);  // the screen's rare fallback
@@ -398,9 +397,15 @@ private:
     ///     test, so an exact tie (the Tie verdict) is never screened.
     /// `refined` is untouched: the exact test sets it only beyond a step the screen defers.
     /// No bound of its own: the only filter is compareProducts', derived in proof_constants.h.
+    /// A tile whose four distances are exact doubles (FastAxis::distancesExact) skips that filter
+    /// too: rounded products in strict order are in that order exactly (monotonic rounding, as
+    /// compareProducts on doubles has it), and equal ones defer; its entry is then the pair
+    /// {distance, 0}, the value entryDistance would build.
     /// Every fault of the tile test (axis_sweep.h) defers here, so that it reaches double frames.
-    static bool screenTile(const Motion& mx, const Motion& my, double xlo, double xhi, double ylo, double yhi,
-                           TileVerdict& verdict) noexcept {
+    /// A verdict that blocks comes with its entry distance in `entry`.
+    [[gnu::always_inline]] static bool screenTile(const Motion& mx, const Motion& my, double xlo, double xhi,
+                                                  double ylo, double yhi, TileVerdict& verdict,
+                                                  ExactPair& entry) noexcept {
 #if defined(TILESWEEP_FAULT_END_INCLUSIVE) || defined(TILESWEEP_FAULT_NO_CORNER_MISS) || \
     defined(TILESWEEP_FAULT_DOUBLE_PREDICATE)
         return false;
@@ -409,7 +414,6 @@ private:
         const double ey = my.entryDistanceHigh(ylo, yhi);
         const double xx = mx.exitDistanceHigh(xlo, xhi);
         const double xy = my.exitDistanceHigh(ylo, yhi);
-        verdict = TileVerdict::Misses;
         if (ex < 0 && ey < 0) {
             if (xx > 0 && xy > 0) verdict = TileVerdict::StartsOverlapping;
             return true;
@@ -418,13 +422,27 @@ private:
             return ex > mx.speed || ey > my.speed;  // E > 1; on a tie, false: the low part decides
         }
         // E < X on each axis (corner misses), then which axis enters later.
-        const int xAfterYExits = pairProductFilter(ex * my.speed, xy * mx.speed);
+        const double exSy = ex * my.speed;
+        const double eySx = ey * mx.speed;
+        const double xySx = xy * mx.speed;
+        const double xxSy = xx * my.speed;
+        if (mx.distancesExact(xlo, xhi) && my.distancesExact(ylo, yhi)) {
+            if (!(exSy < xySx)) return exSy > xySx;
+            if (!(eySx < xxSy)) return eySx > xxSy;
+            if (exSy == eySx) return false;
+            const bool onX = exSy > eySx;
+            verdict = onX ? TileVerdict::BlocksOnX : TileVerdict::BlocksOnY;
+            entry = {onX ? ex : ey, 0};
+            return true;
+        }
+        const int xAfterYExits = pairProductFilter(exSy, xySx);
         if (xAfterYExits >= 0) return xAfterYExits > 0;
-        const int yAfterXExits = pairProductFilter(ey * mx.speed, xx * my.speed);
+        const int yAfterXExits = pairProductFilter(eySx, xxSy);
         if (yAfterXExits >= 0) return yAfterXExits > 0;
-        const int order = pairProductFilter(ex * my.speed, ey * mx.speed);
+        const int order = pairProductFilter(exSy, eySx);
         if (order == 0) return false;
         verdict = order > 0 ? TileVerdict::BlocksOnX : TileVerdict::BlocksOnY;
+        entry = order > 0 ? mx.entryDistance(xlo, xhi) : my.entryDistance(ylo, yhi);
         return true;
     }
 

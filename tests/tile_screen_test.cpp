@@ -6,7 +6,9 @@
 // draws are built to sit where the high parts alone cannot decide: far edges that are not
 // doubles (a nonzero low part), paths exactly through a tile's corner (an exact tie of the two
 // entries, the Tie verdict, or of one axis's entry and the other's exit, a miss) and one ulp
-// either side of it (inside the product filter's band).
+// either side of it (inside the product filter's band), and near-ties on tiles just beyond the
+// window where the distances are exact doubles (FastAxis::distancesExact), whose distances are
+// rounded.
 #include "axis_sweep.h"
 #include "fast_frame.h"
 #include "range_admission.h"
@@ -17,6 +19,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <random>
 #include <vector>
 
@@ -36,6 +39,8 @@ struct Tally {
     int blocks = 0;
     int startsOverlapping = 0;
     int farEdgeNotADouble = 0;
+    int distancesExact = 0;        ///< tiles whose four distances are exact doubles on both axes
+    int distancesExactBlocks = 0;  ///< those of them that block (or tie): the screen orders entries
 };
 
 /// Every tile of the map against the frame: the screened test's verdict and time are the
@@ -55,6 +60,9 @@ void expectScreenMatchesExactTest(const ResolveInput<double>& in, Tally& tally) 
                 testTile(mx, my, mx.edge(i), mx.edge(i + 1), my.edge(j), my.edge(j + 1), refined);
             const auto screened = frame.testTile(i, j);
             ++tally.tiles;
+            const bool distancesExact = mx.distancesExact(mx.edge(i), mx.edge(i + 1)) &&
+                                        my.distancesExact(my.edge(j), my.edge(j + 1));
+            tally.distancesExact += distancesExact;
             ASSERT_EQ(static_cast<int>(screened.verdict), static_cast<int>(exact.verdict))
                 << "tile (" << i << ", " << j << ") of box (" << in.box.pos.x << ", " << in.box.pos.y
                 << ") size (" << in.box.size.x << ", " << in.box.size.y << ") moving (" << in.displacement.x
@@ -68,6 +76,7 @@ void expectScreenMatchesExactTest(const ResolveInput<double>& in, Tally& tally) 
             EXPECT_EQ(screened.time.den, exact.time.den);
             tally.ties += exact.verdict == TileVerdict::Tie;
             tally.blocks += exact.verdict != TileVerdict::Tie;
+            tally.distancesExactBlocks += distancesExact;
         }
     }
 }
@@ -81,16 +90,73 @@ TEST(TileScreen, agreesWithTheExactTestOnRandomFrames) {
     const Grid grid;
     std::mt19937_64 rng(19);
     Tally tally;
-    for (int draw = 0; draw < 400; ++draw) {
+    for (int draw = 0; draw < 800; ++draw) {
         ResolveInput<double> in{grid.view, {}, {}};
-        in.box.pos = {randomIn(rng, -2.0, 4.0), randomIn(rng, 2.0, 12.0)};
-        in.box.size = {randomIn(rng, 0.1, 2.0), randomIn(rng, 0.1, 2.0)};
+        if (draw % 2 == 0) {
+            // Where the distances to the tiles near the box are exact doubles (distancesExact):
+            // far edges that are doubles (each sum stays in its binade), tile edges within
+            // twice the box's coordinates.
+            std::uniform_int_distribution<int> quarters(1, 4);
+            in.box.pos = {randomIn(rng, 2.5, 3.0), randomIn(rng, 4.0, 6.0)};
+            in.box.size = {0.25 * quarters(rng), 0.5 * quarters(rng)};
+        } else {
+            in.box.pos = {randomIn(rng, -2.0, 4.0), randomIn(rng, 2.0, 12.0)};
+            in.box.size = {randomIn(rng, 0.1, 2.0), randomIn(rng, 0.1, 2.0)};
+        }
         in.displacement = {randomIn(rng, -4.0, 4.0), randomIn(rng, -4.0, 4.0)};
         expectScreenMatchesExactTest(in, tally);
     }
     EXPECT_GT(tally.blocks, 400);
     EXPECT_GT(tally.startsOverlapping, 100);
     EXPECT_GT(tally.farEdgeNotADouble, 400);
+    EXPECT_GT(tally.distancesExact, 2000);
+    EXPECT_GT(tally.distancesExactBlocks, 200);
+}
+
+TEST(TileScreen, agreesWithTheExactTestOnNearTiesWhereDistancesAreRounded) {
+    // A box of full precision, its far edges doubles (x in [1, 1.5) with w = 0.5, y in [2, 3.5)
+    // with h = 0.5: each sum stays in its binade), and a tile whose near corner (X, Y) lies
+    // beyond twice the box's near edge on both axes, where distancesExact says no: its distances
+    // to the box, X - (x + w) and Y - (y + h), need one bit more than a double has half the
+    // time. The displacement reaches the corner on both axes at nearly the same time (dx from
+    // the rounded ratio, then nudged by up to 4 ulps either way), so which face the box enters
+    // first is decided within the rounding of those distances: only the filter and the exact
+    // test decide it right.
+    const Grid grid;
+    std::mt19937_64 rng(21);
+    Tally tally;
+    int draws = 0;
+    int roundedDistances = 0;
+    for (int draw = 0; draw < 20000 && draws < 400; ++draw) {
+        const double x = randomIn(rng, 1.0, 1.5);
+        const double y = randomIn(rng, 2.0, 3.5);
+        const std::int64_t ci = std::uniform_int_distribution<std::int64_t>(0, kCells - 1)(rng);
+        const std::int64_t cj = std::uniform_int_distribution<std::int64_t>(0, kCells - 1)(rng);
+        const double cornerX = grid.view.origin.x + static_cast<double>(ci) * grid.view.tileSize.x;
+        const double cornerY = grid.view.origin.y + static_cast<double>(cj) * grid.view.tileSize.y;
+        // Beyond the window (2x, 2y) and within four times the near edges.
+        if (!(cornerX > 2 * x && cornerX + grid.view.tileSize.x <= 4 * x)) continue;
+        if (!(cornerY > 2 * y && cornerY + grid.view.tileSize.y <= 4 * y)) continue;
+        ++draws;
+        const ExactPair gapX = twoSum(cornerX, -(x + 0.5));
+        const ExactPair gapY = twoSum(cornerY, -(y + 0.5));
+        roundedDistances += gapX.lo != 0 || gapY.lo != 0;
+        const double dy = gapY.hi * randomIn(rng, 1.2, 3.0);
+        const double dx = gapX.hi * dy / gapY.hi;
+        for (int nudge = -4; nudge <= 4; ++nudge) {
+            ResolveInput<double> in{grid.view, {}, {}};
+            in.box.pos = {x, y};
+            in.box.size = {0.5, 0.5};
+            double nudged = dx;
+            for (int k = 0; k < std::abs(nudge); ++k) nudged = std::nextafter(nudged, nudge > 0 ? 1e9 : -1e9);
+            in.displacement = {nudged, dy};
+            expectScreenMatchesExactTest(in, tally);
+            if (::testing::Test::HasFatalFailure()) return;
+        }
+    }
+    EXPECT_GE(draws, 400);
+    EXPECT_GT(roundedDistances, 80);
+    EXPECT_GT(tally.blocks, 2000);
 }
 
 TEST(TileScreen, agreesWithTheExactTestOnPathsThroughACorner) {
