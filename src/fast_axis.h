@@ -91,32 +91,20 @@ struct FastAxis {
     /// fl(high - e) when highLow == 0, otherwise fl(s.hi + (s.lo + highLow)) with s the TwoSum of
     /// high and -e: the same operations on the same operands as farEdgeMinus, minus the error
     /// terms. Negation is exact, so the sign flip of minusFarEdge commutes with it.
+    /// kFarEdgeDouble: the caller knows highLow == 0 (FastFrame::distancesExact).
+    template <bool kFarEdgeDouble = false>
     [[nodiscard, gnu::always_inline]] double farEdgeMinusHigh(double e) const noexcept {
-        if (highLow == 0) return high - e;
+        if (kFarEdgeDouble || highLow == 0) return high - e;
         const ExactPair s = twoSum(high, -e);
         return s.hi + (s.lo + highLow);
     }
-    /// Whether the four distances between the tile [lo, hi] (lo < hi) and the box at t = 0
-    /// (entryDistanceHigh, exitDistanceHigh) are the exact distances themselves: so when the far
-    /// edge is a double (highLow == 0) and high / 2 <= lo, hi <= 2 low. The two bounds force
-    /// 0 < low <= high (were low <= 0, then high / 2 <= lo < hi <= 2 low would put high below
-    /// 4 low <= 0, where high / 2 > 2 low), so each tile edge e has b / 2 <= high / 2 <= e and
-    /// e <= 2 low <= 2b for both box edges b, and e - b is exact by Sterbenz's lemma (x - y is
-    /// exact when y / 2 <= x <= 2y). Halving and doubling are exact within the range test's
-    /// bounds (admitDoubleFrame). The tiles near the box of a map at positive coordinates pass,
-    /// unless the box is within a few tiles of the origin.
-    [[nodiscard, gnu::always_inline]] bool distancesExact(double lo, double hi) const noexcept {
-#if defined(TILESWEEP_FAULT_EXACT_WINDOW_WIDE)
-        return highLow == 0 && lo >= high * 0.25 && hi <= low * 4;  // deliberate fault: twice too wide
-#else
-        return highLow == 0 && lo >= high * 0.5 && hi <= low * 2;
-#endif
-    }
+    template <bool kFarEdgeDouble = false>
     [[nodiscard, gnu::always_inline]] double entryDistanceHigh(double lo, double hi) const noexcept {
-        return dir > 0 ? -farEdgeMinusHigh(lo) : low - hi;
+        return dir > 0 ? -farEdgeMinusHigh<kFarEdgeDouble>(lo) : low - hi;
     }
+    template <bool kFarEdgeDouble = false>
     [[nodiscard, gnu::always_inline]] double exitDistanceHigh(double lo, double hi) const noexcept {
-        return dir > 0 ? hi - low : farEdgeMinusHigh(lo);
+        return dir > 0 ? hi - low : farEdgeMinusHigh<kFarEdgeDouble>(lo);
     }
     /// The walks' distances (frame_loop.h): what a walk reads of a cell's entry and exit
     /// distances before it tests the cell's tiles, which is their estimate for the secondary

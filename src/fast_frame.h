@@ -90,6 +90,8 @@ public:
         }
         if (inWindow_)
             windowLinesClearBits_ = static_cast<int>(linesClear(0)) | (static_cast<int>(linesClear(1)) << 1);
+        if constexpr (std::is_same<Coord, ExactPair>::value)
+            distancesExact_ = distancesExactOn(0) && distancesExactOn(1);
 #endif
         start_[0] = in.box.pos.x;
         start_[1] = in.box.pos.y;
@@ -116,6 +118,27 @@ public:
     }
     /// Whether some predicate needed its exact refinement (DecisionPath::Filtered).
     [[nodiscard]] bool refined() const noexcept { return refined_; }
+    /// Double frames: whether every distance between the box at t = 0 and a tile the frame tests
+    /// (testTile, called by the frame loop's listing and walks) is an exact double, so that the
+    /// tile screen needs no filter (screenTile). Computed with the frame (distancesExactOn).
+    [[nodiscard]] bool distancesExact() const noexcept { return distancesExact_; }
+    /// distancesExact's test on axis `a`: the far edge a double, 2 L - H at least
+    /// kExactDistanceSpanTiles tiles, L and H the swept bounds' ends as sweptCells forms them,
+    /// and the swept cells' margin at most kExactDistanceMarginLimit; proof_constants.h says
+    /// why every tile the frame tests then lies where Sterbenz's lemma makes its distances exact.
+    [[nodiscard]] bool distancesExactOn(int a) const noexcept {
+        const Motion& g = axis_[a];
+        const double lowEnd = std::min(g.low, g.low + g.disp);
+        const double highEnd = std::max(g.high, g.high + g.disp);
+        const double margin = cellMargin(kCellEstimateErrorUlps, magnitude(a), g.invTile);
+#if defined(TILESWEEP_FAULT_EXACT_DISTANCES_FAR_PAIR)
+        const bool farDouble = true;  // deliberate fault: a far edge that is a pair taken as a double
+#else
+        const bool farDouble = g.highLow == 0;
+#endif
+        return farDouble && (lowEnd + lowEnd) - highEnd >= kExactDistanceSpanTiles * g.tile &&
+               margin <= kExactDistanceMarginLimit;
+    }
 
     const TileMapView<T>& map() const noexcept { return map_; }
     const Motion& axis(int a) const noexcept { return axis_[a]; }
@@ -250,7 +273,9 @@ public:
         if constexpr (std::is_same<Coord, ExactPair>::value) {
             TileVerdict verdict = TileVerdict::Misses;
             ExactPair entry{};
-            if (mx.dir != 0 && my.dir != 0 && screenTile(mx, my, xlo, xhi, ylo, yhi, verdict, entry)) {
+            if (mx.dir != 0 && my.dir != 0 &&
+                (distancesExact_ ? screenTile<true>(mx, my, xlo, xhi, ylo, yhi, verdict, entry)
+                                 : screenTile<false>(mx, my, xlo, xhi, ylo, yhi, verdict, entry))) {
                 if (verdict == TileVerdict::BlocksOnX) return {verdict, {entry, mx.speed}};
                 if (verdict == TileVerdict::BlocksOnY) return {verdict, {entry, my.speed}};
                 return {verdict, {}};
@@ -397,12 +422,13 @@ private:
     ///     test, so an exact tie (the Tie verdict) is never screened.
     /// `refined` is untouched: the exact test sets it only beyond a step the screen defers.
     /// No bound of its own: the only filter is compareProducts', derived in proof_constants.h.
-    /// A tile whose four distances are exact doubles (FastAxis::distancesExact) skips that filter
-    /// too: rounded products in strict order are in that order exactly (monotonic rounding, as
-    /// compareProducts on doubles has it), and equal ones defer; its entry is then the pair
-    /// {distance, 0}, the value entryDistance would build.
+    /// On a frame whose tile distances are all exact doubles (kExact: distancesExact()) it skips
+    /// that filter too: rounded products in strict order are in that order exactly (monotonic
+    /// rounding, as compareProducts on doubles has it), and equal ones defer; the entry is then the
+    /// pair {distance, 0}, the value entryDistance would build.
     /// Every fault of the tile test (axis_sweep.h) defers here, so that it reaches double frames.
     /// A verdict that blocks comes with its entry distance in `entry`.
+    template <bool kExact>
     [[gnu::always_inline]] static bool screenTile(const Motion& mx, const Motion& my, double xlo, double xhi,
                                                   double ylo, double yhi, TileVerdict& verdict,
                                                   ExactPair& entry) noexcept {
@@ -410,10 +436,10 @@ private:
     defined(TILESWEEP_FAULT_DOUBLE_PREDICATE)
         return false;
 #endif
-        const double ex = mx.entryDistanceHigh(xlo, xhi);
-        const double ey = my.entryDistanceHigh(ylo, yhi);
-        const double xx = mx.exitDistanceHigh(xlo, xhi);
-        const double xy = my.exitDistanceHigh(ylo, yhi);
+        const double ex = mx.template entryDistanceHigh<kExact>(xlo, xhi);
+        const double ey = my.template entryDistanceHigh<kExact>(ylo, yhi);
+        const double xx = mx.template exitDistanceHigh<kExact>(xlo, xhi);
+        const double xy = my.template exitDistanceHigh<kExact>(ylo, yhi);
         if (ex < 0 && ey < 0) {
             if (xx > 0 && xy > 0) verdict = TileVerdict::StartsOverlapping;
             return true;
@@ -426,7 +452,7 @@ private:
         const double eySx = ey * mx.speed;
         const double xySx = xy * mx.speed;
         const double xxSy = xx * my.speed;
-        if (mx.distancesExact(xlo, xhi) && my.distancesExact(ylo, yhi)) {
+        if constexpr (kExact) {
             if (!(exSy < xySx)) return exSy > xySx;
             if (!(eySx < xxSy)) return eySx > xxSy;
             if (exSy == eySx) return false;
@@ -520,11 +546,14 @@ private:
         const __m128d speed = _mm_andnot_pd(sign, disp);
         const int positive = _mm_movemask_pd(_mm_cmpgt_pd(disp, zero));
         const int negative = _mm_movemask_pd(_mm_cmplt_pd(disp, zero));
+        const __m128d tile = lanesOf(in.map.tileSize);
         __m128d high;
+        __m128d highLow = zero;
         if constexpr (std::is_same<Coord, ExactPair>::value) {
             const PairLanes far = twoSumOnLanes(pos, size);
             const PairLanes end = twoSumOnLanes(pos, disp);
             high = far.hi;
+            highLow = far.lo;
             storeLanes(&Motion::highLow, far.lo);
             end_[0] = {_mm_cvtsd_f64(end.hi), _mm_cvtsd_f64(end.lo)};
             end_[1] = {_mm_cvtsd_f64(_mm_unpackhi_pd(end.hi, end.hi)),
@@ -541,7 +570,7 @@ private:
         storeLanes(&Motion::disp, disp);
         storeLanes(&Motion::speed, speed);
         storeLanes(&Motion::origin, origin);
-        storeLanes(&Motion::tile, lanesOf(in.map.tileSize));
+        storeLanes(&Motion::tile, tile);
         storeLanes(&Motion::invTile, invTile);
         storeLanes(&Motion::size, size);
         axis_[0].dir = (positive & 1) - (negative & 1);
@@ -570,6 +599,21 @@ private:
                             _mm_mul_pd(_mm_sub_pd(highEnd, origin), invTile), margin,
                             _mm_set_pd(static_cast<double>(in.map.rows), static_cast<double>(in.map.columns)),
                             swept_);
+        if constexpr (std::is_same<Coord, ExactPair>::value) {
+            // distancesExactOn of both axes.
+            const __m128d span = _mm_sub_pd(_mm_add_pd(lowEnd, lowEnd), highEnd);
+            const __m128d spanNeeded = _mm_mul_pd(_mm_set1_pd(kExactDistanceSpanTiles), tile);
+            const __m128d marginSmall = _mm_cmple_pd(margin, _mm_set1_pd(kExactDistanceMarginLimit));
+#if defined(TILESWEEP_FAULT_EXACT_DISTANCES_FAR_PAIR)
+            const __m128d farDouble = _mm_cmpeq_pd(zero, zero);  // deliberate fault (distancesExactOn)
+            static_cast<void>(highLow);
+#else
+            const __m128d farDouble = _mm_cmpeq_pd(highLow, zero);
+#endif
+            const __m128d exact =
+                _mm_and_pd(_mm_and_pd(_mm_cmpge_pd(span, spanNeeded), marginSmall), farDouble);
+            distancesExact_ = _mm_movemask_pd(exact) == 3;
+        }
     }
 #endif
 
@@ -597,6 +641,7 @@ private:
     T start_[2];
     bool inWindow_;
     bool refined_ = false;
+    bool distancesExact_ = false;   ///< distancesExact(), from the set-up
     int windowLinesClearBits_ = 0;  ///< linesClearBits of a frame in the window, from the set-up
 };
 

@@ -62,9 +62,9 @@
 //   ONE_WAY_TIE_ON_X   an exact corner landing on a one-way tile blocks on x, not y (frame_loop.h)
 //   BATCH_ONE_WAY_IGNORED  the batch solves a frame moving down on a map with one-way cells on
 //                      the loop compiled without their test (move_range.cpp)
-//   EXACT_WINDOW_WIDE  the tile screen of double frames takes a tile's distances as exact doubles
-//                      when its edges lie within a quarter of the far edge and four times the near
-//                      one, twice as far as Sterbenz's lemma allows (fast_axis.h)
+//   EXACT_DISTANCES_FAR_PAIR  a double frame whose far box edge is an exact pair, not a double,
+//                      taken as one whose tile distances are all exact doubles, so its tile
+//                      screen drops the pair's low part (fast_frame.h: distancesExact)
 // Four classes of inputs that random scenes reach rarely, one fault standing for each:
 //   PAIR_REFINEMENT_SWAPPED  double near-ties: the exact refinement of the pair comparison called
 //                      with its two sides swapped, so a nonzero sign inside the filter's band
@@ -94,6 +94,6 @@
     defined(TILESWEEP_FAULT_SOLID_BLOCK_LAST_COLUMN_MASKED) ||                                            \
     defined(TILESWEEP_FAULT_POSITION_FROM_FLOAT_TIME) || defined(TILESWEEP_FAULT_SLIDE_SKIP_ONE_SHORT) || \
     defined(TILESWEEP_FAULT_ONE_WAY_SIDE_BLOCKS) || defined(TILESWEEP_FAULT_ONE_WAY_TIE_ON_X) ||          \
-    defined(TILESWEEP_FAULT_BATCH_ONE_WAY_IGNORED) || defined(TILESWEEP_FAULT_EXACT_WINDOW_WIDE)
+    defined(TILESWEEP_FAULT_BATCH_ONE_WAY_IGNORED) || defined(TILESWEEP_FAULT_EXACT_DISTANCES_FAR_PAIR)
 #define TILESWEEP_FAULT_INJECTED 1
 #endif

@@ -320,6 +320,37 @@ static_assert(kPositionEstimateErrorUlps * (1 - kUnitRoundoff) > 3 && kPositionE
 inline constexpr int kSumFilterMostTerms = 16;
 static_assert(sumFilterCovers(kSumFilterMostTerms), "the sum filter's bound covers recursive summation");
 
+// ---- exact distances ---------------------------------------------------------------------------
+
+/// A double frame whose tile distances are all exact doubles (FastFrame::distancesExact) passes
+/// two tests on each axis, on the values its set-up computes: the far edge is a double, and
+///   fl(2 L - H) >= kExactDistanceSpanTiles * tile,  margin <= kExactDistanceMarginLimit,
+/// with L and H the swept bounds' ends, fl(min(low, low + disp)) and fl(max(high, high + disp)),
+/// and margin the swept cells' (kCellEstimateErrorUlps). Why they suffice:
+///   - Every tile the frame tests has its edges in [L* - 3 tile, H* + 3 tile], L* and H* the exact
+///     ends. Each cell range reaches past the exact one by its margin on either side: the near
+///     listing's (the swept cells) by the swept margin, the walk's secondary ranges by theirs,
+///     kSecondaryRangeErrorUlps / kCellEstimateErrorUlps times that, computed within 6u; both
+///     below 1/2 cell, so a range starts at most one cell before the exact one and ends at most
+///     one after it, or two where fl(v + 1) rounds up (estimateCells). The walk's primary cells
+///     are entered before t = 1, so they lie between the start and the end.
+///   - The box's edges at t = 0 lie in [L*, H*]. Two values of [A, B] with 0 < A, B <= 2A differ
+///     exactly in double (Sterbenz's lemma: y / 2 <= x <= 2y), and with A = L* - 3 tile and
+///     B = H* + 3 tile that is 2 L* - H* >= 9 tile (then A >= 6 tile, since H* >= L*).
+///   - The computed test errs by at most 6.01u max(|L*|, |H*|) (L and H within u of theirs, 2L
+///     exact, the difference rounded once), and the margin's limit bounds u M / tile, with M >=
+///     max(|L*|, |H*|) the estimates' magnitude, by kExactDistanceMarginLimit / 7.99: the error
+///     is below tile / 10, so 16 tiles computed leave 2 L* - H* above 15 tiles.
+inline constexpr double kExactDistanceSpanTiles = 16;
+inline constexpr double kExactDistanceMarginLimit = 0.125;
+static_assert(kExactDistanceMarginLimit * kSecondaryRangeErrorUlps / kCellEstimateErrorUlps *
+                      (1 + 6 * kUnitRoundoff) <
+                  0.5,
+              "both cell margins stay below half a cell");
+static_assert(6.01 * kExactDistanceMarginLimit / (kCellEstimateErrorUlps * (1 - 3 * kUnitRoundoff)) <
+                  kExactDistanceSpanTiles - 9,
+              "the computed span test errs by less than its slack");
+
 // ---- tuning knobs ------------------------------------------------------------------------------
 //
 // These choose how the broadphase looks for tiles, never what it finds: every tile that can block

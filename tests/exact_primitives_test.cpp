@@ -885,6 +885,7 @@ void checkSetUpOnLanes(std::uint64_t seed) {
     int zeroMoves = 0;
     int signedZeroEnds = 0;
     int inexactFarEdges = 0;
+    int exactDistanceFrames = 0;  // double frames whose tile distances are all exact doubles
     int emptyRanges = 0;
     int clampedRanges = 0;
     int inWindowFrames = 0;
@@ -962,6 +963,10 @@ void checkSetUpOnLanes(std::uint64_t seed) {
             const FastFrame<T> frame(in, range, window);
             CellRange swept[2];
             frame.sweptCellsOfBoth(swept);
+            if constexpr (std::is_same<T, double>::value) {
+                ASSERT_EQ(frame.distancesExact(), frame.distancesExactOn(0) && frame.distancesExactOn(1));
+                if (window == inWindow) exactDistanceFrames += frame.distancesExact() ? 1 : 0;
+            }
             for (int a = 0; a < 2; ++a) {
                 const auto& m = frame.axis(a);
                 const auto p = static_cast<double>(pos[a]);
@@ -1016,6 +1021,7 @@ void checkSetUpOnLanes(std::uint64_t seed) {
     EXPECT_GT(clampedRanges, 1000) << "too few swept bounds clamped at both ends";
     if (std::is_same<T, double>::value) {
         EXPECT_GT(inexactFarEdges, 20000) << "too few inexact far edges";
+        EXPECT_GT(exactDistanceFrames, 1000) << "too few frames whose tile distances are exact doubles";
     }
     std::printf(
         "set-up on lanes (%s): %d frames, %d in the window; axes: %d negative moves, %d zero "
