@@ -14,10 +14,15 @@
 #                                                  file for the build only, then restored; prints rows
 #                                                  (the JUDGE_ faults are scripts/judge-faults.sh's)
 #
-# Each fault gets its own build directory under build-faults/ (TILESWEEP_FAULT_DIR); ccache, when
-# installed, shares the unchanged objects between them. Run it under `nice` on a shared machine.
+# Each fault gets its own build directory under build-faults/ (TILESWEEP_FAULT_DIR); ccache
+# (installed here when missing) shares between them the objects of the targets the fault's
+# definition does not reach, the property suite's among them: without it every fault rebuilds
+# everything. The directories differ, so ccache is told not to hash them (CCACHE_NOHASHDIR: the
+# debug information keeps the first build's directory). Run it under `nice` on a shared machine.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+export TILESWEEP_EXTRA_PACKAGES=ccache
+export CCACHE_NOHASHDIR=1
 source "$root/scripts/setup.sh"
 tilesweep_setup_base
 out_dir=$root/build
